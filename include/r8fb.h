@@ -1,0 +1,67 @@
+/* r8fb.h - framebuffers and framebuffer bands.
+ *
+ * A band is rows y0 .. y0+rows-1 of a width x height frame; the whole
+ * frame is the band with y0 = 0, rows = height.  The caller owns buf and
+ * sizes it with R8_FB_*_BYTES(width, rows) or r8_fb_bytes().
+ *
+ * Formats (the wire protocol uses the same numbers and byte layouts):
+ *   R8_FMT_PAGE1  1 bpp, SSD1306 page layout: byte (row/8)*width + x,
+ *                 bit (row % 8), bit 0 = top row of the page.  rows of a
+ *                 band must be a multiple of 8 (y0 too).
+ *   R8_FMT_ROW1   1 bpp row-major: byte row*((width+7)/8) + x/8,
+ *                 bit 7 - (x % 8) (MSB = leftmost pixel, as PBM).
+ *   R8_FMT_IDX8   8 bpp indexed: byte row*width + x is a palette index.
+ * A set bit is a lit pixel.
+ */
+#ifndef R8FB_H
+#define R8FB_H
+
+#include "r8types.h"
+
+#define R8_FMT_PAGE1 0
+#define R8_FMT_ROW1 1
+#define R8_FMT_IDX8 2
+
+#define R8_FB_PAGE1_BYTES(w, rows) ((unsigned)(w) * (((unsigned)(rows) + 7u) >> 3))
+#define R8_FB_ROW1_BYTES(w, rows) ((((unsigned)(w) + 7u) >> 3) * (unsigned)(rows))
+#define R8_FB_IDX8_BYTES(w, rows) ((unsigned)(w) * (unsigned)(rows))
+
+typedef struct r8_fb {
+    r8_u8 *buf;
+    r8_s16 width;  /* whole frame width in pixels */
+    r8_s16 height; /* whole frame height in pixels */
+    r8_s16 y0;     /* first frame row held in buf */
+    r8_s16 rows;   /* rows held in buf */
+    r8_u8 format;  /* R8_FMT_* */
+} r8_fb;
+
+/* Bytes needed for `rows` rows of a `width`-wide frame in `format`;
+ * 0 for an unknown format. */
+unsigned r8_fb_bytes(r8_u8 format, r8_s16 width, r8_s16 rows);
+
+/* Set up fb over buf; returns 0, or -1 for a bad format/size/alignment. */
+int r8_fb_init(r8_fb *fb, r8_u8 *buf, r8_u8 format, r8_s16 width,
+               r8_s16 height, r8_s16 y0, r8_s16 rows);
+
+/* Move the band to start at frame row y0 (rows unchanged, clipped at the
+ * bottom of the frame).  Does not clear. */
+void r8_fb_set_band(r8_fb *fb, r8_s16 y0);
+
+/* Fill the band with colour c (0/1 for 1 bpp, an index for 8 bpp). */
+void r8_fb_clear(r8_fb *fb, r8_u8 c);
+
+/* Pixel at frame coordinates; writes outside the band or frame are
+ * ignored, reads outside return 0. */
+void r8_fb_pixel(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 c);
+r8_u8 r8_fb_get(const r8_fb *fb, r8_s16 x, r8_s16 y);
+
+/* Horizontal span [x0, x1) on frame row y in colour c, clipped to the
+ * frame and band; whole bytes are written where the layout allows. */
+void r8_fb_span(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c);
+
+/* Span of shade level s (0 = black .. 16 = white) through the ordered
+ * 4x4 dither (1 bpp); for 8 bpp it writes index `base + s`. */
+void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
+                       r8_u8 s, r8_u8 base);
+
+#endif

@@ -1,0 +1,45 @@
+# mk/core.mk - library strictness gates and the C unit tests.
+# C unit tests: every tests/c/test_*.c is one binary, linked with the
+# library and tests/unity; add a file and it is built and run.
+
+TEST_C    := $(sort $(wildcard tests/c/test_*.c))
+TEST_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/tests/%)
+ASAN_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/asan/%)
+SANFLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+TEST_INC  := $(INC) -Itests/unity -Itests/c
+TEST_DEPS := tests/unity/unity.c tests/unity/unity.h $(wildcard tests/c/*.h)
+
+ALL_TARGETS += $(TEST_BIN)
+
+$(BUILD)/tests/%: tests/c/%.c $(LIB) $(TEST_DEPS) | $(BUILD)/tests
+	$(CC) $(STRICT) $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB) -o $@
+
+# Sanitizer build: library sources compiled in, not the release archive.
+$(BUILD)/asan/%: tests/c/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h)
+	@mkdir -p $(dir $@)
+	clang $(STRICT) -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) -o $@
+
+.PHONY: test-unit test-asan lint test-lint test-strict test-cross
+test-unit: $(TEST_BIN)
+	@fail=0; for t in $(TEST_BIN); do \
+	  bash scripts/run-step.sh unit-$$(basename $$t) $$t || fail=1; done; exit $$fail
+
+test-asan: $(ASAN_BIN)
+	@fail=0; for t in $(ASAN_BIN); do \
+	  bash scripts/run-step.sh asan-$$(basename $$t) $$t || fail=1; done; exit $$fail
+
+lint:
+	bash scripts/lint.sh
+
+test-lint:
+	@bash scripts/run-step.sh lint bash scripts/lint.sh
+
+# gcc and clang, each library file, strict C89.
+test-strict:
+	@bash scripts/run-step.sh strict bash scripts/strict.sh
+
+# avr-gcc, cc65 and sdcc compile every library file.
+test-cross:
+	@bash scripts/run-step.sh cross bash scripts/cross-compile.sh
+
+TEST_STEPS += test-lint test-strict test-cross test-unit test-asan

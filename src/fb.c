@@ -1,0 +1,230 @@
+/* fb.c - framebuffer bands: clear, pixel, span fill, dithered spans.
+ * Layouts are described in r8fb.h. */
+#include "r8fb.h"
+
+unsigned r8_fb_bytes(r8_u8 format, r8_s16 width, r8_s16 rows)
+{
+    if (width <= 0 || rows <= 0)
+        return 0;
+    switch (format) {
+    case R8_FMT_PAGE1:
+        return R8_FB_PAGE1_BYTES(width, rows);
+    case R8_FMT_ROW1:
+        return R8_FB_ROW1_BYTES(width, rows);
+    case R8_FMT_IDX8:
+        return R8_FB_IDX8_BYTES(width, rows);
+    default:
+        return 0;
+    }
+}
+
+int r8_fb_init(r8_fb *fb, r8_u8 *buf, r8_u8 format, r8_s16 width,
+               r8_s16 height, r8_s16 y0, r8_s16 rows)
+{
+    if (format > R8_FMT_IDX8 || width <= 0 || height <= 0 || rows <= 0 ||
+        y0 < 0 || rows > height)
+        return -1;
+    if (format == R8_FMT_PAGE1 && ((rows & 7) || (y0 & 7)))
+        return -1;
+    fb->buf = buf;
+    fb->format = format;
+    fb->width = width;
+    fb->height = height;
+    fb->rows = rows;
+    fb->y0 = y0;
+    return 0;
+}
+
+void r8_fb_set_band(r8_fb *fb, r8_s16 y0)
+{
+    fb->y0 = y0;
+}
+
+/* Rows of the band that lie inside the frame. */
+static r8_s16 band_rows(const r8_fb *fb)
+{
+    r8_s16 n = fb->rows;
+    if (fb->y0 + n > fb->height)
+        n = (r8_s16)(fb->height - fb->y0);
+    return n < 0 ? 0 : n;
+}
+
+void r8_fb_clear(r8_fb *fb, r8_u8 c)
+{
+    unsigned n = r8_fb_bytes(fb->format, fb->width, fb->rows);
+    unsigned i;
+    r8_u8 v = c;
+    if (fb->format != R8_FMT_IDX8)
+        v = (r8_u8)(c ? 0xFF : 0x00);
+    for (i = 0; i < n; i++)
+        fb->buf[i] = v;
+}
+
+void r8_fb_pixel(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 c)
+{
+    r8_u8 *p, m;
+    if (x < 0 || x >= fb->width || y < fb->y0 || y >= fb->y0 + band_rows(fb))
+        return;
+    y = (r8_s16)(y - fb->y0);
+    switch (fb->format) {
+    case R8_FMT_PAGE1:
+        p = fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x;
+        m = (r8_u8)(1u << (y & 7));
+        break;
+    case R8_FMT_ROW1:
+        p = fb->buf + (unsigned)y * (((unsigned)fb->width + 7u) >> 3) + ((unsigned)x >> 3);
+        m = (r8_u8)(0x80u >> (x & 7));
+        break;
+    default:
+        fb->buf[(unsigned)y * (unsigned)fb->width + (unsigned)x] = c;
+        return;
+    }
+    if (c)
+        *p |= m;
+    else
+        *p = (r8_u8)(*p & ~m);
+}
+
+r8_u8 r8_fb_get(const r8_fb *fb, r8_s16 x, r8_s16 y)
+{
+    if (x < 0 || x >= fb->width || y < fb->y0 || y >= fb->y0 + band_rows(fb))
+        return 0;
+    y = (r8_s16)(y - fb->y0);
+    switch (fb->format) {
+    case R8_FMT_PAGE1:
+        return (r8_u8)((fb->buf[(unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x] >> (y & 7)) & 1u);
+    case R8_FMT_ROW1:
+        return (r8_u8)((fb->buf[(unsigned)y * (((unsigned)fb->width + 7u) >> 3) + ((unsigned)x >> 3)] >> (7 - (x & 7))) & 1u);
+    default:
+        return fb->buf[(unsigned)y * (unsigned)fb->width + (unsigned)x];
+    }
+}
+
+/* Ordered 4x4 dither thresholds: level s lights pixel (x,y) iff
+ * s > bayer[y&3][x&3].  Level 0 is black, 16 is white. */
+static const r8_u8 bayer4[16] = {
+    0, 8, 2, 10,
+    12, 4, 14, 6,
+    3, 11, 1, 9,
+    15, 7, 13, 5
+};
+
+/* Byte pattern (MSB = leftmost, x = 0 mod 4 at bits 7 and 3) of shade
+ * level s on frame row y. */
+static r8_u8 dither_row(r8_u8 s, r8_s16 y)
+{
+    const r8_u8 *t = bayer4 + ((y & 3) << 2);
+    r8_u8 p = 0;
+    if (s > t[0]) p |= 0x88;
+    if (s > t[1]) p |= 0x44;
+    if (s > t[2]) p |= 0x22;
+    if (s > t[3]) p |= 0x11;
+    return p;
+}
+
+/* Clip [x0,x1) on row y to frame and band; returns 0 if nothing left. */
+static int clip_span(const r8_fb *fb, r8_s16 y, r8_s16 *x0, r8_s16 *x1)
+{
+    if (y < fb->y0 || y >= fb->y0 + band_rows(fb))
+        return 0;
+    if (*x0 < 0)
+        *x0 = 0;
+    if (*x1 > fb->width)
+        *x1 = fb->width;
+    return *x0 < *x1;
+}
+
+/* Write pattern pat (byte-wide, MSB = leftmost pixel with x%8 == 0)
+ * into [x0,x1) of row y (band-relative).  Row-major 1 bpp. */
+static void row1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
+{
+    r8_u8 *p = fb->buf + (unsigned)y * (((unsigned)fb->width + 7u) >> 3) + ((unsigned)x0 >> 3);
+    r8_u8 lm = (r8_u8)(0xFFu >> (x0 & 7));           /* bits from x0 on */
+    r8_s16 last = (r8_s16)(x1 - 1);
+    r8_u8 rm = (r8_u8)(0xFFu << (7 - (last & 7)));   /* bits up to last */
+    r8_s16 n = (r8_s16)((last >> 3) - (x0 >> 3));
+    if (n == 0) {
+        lm &= rm;
+        *p = (r8_u8)((*p & ~lm) | (pat & lm));
+        return;
+    }
+    *p = (r8_u8)((*p & ~lm) | (pat & lm));
+    p++;
+    while (--n > 0)
+        *p++ = pat;
+    *p = (r8_u8)((*p & ~rm) | (pat & rm));
+}
+
+/* Page layout: one byte per pixel column; set or clear bit m for
+ * pixels whose pattern bit (MSB-first per x%8) is set. */
+static void page1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
+{
+    r8_u8 *p = fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x0;
+    r8_u8 m = (r8_u8)(1u << (y & 7));
+    r8_u8 nm = (r8_u8)~m;
+    r8_s16 x;
+    if (pat == 0xFF) {
+        for (x = x0; x < x1; x++)
+            *p++ |= m;
+    } else if (pat == 0) {
+        for (x = x0; x < x1; x++)
+            *p++ &= nm;
+    } else {
+        r8_u8 bit = (r8_u8)(0x80u >> (x0 & 7));
+        for (x = x0; x < x1; x++) {
+            if (pat & bit)
+                *p |= m;
+            else
+                *p &= nm;
+            p++;
+            bit >>= 1;
+            if (!bit)
+                bit = 0x80;
+        }
+    }
+}
+
+static void idx8_fill(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c)
+{
+    r8_u8 *p = fb->buf + (unsigned)y * (unsigned)fb->width + (unsigned)x0;
+    r8_s16 x;
+    for (x = x0; x < x1; x++)
+        *p++ = c;
+}
+
+void r8_fb_span(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c)
+{
+    if (!clip_span(fb, y, &x0, &x1))
+        return;
+    y = (r8_s16)(y - fb->y0);
+    switch (fb->format) {
+    case R8_FMT_PAGE1:
+        page1_pattern(fb, y, x0, x1, (r8_u8)(c ? 0xFF : 0));
+        break;
+    case R8_FMT_ROW1:
+        row1_pattern(fb, y, x0, x1, (r8_u8)(c ? 0xFF : 0));
+        break;
+    default:
+        idx8_fill(fb, y, x0, x1, c);
+    }
+}
+
+void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
+                       r8_u8 s, r8_u8 base)
+{
+    r8_u8 pat;
+    if (!clip_span(fb, y, &x0, &x1))
+        return;
+    pat = dither_row(s, y);
+    y = (r8_s16)(y - fb->y0);
+    switch (fb->format) {
+    case R8_FMT_PAGE1:
+        page1_pattern(fb, y, x0, x1, pat);
+        break;
+    case R8_FMT_ROW1:
+        row1_pattern(fb, y, x0, x1, pat);
+        break;
+    default:
+        idx8_fill(fb, y, x0, x1, (r8_u8)(base + s));
+    }
+}
