@@ -1,0 +1,21 @@
+/* plat.h - the small platform layer the demo firmware runs on.
+ * One implementation per target: emu/plat_host.c (host emulator),
+ * emu/plat_avr.c, emu/plat_sim65.c, emu/plat_z80.c. */
+#ifndef PLAT_H
+#define PLAT_H
+
+#include "r8types.h"
+
+void plat_init(void);
+void plat_putc(r8_u8 c);                     /* one UART byte, binary-safe */
+void plat_write(const r8_u8 *p, unsigned n); /* n UART bytes */
+void plat_mark(r8_u8 id);                    /* cycle marker (GPIOR0 etc.) */
+void plat_exit(int code);                    /* end of run */
+
+/* Marker ids the firmware emits. */
+#define PLAT_MARK_START 1       /* after init */
+#define PLAT_MARK_FRAME_BEGIN 2 /* before r8_render_frame */
+#define PLAT_MARK_FRAME_END 3   /* after the frame's last band */
+#define PLAT_MARK_DONE 4        /* before plat_exit */
+
+#endif
