@@ -1,0 +1,93 @@
+/* r8fixed.h - fixed-point formats and integer helpers.
+ *
+ * Formats (see docs/fixed-point.md for the reasons):
+ *   angles        r8_u8, 256 steps per turn
+ *   sin/cos       Q1.14 in r8_s16 (16384 = 1.0): exact at 0, 90, 180 deg
+ *   matrices      Q1.14 in r8_s16 (rotation entries lie in [-1, 1])
+ *   unit normals,
+ *   light vector  Q1.14 in r8_s16
+ *   model coords  r8_s16 integer units
+ *   camera coords r8_s32 integer units (rotation can grow |v| by sqrt 3)
+ *   screen coords r8_s16 12.4: 4 subpixel bits (16 = one pixel); pixel
+ *                 centres sit at 16*c + 8
+ *   depth         r8_s16 0..32767, affine in 1/z (so linear in screen
+ *                 space), larger = nearer; 8-bit depth is depth >> 7
+ *   shade         r8_s16 8.8: level 0..16 (16 = white) with 8 fraction bits
+ *
+ * Every helper here is right with a 16-bit int and avoids the SDCC 4.2
+ * widening-multiply bug (products are formed as r8_s32 p = a; p *= b).
+ * Right shifts and divisions of negative numbers are implementation-
+ * defined in C89, so the helpers do them on magnitudes.
+ */
+#ifndef R8FIXED_H
+#define R8FIXED_H
+
+#include "r8types.h"
+
+#define R8_Q14 14
+#define R8_ONE14 16384
+#define R8_SUB 4           /* subpixel bits */
+#define R8_SUBPX 16        /* subpixels per pixel */
+
+typedef struct r8_vec3 { r8_s16 x, y, z; } r8_vec3;
+typedef struct r8_vec3l { r8_s32 x, y, z; } r8_vec3l;
+/* Row-major 3x3 rotation, Q1.14. */
+typedef struct r8_mat3 { r8_s16 m[9]; } r8_mat3;
+
+/* Full 32-bit product of two 16-bit values. */
+r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
+/* (a * b) >> frac, rounded to nearest (ties away from zero), saturated
+ * to r8_s16.  r8_mulq(a, b, 8) is the Q8.8 multiply, 14 the Q1.14 one. */
+r8_s16 r8_mulq(r8_s16 a, r8_s16 b, r8_u8 frac);
+/* floor(v / 2^n) for any sign (an arithmetic shift, portably). */
+r8_s32 r8_asr32(r8_s32 v, r8_u8 n);
+/* floor(n / d), d > 0, for any sign of n. */
+r8_s32 r8_floordiv(r8_s32 n, r8_s32 d);
+/* n / d rounded to nearest, ties away from zero; d != 0. */
+r8_s32 r8_divround(r8_s32 n, r8_s32 d);
+/* a * b / c, truncated toward zero, exact for any r8_s32 a, b and
+ * nonzero c whose true result fits r8_s32 (saturates otherwise). */
+r8_s32 r8_muldiv(r8_s32 a, r8_s32 b, r8_s32 c);
+/* Clamp an r8_s32 to r8_s16. */
+r8_s16 r8_sat16(r8_s32 v);
+/* floor(sqrt(v)), v >= 0. */
+r8_u16 r8_isqrt32(r8_u32 v);
+
+/* Q1.14 sine and cosine of a 256-step angle. */
+r8_s16 r8_sin(r8_u8 a);
+r8_s16 r8_cos(r8_u8 a);
+
+/* Dot products: 16-bit inputs, 32-bit result (no overflow for any
+ * input when at most two terms reach 2^30; callers keep |x| < 2^15). */
+r8_s32 r8_dot3(const r8_vec3 *a, const r8_vec3 *b);
+/* c = a x b, exact: each component fits r8_s32 for any 16-bit input. */
+void r8_cross3(const r8_vec3 *a, const r8_vec3 *b, r8_vec3l *c);
+/* Scale v (any 32-bit vector) down by a power of two so every component
+ * fits |x| < 2^14, then to unit length in Q1.14 (zero stays zero). */
+void r8_normalize(const r8_vec3l *v, r8_vec3 *out);
+
+/* Rotation about X, then Y, then Z (m = Rz * Ry * Rx), Q1.14. */
+void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az);
+/* c = a * b (Q1.14). c may not alias a or b. */
+void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c);
+/* out = m * v (v integer units, out 32-bit, rounded). */
+void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out);
+/* out = transpose(m) * v for a Q1.14 v (the inverse rotation), Q1.14. */
+void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out);
+
+/* Camera: perspective projection to 12.4 screen coordinates. */
+typedef struct r8_camera {
+    r8_s16 cx, cy;   /* screen centre, 12.4 */
+    r8_s16 focal;    /* focal length in pixels, 1..2047 */
+    r8_s32 znear;    /* near plane, camera units, > 0 */
+    r8_s16 guard;    /* guard band half-width in pixels (|sx-cx| <= guard) */
+    r8_s32 xlimit;   /* |x| below this projects with one native division */
+} r8_camera;
+
+void r8_camera_init(r8_camera *c, r8_s16 width, r8_s16 height, r8_s16 focal,
+                    r8_s32 znear);
+/* Project v (z >= znear, inside the guard band) to 12.4 screen coords:
+ * sx = cx + round(16 * focal * x / z). */
+void r8_project(const r8_camera *c, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy);
+
+#endif

@@ -1,0 +1,104 @@
+/* r8raster.h - the stepwise interpolator, Bresenham lines and scan
+ * conversion of convex polygons.
+ *
+ * Fill convention: a pixel (c, r) is inside when its centre
+ * (16c + 8, 16r + 8) in 12.4 subpixels lies in the polygon, with left
+ * and top edges inclusive, right and bottom edges exclusive (top-left
+ * rule).  Polygons sharing an edge therefore leave no gap and draw no
+ * pixel twice.  Front faces wind clockwise on screen (y down).
+ */
+#ifndef R8RASTER_H
+#define R8RASTER_H
+
+#include "r8types.h"
+#include "r8fb.h"
+
+/* Stepwise linear interpolator, exact form: value(k) =
+ * base + floor((num0 + k * step) / den), stepped with an integer error
+ * term, so no rounding accumulates and the last step lands exactly on
+ * the end value.  Carries any attribute: x along an edge, depth, shade,
+ * texture u/v.  den is 1..32767. */
+typedef struct r8_interp {
+    r8_s16 val;   /* current value (floor) */
+    r8_s16 q;     /* whole part of the step */
+    r8_u16 err;   /* 0 <= err < den: fraction numerator */
+    r8_u16 r;     /* 0 <= r < den: fraction of the step */
+    r8_u16 den;
+} r8_interp;
+
+/* a to b in n steps (n >= 1): after n r8_interp_step calls val == b.
+ * Needs |b - a| <= 32767. */
+void r8_interp_reset(r8_interp *it, r8_s16 a, r8_s16 b, r8_u16 n);
+/* General form (see above); |num0| and |step| may exceed 16 bits. */
+void r8_interp_init(r8_interp *it, r8_s16 base, r8_s32 num0, r8_s32 step,
+                    r8_u16 den);
+/* Same with num0 = a * b formed without overflow for any a, b whose
+ * quotient fits 16 bits. */
+void r8_interp_init_mul(r8_interp *it, r8_s16 base, r8_s32 a, r8_s32 b,
+                        r8_s32 step, r8_u16 den);
+#define R8_INTERP_STEP(it) do { (it)->val = (r8_s16)((it)->val + (it)->q); \
+    (it)->err = (r8_u16)((it)->err + (it)->r); \
+    if ((it)->err >= (it)->den) { (it)->err = (r8_u16)((it)->err - (it)->den); (it)->val++; } } while (0)
+void r8_interp_step(r8_interp *it);
+
+/* Bresenham line, endpoints inclusive, all octants, clipped to the
+ * framebuffer band; the same pixels whichever end it starts from.
+ * Any r8_s16 coordinates (pixels). */
+void r8_line(r8_fb *fb, r8_s16 x0, r8_s16 y0, r8_s16 x1, r8_s16 y1, r8_u8 c);
+
+/* Screen-space vertex for the scan converter. */
+typedef struct r8_svert {
+    r8_s16 x, y;  /* 12.4 subpixels */
+    r8_s16 d;     /* depth 0..32767, larger = nearer */
+    r8_s16 s;     /* shade 8.8, 0..4096 */
+} r8_svert;
+
+#define R8_ATTR_D 1
+#define R8_ATTR_S 2
+
+typedef struct r8_edge {
+    r8_interp x, d, s;
+    r8_s16 yend;  /* first row this edge does not cover */
+    r8_u8 vi;     /* polygon position of the edge's lower vertex */
+} r8_edge;
+
+/* Resumable scan conversion of one convex polygon, top to bottom: a
+ * polygon can be scanned band by band without re-walking its edges. */
+typedef struct r8_scan {
+    const r8_svert *v;
+    const r8_u16 *idx;  /* polygon: v[idx[0]] .. v[idx[n-1]], clockwise */
+    r8_u8 n;
+    r8_u8 attrs;        /* R8_ATTR_* to interpolate */
+    r8_u8 backface;     /* set when Judd's test found left right of right */
+    r8_s16 y;           /* next row */
+    r8_s16 ybot;        /* first row below the polygon */
+    r8_edge l, r;
+} r8_scan;
+
+/* One span: pixels [x0, x1) of row y, with attributes at the left and
+ * right edges (at this row's centre). */
+typedef struct r8_span {
+    r8_s16 y, x0, x1;
+    r8_s16 dl, dr, sl, sr;
+} r8_span;
+
+/* Start scanning a polygon of n (3..255) vertices at row ystart (rows
+ * above it are skipped without being walked).  Returns the number of
+ * rows left to scan (0: nothing to draw). */
+r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
+                     r8_u8 n, r8_u8 attrs, r8_s16 ystart);
+/* Next non-empty span on a row < ylimit; returns 0 when none is left
+ * before ylimit (the scan can resume later with a larger ylimit).
+ * With judd != 0 a row whose left edge lies right of its right edge
+ * marks the polygon as a back face (s->backface) and ends it. */
+int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out);
+
+/* Row of the first pixel centre at or below subpixel y: ceil((y-8)/16). */
+r8_s16 r8_row_of(r8_s16 y);
+
+/* Fill a polygon into fb with colour c, flat (convenience for tests and
+ * tools).  Returns pixels written inside the band. */
+r8_s32 r8_fill_poly(r8_fb *fb, const r8_svert *v, const r8_u16 *idx,
+                    r8_u8 n, r8_u8 c);
+
+#endif
