@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Write umockdev fixtures for the USB tests from a real rast8 stream.
+
+  mkioctl.py device OUT.umockdev
+      the emulated bus: a vendor-class board feed:beef (interface 0, class
+      ff, bulk IN 0x81 and bulk OUT 0x01, 64-byte packets) at
+      /dev/bus/usb/001/002, and a HID mouse 046d:c077 (interrupt IN 0x81)
+      at /dev/bus/usb/001/003 that `--list` must not offer.
+
+  mkioctl.py ioctl STREAM OUT.ioctl [--fault unplug|stall --at BYTES]
+      a usbdevfs ioctl script in which endpoint 0x81 delivers the bytes of
+      STREAM (a file written by `rast8-emu --out`), split into bulk IN
+      transfers of varying length (full, short, 1 byte, zero-length) as a
+      device's short packets would end them.  With --fault, the transfer
+      that would pass byte offset BYTES ends there with an error status
+      instead: -ENODEV (unplugged) or -EPIPE (stalled); for a stall it
+      still carries the bytes up to BYTES, as a real URB does.  Prints the
+      number of bulk IN replies and the number of stream bytes delivered.
+
+Each reply answers one 4096-byte read (URB_SIZE of rast8.usb and
+rast8-usbcat); umockdev matches replies on endpoint, flags and length.
+Replies are consumed in order and the script starts over after the last
+one, so tests stop the device after the last reply (fault reply, or the
+fault shim's silent=N).
+"""
+
+import argparse
+import sys
+
+URB_SIZE = 4096
+BUS, DEVNUM = 1, 2
+DEVNODE = f"/dev/bus/usb/{BUS:03d}/{DEVNUM:03d}"
+ENODEV, EPIPE = 19, 32
+
+# chunk lengths cycle through these: full reads, packet multiples, odd
+# lengths, a single byte and a zero-length packet (which carries nothing)
+CHUNKS = [64, 1, 700, 0, 4096, 3000, 128, 63, 1500, 4096, 2, 1000]
+
+
+def _desc_hex(parts):
+    return "".join(parts).upper()
+
+
+# feed:beef: device, config (1 interface), interface 0 class ff with 2 bulk EPs
+FEEDBEEF = _desc_hex([
+    "12010002ff000040edfeefbe0001000000 01".replace(" ", ""),
+    "09022000010100803209040000 02ff000000".replace(" ", ""),
+    "0705010240 0000".replace(" ", ""),
+    "0705810240 0000".replace(" ", ""),
+])
+# 046d:c077 HID mouse: interface class 03, interrupt IN 0x81
+MOUSE = _desc_hex([
+    "120100020000000 86d0477c0000100000001".replace(" ", ""),
+    "0902220001010 0a032".replace(" ", ""),
+    "090400000103010200",
+    "092111010001223400",
+    "07058103040 00a".replace(" ", ""),
+])
+
+
+def _device(path, desc, vid, pid, devnum, cls):
+    minor = (BUS - 1) * 128 + devnum - 1
+    return "\n".join([
+        f"P: /devices/pci0000:00/0000:00:14.0/usb{BUS}/{BUS}-{devnum - 1}",
+        f"N: bus/usb/{BUS:03d}/{devnum:03d}={desc}",
+        f"E: BUSNUM={BUS:03d}",
+        f"E: DEVNAME=/dev/bus/usb/{BUS:03d}/{devnum:03d}",
+        f"E: DEVNUM={devnum:03d}",
+        "E: DEVTYPE=usb_device",
+        "E: DRIVER=usb",
+        "E: ID_BUS=usb",
+        f"E: ID_VENDOR_ID={vid}",
+        f"E: ID_MODEL_ID={pid}",
+        "E: MAJOR=189",
+        f"E: MINOR={minor}",
+        f"E: PRODUCT={vid.lstrip('0')}/{pid.lstrip('0')}/100",
+        "E: SUBSYSTEM=usb",
+        f"E: TYPE={int(cls, 16)}/0/0",
+        "A: bConfigurationValue=1",
+        f"A: bDeviceClass={cls}",
+        "A: bDeviceProtocol=00",
+        "A: bDeviceSubClass=00",
+        f"A: bMaxPacketSize0={int(desc[14:16], 16)}",
+        "A: bNumConfigurations=1",
+        "A: bNumInterfaces= 1",
+        "A: bcdDevice=0100",
+        f"A: busnum={BUS}",
+        f"H: descriptors={desc}",
+        f"A: dev=189:{minor}",
+        f"A: devnum={devnum}",
+        f"A: devpath={devnum - 1}",
+        f"A: idProduct={pid}",
+        f"A: idVendor={vid}",
+        "A: speed=12",
+        "A: version= 2.00",
+        "",
+    ])
+
+
+def device_file():
+    return (_device(DEVNODE, FEEDBEEF, "feed", "beef", DEVNUM, "ff") + "\n" +
+            _device(None, MOUSE, "046d", "c077", DEVNUM + 1, "00"))
+
+
+def _reply(status, data):
+    return (f"USBDEVFS_REAPURBNDELAY 0 3 129 {status} 0 {URB_SIZE} {len(data)} 0 "
+            f"{data.hex().upper()}")
+
+
+def ioctl_script(stream, fault=None, at=None):
+    """(script text, number of bulk IN replies, bytes delivered)."""
+    if fault not in (None, "unplug", "stall"):
+        raise ValueError(f"unknown fault {fault!r}")
+    if fault and (at is None or not 0 <= at <= len(stream)):
+        raise ValueError(f"--at must be within the stream (0..{len(stream)})")
+    lines = [f"@DEV {DEVNODE} (usbdevfs)", "USBDEVFS_GET_CAPABILITIES 0 0F000000"]
+    pos = k = replies = 0
+    end = at if fault else len(stream)
+    while pos < end:
+        n = min(CHUNKS[k % len(CHUNKS)], URB_SIZE)
+        k += 1
+        if fault and pos + n > end:
+            break
+        n = min(n, end - pos)
+        lines.append(_reply(0, stream[pos:pos + n]))
+        replies += 1
+        pos += n
+    delivered = pos
+    if fault == "stall":
+        lines.append(_reply(-EPIPE, stream[pos:end]))   # partial data, then STALL
+        delivered = end
+        replies += 1
+    elif fault == "unplug":
+        if pos < end:                                  # last whole transfer before
+            lines.append(_reply(0, stream[pos:end]))   # the cable is pulled
+            replies += 1
+            delivered = end
+        lines.append(_reply(-ENODEV, b""))
+        replies += 1
+    return "\n".join(lines) + "\n", replies, delivered
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    d = sub.add_parser("device", help="write the umockdev device description")
+    d.add_argument("out")
+    i = sub.add_parser("ioctl", help="write the ioctl script for a stream file")
+    i.add_argument("stream")
+    i.add_argument("out")
+    i.add_argument("--fault", choices=["unplug", "stall"])
+    i.add_argument("--at", type=int, help="stream byte offset of the fault")
+    a = ap.parse_args(argv)
+    if a.cmd == "device":
+        with open(a.out, "w") as f:
+            f.write(device_file())
+        return 0
+    try:
+        with open(a.stream, "rb") as f:
+            stream = f.read()
+    except OSError as e:
+        print(f"mkioctl: cannot read {a.stream}: {e.strerror}", file=sys.stderr)
+        return 2
+    if not stream:
+        print(f"mkioctl: {a.stream} is empty", file=sys.stderr)
+        return 2
+    if a.fault and a.at is None:
+        a.at = len(stream) // 2
+    try:
+        text, replies, delivered = ioctl_script(stream, a.fault, a.at)
+    except ValueError as e:
+        print(f"mkioctl: {e}", file=sys.stderr)
+        return 2
+    with open(a.out, "w") as f:
+        f.write(text)
+    print(f"{replies} {delivered}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
