@@ -31,7 +31,7 @@
 #define R8_FLAG_FULL 0x01
 
 #define R8_WIRE_CRC_BYTES 2
-#define R8_WIRE_START_BYTES 15          /* FRAME_START body without palette */
+#define R8_WIRE_START_BYTES 14          /* FRAME_START body without palette */
 #define R8_WIRE_BAND_HDR 6              /* BAND body before the payload */
 #define R8_WIRE_END_BYTES 7             /* FRAME_END body */
 #define R8_WIRE_MAX_BAND 32767u         /* largest raw band in bytes */
@@ -150,8 +150,8 @@ typedef struct r8_dec {
     /* current frame */
     r8_u8 in_frame, full, format, codec, valid, npal;
     r8_u16 frame, nbands_got, width, height, band;
-    r8_u16 last_good;        /* number of the last good frame */
-    r8_u8 have_last;         /* last_good is set */
+    r8_u16 last_seen;        /* last frame number seen in any packet */
+    r8_u8 have_last;         /* last_seen is set */
     r8_u8 base_ok;           /* fb holds the last good frame */
     r8_u8 need_full;         /* ask the device for a full frame */
     unsigned frame_bytes;

@@ -1,0 +1,295 @@
+/* test_wire.c - CRC-16/CCITT-FALSE, COBS (shared vectors, streaming
+ * writer, malformed input) and the frame encoder's packets. */
+#include "unity.h"
+#include "r8wire.h"
+#include "../vectors/vectors.h"
+
+#define GUARD 0xA5
+static r8_u8 buf[300 + 4];
+static r8_u8 buf2[300 + 4];
+static r8_u8 cap_buf[700];
+static unsigned cap_len;
+
+void setUp(void)
+{
+    unsigned i;
+    for (i = 0; i < sizeof buf; i++)
+        buf[i] = buf2[i] = GUARD;
+    cap_len = 0;
+}
+void tearDown(void) {}
+
+static void capture(void *ctx, const r8_u8 *p, unsigned n)
+{
+    (void)ctx;
+    while (n--) {
+        if (cap_len < sizeof cap_buf)
+            cap_buf[cap_len] = *p;
+        cap_len++;
+        p++;
+    }
+}
+
+static void test_crc_vectors(void)
+{
+    unsigned i, seen = 0;
+    r8_u16 c;
+    for (i = 0; i < TVEC_COUNT; i++) {
+        const tvec *v = &tvecs[i];
+        if (v->kind != VK_CRC)
+            continue;
+        seen++;
+        c = r8_crc16(v->in, v->in_len);
+        TEST_ASSERT_EQUAL_HEX16(((unsigned)v->out[0] << 8) | v->out[1], c);
+    }
+    TEST_ASSERT_EQUAL_UINT(0x29B1, r8_crc16((const r8_u8 *)"123456789", 9));
+    /* incremental = one shot */
+    c = r8_crc16_update(R8_CRC16_INIT, (const r8_u8 *)"1234", 4);
+    TEST_ASSERT_EQUAL_UINT(0x29B1, r8_crc16_update(c, (const r8_u8 *)"56789", 5));
+    TEST_ASSERT_TRUE(seen >= 3);
+}
+
+static void test_cobs_vectors(void)
+{
+    unsigned i, len, seen = 0;
+    for (i = 0; i < TVEC_COUNT; i++) {
+        const tvec *v = &tvecs[i];
+        setUp();
+        if (v->kind == VK_COBS) {
+            seen++;
+            TEST_ASSERT_EQUAL_INT(R8_OK, r8_cobs_encode(v->in, v->in_len, buf, 300, &len));
+            TEST_ASSERT_EQUAL_UINT(v->out_len, len);
+            TEST_ASSERT_EQUAL_MEMORY(v->out, buf, len);
+            TEST_ASSERT_TRUE(len <= R8_COBS_BOUND(v->in_len));
+            r8_cobs_write(v->in, v->in_len, capture, 0);
+            TEST_ASSERT_EQUAL_UINT(v->out_len, cap_len);
+            TEST_ASSERT_EQUAL_MEMORY(v->out, cap_buf, cap_len);
+            TEST_ASSERT_EQUAL_INT(R8_OK, r8_cobs_decode(v->out, v->out_len, buf2, 300, &len));
+            TEST_ASSERT_EQUAL_UINT(v->in_len, len);
+            TEST_ASSERT_EQUAL_MEMORY(v->in, buf2, len);
+        } else if (v->kind == VK_COBS_BAD) {
+            seen++;
+            TEST_ASSERT_EQUAL_INT(v->err, r8_cobs_decode(v->in, v->in_len, buf2, v->limit, &len));
+        }
+    }
+    TEST_ASSERT_TRUE(seen >= 10);
+}
+
+static void test_cobs_limits(void)
+{
+    static const r8_u8 in[] = { 1, 2, 0, 3 };
+    unsigned cap, len;
+    int rc;
+    for (cap = 0; cap < 7; cap++) {
+        setUp();
+        rc = r8_cobs_encode(in, 4, buf, cap, &len);
+        TEST_ASSERT_EQUAL_HEX8(GUARD, buf[cap]);
+        TEST_ASSERT_EQUAL_INT(cap >= 5 ? R8_OK : R8_E_SPACE, rc);
+    }
+}
+
+static const r8_u8 pal[6] = { 0, 0, 0, 255, 255, 255 };
+static r8_u8 scratch[200];
+static r8_u8 band[64];
+
+static void tx_cfg(r8_tx_cfg *c)
+{
+    c->format = R8_FMT_PAGE1;
+    c->width = 16;
+    c->height = 16;
+    c->band = 8;
+    c->codec = R8_CODEC_RLE;
+    c->full_period = 4;
+    c->dirty = 1;
+    c->palette = 0;
+    c->npal = 0;
+}
+
+/* Decode the capture's packets in order; returns the count and checks
+ * each packet's CRC.  Types go to types[]. */
+static unsigned packets(r8_u8 *types, unsigned max)
+{
+    unsigned i = 0, start = 0, n = 0, len;
+    for (i = 0; i < cap_len; i++) {
+        if (cap_buf[i] != 0)
+            continue;
+        if (i > start) {
+            TEST_ASSERT_EQUAL_INT(R8_OK, r8_cobs_decode(cap_buf + start, i - start, buf, 300, &len));
+            TEST_ASSERT_TRUE(len >= 3);
+            TEST_ASSERT_EQUAL_UINT(r8_crc16(buf, len - 2), ((unsigned)buf[len - 2] << 8) | buf[len - 1]);
+            if (n < max)
+                types[n] = buf[0];
+            n++;
+        }
+        start = i + 1;
+    }
+    TEST_ASSERT_EQUAL_UINT(cap_len, start); /* ends with a delimiter */
+    return n;
+}
+
+static void send_frame(r8_tx *tx, r8_u16 no, r8_u8 top, r8_u8 bottom)
+{
+    r8_fb fb;
+    unsigned k;
+    TEST_ASSERT_EQUAL_INT(0, r8_fb_init(&fb, band, R8_FMT_PAGE1, 16, 16, 0, 8));
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_frame_begin(tx, no));
+    for (k = 0; k < 16; k++)
+        band[k] = top;
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_band(tx, &fb));
+    r8_fb_set_band(&fb, 8);
+    for (k = 0; k < 16; k++)
+        band[k] = (r8_u8)(bottom + k);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_band(tx, &fb));
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_frame_end(tx));
+}
+
+static void test_tx_sizes_and_errors(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    tx_cfg(&c);
+    TEST_ASSERT_EQUAL_UINT(16, r8_tx_band_bytes(&c));
+    TEST_ASSERT_EQUAL_UINT(16 + R8_WIRE_BAND_HDR + 2 + 4 * 2, r8_tx_scratch(&c));
+    TEST_ASSERT_EQUAL_INT(R8_E_SPACE, r8_tx_init(&tx, &c, scratch, 10, capture, 0));
+    c.band = 4; /* PAGE1 needs multiples of 8 */
+    TEST_ASSERT_EQUAL_UINT(0, r8_tx_scratch(&c));
+    TEST_ASSERT_EQUAL_INT(R8_E_ARG, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    tx_cfg(&c);
+    c.codec = 7;
+    TEST_ASSERT_EQUAL_INT(R8_E_ARG, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+}
+
+static void test_tx_full_then_dirty(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    r8_u8 t[16];
+    r8_u32 k;
+    tx_cfg(&c);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    r8_tx_sync(&tx);
+    send_frame(&tx, 0, 0, 1);   /* first frame: full */
+    TEST_ASSERT_EQUAL_UINT(4, packets(t, 16));
+    TEST_ASSERT_EQUAL_UINT(R8_PKT_FRAME_START, t[0]);
+    TEST_ASSERT_EQUAL_UINT(R8_PKT_BAND, t[1]);
+    TEST_ASSERT_EQUAL_UINT(R8_PKT_FRAME_END, t[3]);
+    cap_len = 0;
+    send_frame(&tx, 1, 0, 1);   /* nothing changed: start + end */
+    TEST_ASSERT_EQUAL_UINT(2, packets(t, 16));
+    cap_len = 0;
+    send_frame(&tx, 2, 0xFF, 1); /* top changed */
+    TEST_ASSERT_EQUAL_UINT(3, packets(t, 16));
+    cap_len = 0;
+    send_frame(&tx, 3, 0xFF, 1);
+    TEST_ASSERT_EQUAL_UINT(2, packets(t, 16));
+    cap_len = 0;
+    send_frame(&tx, 4, 0xFF, 1); /* period 4: full again */
+    TEST_ASSERT_EQUAL_UINT(4, packets(t, 16));
+    cap_len = 0;
+    r8_tx_request_full(&tx);
+    send_frame(&tx, 5, 0xFF, 1); /* requested */
+    TEST_ASSERT_EQUAL_UINT(4, packets(t, 16));
+    /* the encoder counts exactly the bytes it wrote */
+    cap_len = 0;
+    k = tx.bytes;
+    send_frame(&tx, 6, 0xFF, 2);
+    TEST_ASSERT_EQUAL_UINT(k + cap_len, tx.bytes);
+}
+
+static void test_tx_request_packet(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    r8_u8 req[R8_DEC_REQUEST_BYTES];
+    unsigned n, k, acc = 0;
+    r8_u8 t[16];
+    tx_cfg(&c);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    send_frame(&tx, 0, 0, 1);
+    cap_len = 0;
+    n = r8_dec_request(req);
+    TEST_ASSERT_TRUE(n <= R8_DEC_REQUEST_BYTES);
+    TEST_ASSERT_EQUAL_UINT(0, req[0]);
+    TEST_ASSERT_EQUAL_UINT(0, req[n - 1]);
+    for (k = 0; k < n; k++)
+        acc += (unsigned)r8_tx_rx(&tx, req[k]);
+    TEST_ASSERT_EQUAL_UINT(1, acc);
+    send_frame(&tx, 1, 0, 1);
+    TEST_ASSERT_EQUAL_UINT(4, packets(t, 16)); /* full despite no change */
+    /* a corrupted request is ignored */
+    req[2] ^= 0x10;
+    acc = 0;
+    for (k = 0; k < n; k++)
+        acc += (unsigned)r8_tx_rx(&tx, req[k]);
+    TEST_ASSERT_EQUAL_UINT(0, acc);
+    cap_len = 0;
+    send_frame(&tx, 2, 0, 1);
+    TEST_ASSERT_EQUAL_UINT(2, packets(t, 16));
+    /* garbage then a good request still works */
+    for (k = 0; k < 40; k++)
+        r8_tx_rx(&tx, (r8_u8)(k * 7 + 1));
+    req[2] ^= 0x10;
+    acc = 0;
+    for (k = 0; k < n; k++)
+        acc += (unsigned)r8_tx_rx(&tx, req[k]);
+    TEST_ASSERT_EQUAL_UINT(1, acc);
+}
+
+static void test_tx_palette_and_raw_fallback(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    r8_fb fb;
+    unsigned k, len;
+    r8_u8 t[8];
+    tx_cfg(&c);
+    c.format = R8_FMT_IDX8;
+    c.width = 8;
+    c.height = 4;
+    c.band = 4;
+    c.palette = pal;
+    c.npal = 2;
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    TEST_ASSERT_EQUAL_INT(0, r8_fb_init(&fb, band, R8_FMT_IDX8, 8, 4, 0, 4));
+    for (k = 0; k < 32; k++)
+        band[k] = (r8_u8)(k * 37 + 11); /* no runs: RLE would grow */
+    r8_tx_frame_begin(&tx, 9);
+    r8_tx_band(&tx, &fb);
+    r8_tx_frame_end(&tx);
+    TEST_ASSERT_EQUAL_UINT(3, packets(t, 8));
+    /* the band packet went raw: codec byte 0, payload = the band */
+    {
+        unsigned i, start = 0, seen = 0;
+        for (i = 0; i < cap_len; i++) {
+            if (cap_buf[i])
+                continue;
+            r8_cobs_decode(cap_buf + start, i - start, buf, 300, &len);
+            if (buf[0] == R8_PKT_FRAME_START) {
+                TEST_ASSERT_EQUAL_UINT(R8_WIRE_START_BYTES + 6 + 2, len);
+                TEST_ASSERT_EQUAL_UINT(2, buf[13]);
+                TEST_ASSERT_EQUAL_MEMORY(pal, buf + 14, 6);
+            }
+            if (buf[0] == R8_PKT_BAND) {
+                seen = 1;
+                TEST_ASSERT_EQUAL_UINT(R8_CODEC_RAW, buf[5]);
+                TEST_ASSERT_EQUAL_UINT(R8_WIRE_BAND_HDR + 32 + 2, len);
+                TEST_ASSERT_EQUAL_MEMORY(band, buf + R8_WIRE_BAND_HDR, 32);
+            }
+            start = i + 1;
+        }
+        TEST_ASSERT_TRUE(seen);
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_crc_vectors);
+    RUN_TEST(test_cobs_vectors);
+    RUN_TEST(test_cobs_limits);
+    RUN_TEST(test_tx_sizes_and_errors);
+    RUN_TEST(test_tx_full_then_dirty);
+    RUN_TEST(test_tx_request_packet);
+    RUN_TEST(test_tx_palette_and_raw_fallback);
+    return UNITY_END();
+}
