@@ -1,0 +1,136 @@
+/* app.c - the demo firmware's main loop (see app.h): render each frame
+ * band by band and stream it with the display protocol.  C89, no
+ * malloc, no stdio; all memory is the caller's arena. */
+#include "app.h"
+#include "plat.h"
+
+static r8_tx tx;
+static r8_render ren;
+static r8_fb band_fb;
+
+/* Default IDX8 palette: 17 grey levels for shade indices 0..16. */
+static const r8_u8 grey17[17 * 3] = {
+    0, 0, 0, 16, 16, 16, 32, 32, 32, 48, 48, 48, 64, 64, 64, 80, 80, 80,
+    96, 96, 96, 112, 112, 112, 128, 128, 128, 143, 143, 143, 159, 159, 159,
+    175, 175, 175, 191, 191, 191, 207, 207, 207, 223, 223, 223,
+    239, 239, 239, 255, 255, 255
+};
+
+void app_defaults(app_cfg *cfg)
+{
+    r8_render_defaults(&cfg->render);
+    cfg->frames = 64;
+    cfg->first_frame = 0;
+    cfg->codec = R8_CODEC_RLE;
+    cfg->full_period = 32;
+    cfg->dirty = 1;
+    cfg->palette = 0;
+    cfg->npal = 0;
+    cfg->on_band = 0;
+    cfg->on_frame = 0;
+    cfg->ctx = 0;
+}
+
+static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
+{
+    t->format = cfg->render.format;
+    t->width = cfg->render.width;
+    t->height = cfg->render.height;
+    t->band = cfg->render.band;
+    t->codec = cfg->codec;
+    t->full_period = cfg->full_period;
+    t->dirty = cfg->dirty;
+    t->palette = cfg->palette;
+    t->npal = cfg->npal;
+    if (cfg->render.format == R8_FMT_IDX8 && !cfg->palette) {
+        t->palette = grey17;
+        t->npal = 17;
+    }
+}
+
+int app_plan(const app_cfg *cfg, app_layout *lay)
+{
+    r8_tx_cfg t;
+    unsigned max = 0u - 1u;
+    tx_cfg_from(cfg, &t);
+    lay->work = 0;
+    lay->work_size = r8_render_ram(&cfg->render);
+    lay->band_size = r8_tx_band_bytes(&t);
+    lay->scratch_size = r8_tx_scratch(&t);
+    if (!lay->band_size || !lay->scratch_size ||
+        r8_fb_bytes(t.format, t.width, t.band) != lay->band_size)
+        return -1;
+    /* the sum must fit an unsigned (16 bits on the targets) */
+    if (lay->work_size > max - lay->band_size ||
+        lay->work_size + lay->band_size > max - lay->scratch_size)
+        return -1;
+    lay->band = lay->work_size;
+    lay->scratch = lay->band + lay->band_size;
+    lay->total = lay->scratch + lay->scratch_size;
+    return 0;
+}
+
+unsigned app_ram(const app_cfg *cfg)
+{
+    app_layout lay;
+    return app_plan(cfg, &lay) ? 0u : lay.total;
+}
+
+static void put(void *ctx, const r8_u8 *p, unsigned n)
+{
+    (void)ctx;
+    plat_write(p, n);
+}
+
+int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
+{
+    app_layout lay;
+    r8_tx_cfg t;
+    r8_u16 i, no;
+    r8_s16 y;
+    if (app_plan(cfg, &lay))
+        return APP_E_CFG;
+    if (mem_size < lay.total)
+        return APP_E_RAM;
+    tx_cfg_from(cfg, &t);
+    if (r8_render_init(&ren, &cfg->render, mem + lay.work, lay.work_size) ||
+        r8_fb_init(&band_fb, mem + lay.band, t.format, t.width, t.height, 0, t.band) ||
+        r8_tx_init(&tx, &t, mem + lay.scratch, lay.scratch_size, put, 0))
+        return APP_E_CFG;
+    plat_mark(PLAT_MARK_START);
+    r8_tx_sync(&tx);
+    for (i = 0; !cfg->frames || i < cfg->frames; i++) {
+        no = (r8_u16)(cfg->first_frame + i);
+        plat_mark(PLAT_MARK_FRAME_BEGIN);
+        r8_render_frame(&ren, no);
+        r8_tx_frame_begin(&tx, no);
+        for (y = 0; y < t.height; y = (r8_s16)(y + t.band)) {
+            r8_fb_set_band(&band_fb, y);
+            r8_render_band(&ren, &band_fb);
+            if (cfg->on_band)
+                cfg->on_band(cfg->ctx, &band_fb);
+            r8_tx_band(&tx, &band_fb);
+        }
+        r8_tx_frame_end(&tx);
+        plat_mark(PLAT_MARK_FRAME_END);
+        if (cfg->on_frame && cfg->on_frame(cfg->ctx, no))
+            break;
+    }
+    plat_mark(PLAT_MARK_DONE);
+    return APP_OK;
+}
+
+void app_rx(r8_u8 c)
+{
+    r8_tx_rx(&tx, c);
+}
+
+void app_request_full(void)
+{
+    r8_tx_request_full(&tx);
+}
+
+r8_u32 app_bytes_out(void)
+{
+    return tx.bytes;
+}
