@@ -1,21 +1,23 @@
 #!/usr/bin/env python3
 """Write umockdev fixtures for the USB tests from a real rast8 stream.
 
-  mkioctl.py device OUT.umockdev
+  mkioctl.py device OUT.umockdev [--boards 2]
       the emulated bus: a vendor-class board feed:beef (interface 0, class
       ff, bulk IN 0x81 and bulk OUT 0x01, 64-byte packets) at
       /dev/bus/usb/001/002, and a HID mouse 046d:c077 (interrupt IN 0x81)
-      at /dev/bus/usb/001/003 that `--list` must not offer.
+      at /dev/bus/usb/001/003 that `--list` must not offer.  With
+      --boards 2, a second identical board at /dev/bus/usb/001/004.
 
-  mkioctl.py ioctl STREAM OUT.ioctl [--fault unplug|stall --at BYTES]
+  mkioctl.py ioctl STREAM OUT.ioctl [--fault unplug|stall --at BYTES] [--addr N]
       a usbdevfs ioctl script in which endpoint 0x81 delivers the bytes of
       STREAM (a file written by `rast8-emu --out`), split into bulk IN
       transfers of varying length (full, short, 1 byte, zero-length) as a
       device's short packets would end them.  With --fault, the transfer
       that would pass byte offset BYTES ends there with an error status
       instead: -ENODEV (unplugged) or -EPIPE (stalled); for a stall it
-      still carries the bytes up to BYTES, as a real URB does.  Prints the
-      number of bulk IN replies and the number of stream bytes delivered.
+      still carries the bytes up to BYTES, as a real URB does.  --addr
+      picks the board (device address, default 2).  Prints the number of
+      bulk IN replies and the number of stream bytes delivered.
 
 Each reply answers one 4096-byte read (URB_SIZE of rast8.usb and
 rast8-usbcat); umockdev matches replies on endpoint, flags and length.
@@ -58,7 +60,7 @@ MOUSE = _desc_hex([
 ])
 
 
-def _device(path, desc, vid, pid, devnum, cls):
+def _device(desc, vid, pid, devnum, cls):
     minor = (BUS - 1) * 128 + devnum - 1
     return "\n".join([
         f"P: /devices/pci0000:00/0000:00:14.0/usb{BUS}/{BUS}-{devnum - 1}",
@@ -97,9 +99,16 @@ def _device(path, desc, vid, pid, devnum, cls):
     ])
 
 
-def device_file():
-    return (_device(DEVNODE, FEEDBEEF, "feed", "beef", DEVNUM, "ff") + "\n" +
-            _device(None, MOUSE, "046d", "c077", DEVNUM + 1, "00"))
+def devnode(addr=DEVNUM):
+    return f"/dev/bus/usb/{BUS:03d}/{addr:03d}"
+
+
+def device_file(boards=1):
+    devs = [_device(FEEDBEEF, "feed", "beef", DEVNUM, "ff"),
+            _device(MOUSE, "046d", "c077", DEVNUM + 1, "00")]
+    if boards > 1:
+        devs.append(_device(FEEDBEEF, "feed", "beef", DEVNUM + 2, "ff"))
+    return "\n".join(devs)
 
 
 def _reply(status, data):
@@ -107,13 +116,13 @@ def _reply(status, data):
             f"{data.hex().upper()}")
 
 
-def ioctl_script(stream, fault=None, at=None):
+def ioctl_script(stream, fault=None, at=None, addr=DEVNUM):
     """(script text, number of bulk IN replies, bytes delivered)."""
     if fault not in (None, "unplug", "stall"):
         raise ValueError(f"unknown fault {fault!r}")
     if fault and (at is None or not 0 <= at <= len(stream)):
         raise ValueError(f"--at must be within the stream (0..{len(stream)})")
-    lines = [f"@DEV {DEVNODE} (usbdevfs)", "USBDEVFS_GET_CAPABILITIES 0 0F000000"]
+    lines = [f"@DEV {devnode(addr)} (usbdevfs)", "USBDEVFS_GET_CAPABILITIES 0 0F000000"]
     pos = k = replies = 0
     end = at if fault else len(stream)
     while pos < end:
@@ -147,15 +156,17 @@ def main(argv=None):
     sub = ap.add_subparsers(dest="cmd", required=True)
     d = sub.add_parser("device", help="write the umockdev device description")
     d.add_argument("out")
+    d.add_argument("--boards", type=int, choices=[1, 2], default=1)
     i = sub.add_parser("ioctl", help="write the ioctl script for a stream file")
     i.add_argument("stream")
     i.add_argument("out")
     i.add_argument("--fault", choices=["unplug", "stall"])
     i.add_argument("--at", type=int, help="stream byte offset of the fault")
+    i.add_argument("--addr", type=int, default=DEVNUM, help="device address of the board")
     a = ap.parse_args(argv)
     if a.cmd == "device":
         with open(a.out, "w") as f:
-            f.write(device_file())
+            f.write(device_file(a.boards))
         return 0
     try:
         with open(a.stream, "rb") as f:
@@ -169,7 +180,7 @@ def main(argv=None):
     if a.fault and a.at is None:
         a.at = len(stream) // 2
     try:
-        text, replies, delivered = ioctl_script(stream, a.fault, a.at)
+        text, replies, delivered = ioctl_script(stream, a.fault, a.at, a.addr)
     except ValueError as e:
         print(f"mkioctl: {e}", file=sys.stderr)
         return 2

@@ -66,12 +66,14 @@ def bed(work):
     return path
 
 
-def make_script(stream, work, name, fault=None, at=None):
+def make_script(stream, work, name, fault=None, at=None, addr=None):
     """Run the generator; returns (ioctl path, replies, bytes delivered)."""
     path = work / f"{name}.ioctl"
     cmd = [sys.executable, str(HERE / "mkioctl.py"), "ioctl", str(stream), str(path)]
     if fault:
         cmd += ["--fault", fault, "--at", str(at)]
+    if addr:
+        cmd += ["--addr", str(addr)]
     r = subprocess.run(cmd, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     replies, delivered = map(int, r.stdout.split())
@@ -91,8 +93,10 @@ def mock(bed, ioctl, cmd, fault=None, timeout=60, stdin=None):
     if fault:
         env["RAST8_USB_FAULT"] = fault
     full = ["umockdev-run", "--device", str(bed)]
-    if ioctl:
-        full += ["--ioctl", f"{mkioctl.DEVNODE}={ioctl}"]
+    if ioctl and not isinstance(ioctl, dict):
+        ioctl = {mkioctl.DEVNODE: ioctl}
+    for node, script in (ioctl or {}).items():
+        full += ["--ioctl", f"{node}={script}"]
     full += ["--", "sh", "-c", 'LD_PRELOAD="$0${LD_PRELOAD:+:$LD_PRELOAD}" exec "$@"',
              str(SHIM)] + [str(c) for c in cmd]
     return subprocess.run(full, env=env, capture_output=True, timeout=timeout, stdin=stdin)
@@ -132,6 +136,16 @@ def prefix_frames(stream, n, work, name):
     d = work / f"{name}.prefix"
     decode(part, d)          # a cut stream may end with a warning; frames count
     return frames_in(d)
+
+
+@pytest.fixture(scope="session")
+def bed2(work):
+    """Two identical boards feed:beef, at addresses 2 and 4."""
+    path = work / "bed2.umockdev"
+    r = subprocess.run([sys.executable, str(HERE / "mkioctl.py"), "device", str(path),
+                        "--boards", "2"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return path
 
 
 def usbread(bed, ioctl, spec, out, fault=None, chunk=1000, backend=None):
@@ -372,3 +386,35 @@ def test_permission_denied_names_the_udev_rule(bed, clean):
     rc, rep = usbread(bed, clean[0], SPEC, os.devnull, fault="access")
     assert rc == EX_ACCESS and rep["error"]["type"] == "UsbPermissionDenied"
     assert "udev" in rep["error"]["message"]
+
+
+def test_device_selection_between_identical_boards(bed2, stream, clean, work):
+    """The board at address 2 streams cleanly, the one at address 4 stalls early."""
+    data = stream.read_bytes()
+    at = len(data) // 4
+    other, _, _ = make_script(stream, work, "board4", "stall", at, addr=4)
+    scripts = {mkioctl.devnode(2): clean[0], mkioctl.devnode(4): other}
+    r = mock(bed2, scripts, [USBCAT, "--list"])
+    lines = r.stdout.decode().splitlines()
+    assert len(lines) == 2 and all(l.startswith("usb:feed:beef:81 ") for l in lines), lines
+    assert {"addr 002", "addr 004"} == {l.split("  ")[1].split(" ", 2)[2] for l in lines}
+
+    r = mock(bed2, scripts, [USBCAT, "--addr", "4", SPEC])
+    assert r.returncode == EX_STALL and r.stdout == data[:at], r.stderr
+    r = mock(bed2, scripts, [USBCAT, "--bus", "1", "--addr", "2", "-n", str(len(data)), SPEC])
+    assert r.returncode == 0 and r.stdout == data, r.stderr
+    r = mock(bed2, scripts, [USBCAT, "--addr", "9", SPEC])
+    assert r.returncode == EX_NODEV and "given --bus/--addr" in r.stderr.decode()
+    r = mock(bed2, scripts, [USBCAT, "-n", "10", SPEC])
+    assert r.returncode == 0 and "2 devices match" in r.stderr.decode()
+
+    rc, rep = usbread(bed2, scripts, f"{SPEC},addr=4", work / "sel4.bin")
+    assert rc == EX_STALL and (work / "sel4.bin").read_bytes() == data[:at]
+    rc, rep = usbread(bed2, scripts, f"{SPEC},bus=1,addr=2,idle=0.3", work / "sel2.bin",
+                      fault=f"silent={clean[1]}")
+    assert rc == 0 and (work / "sel2.bin").read_bytes() == data
+
+
+def test_usbcat_unwritable_output(bed, clean, work):
+    r = mock(bed, clean[0], [USBCAT, "-o", work / "no" / "such" / "dir", SPEC])
+    assert r.returncode == 9 and "cannot write" in r.stderr.decode()
