@@ -64,4 +64,7 @@ void r8_fb_span(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c);
 void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
                        r8_u8 s, r8_u8 base);
 
+/* One pixel of shade level s through the same dither (8 bpp: base + s). */
+void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base);
+
 #endif

@@ -228,3 +228,11 @@ void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
         idx8_fill(fb, y, x0, x1, (r8_u8)(base + s));
     }
 }
+
+void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base)
+{
+    if (fb->format == R8_FMT_IDX8)
+        r8_fb_pixel(fb, x, y, (r8_u8)(base + s));
+    else
+        r8_fb_pixel(fb, x, y, (r8_u8)(s > bayer4[((y & 3) << 2) | (x & 3)]));
+}

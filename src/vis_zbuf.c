@@ -1,0 +1,147 @@
+/* vis_zbuf.c - drawing a span with no depth test (cull only, painter's)
+ * and through a full z-buffer of 8 or 16 bits per pixel.  Depth is the
+ * renderer's 1/z-affine value (larger = nearer), interpolated along the
+ * span with the exact stepwise interpolator; a pixel is written when its
+ * depth is >= the stored one (so the later of two equal depths wins). */
+#include "r8int.h"
+
+/* Span clipped to the frame: first pixel, end, and the interpolators
+ * advanced to the first pixel. */
+static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
+                      r8_s16 *xa, r8_s16 *xb, r8_interp *d, r8_interp *s)
+{
+    r8_s16 n = (r8_s16)(sp->x1 - sp->x0);
+    r8_s16 k0 = 0;
+    *xa = sp->x0;
+    *xb = sp->x1 > fb->width ? fb->width : sp->x1;
+    if (*xa < 0) {
+        k0 = (r8_s16)-*xa;
+        *xa = 0;
+    }
+    if (*xa >= *xb)
+        return 0;
+    if (st->attrs & R8_ATTR_D)
+        r8_interp_init_mul(d, sp->dl, k0, (r8_s32)sp->dr - sp->dl, (r8_s32)sp->dr - sp->dl, (r8_u16)n);
+    if (st->attrs & R8_ATTR_S)
+        r8_interp_init_mul(s, sp->sl, k0, (r8_s32)sp->sr - sp->sl, (r8_s32)sp->sr - sp->sl, (r8_u16)n);
+    return 1;
+}
+
+static r8_u8 level_of(r8_s16 s)
+{
+    r8_s16 l = (r8_s16)((s + 128) >> 8);
+    return (r8_u8)(l < 0 ? 0 : l > 16 ? 16 : l);
+}
+
+void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
+{
+    r8_s16 xa, xb, x;
+    r8_interp d, s;
+    if (!(st->attrs & R8_ATTR_S)) {
+        r8_fb_span_dither(fb, sp->y, sp->x0, sp->x1, p->shade, 0);
+        return;
+    }
+    if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
+        return;
+    for (x = xa; x < xb; x++) {
+        r8_fb_dot(fb, x, sp->y, level_of(s.val), 0);
+        R8_INTERP_STEP(&s);
+    }
+}
+
+void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int bits16)
+{
+    r8_s16 xa, xb, x;
+    r8_interp d, s;
+    unsigned row;
+    int gouraud = (st->attrs & R8_ATTR_S) != 0;
+    if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
+        return;
+    row = (unsigned)(sp->y - fb->y0) * (unsigned)fb->width;
+    if (bits16) {
+        r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
+        for (x = xa; x < xb; x++) {
+            if ((r8_u16)d.val >= z[x]) {
+                z[x] = (r8_u16)d.val;
+                r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+            }
+            R8_INTERP_STEP(&d);
+            if (gouraud)
+                R8_INTERP_STEP(&s);
+        }
+    } else {
+        r8_u8 *z = st->depth + row;
+        for (x = xa; x < xb; x++) {
+            r8_u8 d8 = (r8_u8)(d.val >> 7);
+            if (d8 >= z[x]) {
+                z[x] = d8;
+                r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+            }
+            R8_INTERP_STEP(&d);
+            if (gouraud)
+                R8_INTERP_STEP(&s);
+        }
+    }
+}
+
+/* The 4x4-block z-buffer, two designs (docs/visibility.md):
+ *  naive (the seed's): one 8-bit depth per 4x4 block, compared once per
+ *    block per span row with the span's depth where it enters the block;
+ *    the whole run of the span inside the block is drawn or dropped.  A
+ *    polygon that only partly covers a block still claims it, so a
+ *    farther polygon loses the rest of the block: holes at edges.
+ *  mask: the same depth plus a 16-bit coverage mask per block.  Pixels
+ *    not yet covered are always drawn (and marked); covered pixels are
+ *    drawn only if nearer than the block depth, which keeps the nearest
+ *    depth drawn.  No holes; errors remain where surfaces cross inside a
+ *    block. */
+void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int mask)
+{
+    r8_s16 xa, xb, x;
+    r8_interp d, s;
+    r8_u16 bw = (r8_u16)((fb->width + 3) >> 2);
+    r8_u16 brow = (r8_u16)(((sp->y - fb->y0) >> 2) * bw);
+    r8_u16 nblocks = (r8_u16)(bw * (r8_u16)(fb->rows >> 2));
+    r8_u8 *bz = st->depth;
+    r8_u16 *bm = (r8_u16 *)(void *)(st->depth + ((nblocks + 1u) & ~1u));
+    r8_u16 rowbits = (r8_u16)((sp->y & 3) << 2);
+    int gouraud = (st->attrs & R8_ATTR_S) != 0;
+    if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
+        return;
+    x = xa;
+    while (x < xb) {
+        r8_s16 end = (r8_s16)((x | 3) + 1);
+        r8_u16 b = (r8_u16)(brow + (x >> 2));
+        r8_u8 d8 = (r8_u8)(d.val >> 7);
+        if (end > xb)
+            end = xb;
+        if (!mask) {
+            int draw = d8 >= bz[b];
+            if (draw)
+                bz[b] = d8;
+            for (; x < end; x++) {
+                if (draw)
+                    r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                R8_INTERP_STEP(&d);
+                if (gouraud)
+                    R8_INTERP_STEP(&s);
+            }
+        } else {
+            r8_u16 m = bm[b];
+            int drawn = 0;
+            for (; x < end; x++) {
+                r8_u16 bit = (r8_u16)(1u << (rowbits | (x & 3)));
+                if (!(m & bit) || d8 >= bz[b]) {
+                    bm[b] = (r8_u16)(bm[b] | bit);
+                    r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                    drawn = 1;
+                }
+                R8_INTERP_STEP(&d);
+                if (gouraud)
+                    R8_INTERP_STEP(&s);
+            }
+            if (drawn && (m == 0 || d8 > bz[b]))
+                bz[b] = d8;
+        }
+    }
+}
