@@ -1,0 +1,436 @@
+/* main.c - rast8-emu: runs the demo firmware (emu/app.c) natively and
+ * exposes its UART as a file, stdout, a pty or a TCP port.  See --help. */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <getopt.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app.h"
+#include "plat.h"
+#include "plat_host.h"
+
+#define GUARD_BYTES 256
+#define GUARD 0xA5
+
+static const char *prog = "rast8-emu";
+
+static void usage(FILE *f)
+{
+    int i;
+    fprintf(f,
+"usage: %s [options]\n"
+"Runs the rast8 demo firmware natively and streams its frames (protocol v%d,\n"
+"docs/protocol.md) out of a virtual UART.\n"
+"\n"
+"output (one of; default --out -):\n"
+"  --out FILE|-      write the byte stream to FILE, or - for stdout\n"
+"  --pty             create a pty, print its path on stdout, wait for a reader\n"
+"  --tcp PORT        listen on 127.0.0.1:PORT (0 = any free port; the port is\n"
+"                    printed on stdout) for one client, e.g. pyserial socket://\n"
+"  --baud N          pace output in real time as 8N1 at N baud (10 bits/byte);\n"
+"                    default: unpaced\n"
+"  --linger S        pty/tcp: after the last frame wait up to S seconds for the\n"
+"                    reader to close (default 30) so no byte is lost\n"
+"\n"
+"firmware config:\n"
+"  --scene NAME      scene (default cube):",
+            prog, R8_WIRE_VERSION);
+    for (i = 0; i < R8_SCENE_COUNT; i++)
+        fprintf(f, " %s", r8_scene_name((r8_u8)i));
+    fprintf(f, "\n  --method NAME     visibility method (default cull): auto");
+    for (i = 0; i < R8_VIS_COUNT; i++)
+        fprintf(f, " %s", r8_method_name((r8_u8)i));
+    fprintf(f, "\n"
+"  --width W --height H   frame size (default 128x64)\n"
+"  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
+"  --band H          band height in rows (default 8; multiple of 8 for page1)\n"
+"  --frames N        frames to send (default 64; 0 = forever)\n"
+"  --first N         number of the first frame (default 0)\n"
+"  --codec C         rle (default), lz77, raw\n"
+"  --full-period N   full frame every N frames (default 32; 0 = first only)\n"
+"  --no-dirty        send every band of every frame\n"
+"  --ram BYTES       the target's RAM budget: fail if the config needs more,\n"
+"                    and check the run stays inside it\n"
+"\n"
+"checks and info:\n"
+"  --dump FILE       write every whole frame as rendered (the reference for\n"
+"                    end-to-end tests): per frame 'R8FB' frame:2 width:2\n"
+"                    height:2 format:1 0:1 then the raw framebuffer (big-endian)\n"
+"  --print-ram       print the RAM the config needs and exit\n"
+"  -q, --quiet       no summary on stderr\n"
+"  -h, --help        this help\n"
+"\n"
+"exit status: 0 ok, 2 bad option, 3 RAM budget too small, 4 RAM overrun,\n"
+"5 output failed (reader went away), 1 other errors\n");
+}
+
+static void die(int code, const char *fmt, const char *arg)
+{
+    fprintf(stderr, "%s: ", prog);
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n");
+    exit(code);
+}
+
+static long num(const char *opt, const char *s, long lo, long hi)
+{
+    char *end;
+    long v;
+    errno = 0;
+    v = strtol(s, &end, 0);
+    if (errno || end == s || *end || v < lo || v > hi) {
+        fprintf(stderr, "%s: %s: bad number '%s' (%ld..%ld)\n", prog, opt, s, lo, hi);
+        exit(2);
+    }
+    return v;
+}
+
+/* ---- host hooks: dump whole frames, poll the display's requests */
+struct host {
+    FILE *dump;
+    unsigned char *frame;
+    unsigned frame_bytes;
+    int rx_fd;
+    unsigned long requests;
+    app_cfg *cfg;
+};
+
+static void on_band(void *ctx, const r8_fb *band)
+{
+    struct host *h = ctx;
+    unsigned off, n, rows;
+    if (!h->frame)
+        return;
+    rows = (unsigned)(band->height - band->y0);
+    if (rows > (unsigned)band->rows)
+        rows = (unsigned)band->rows;
+    off = r8_fb_bytes(band->format, band->width, band->y0);
+    if (band->y0 == 0)
+        off = 0;
+    n = r8_fb_bytes(band->format, band->width, (r8_s16)rows);
+    memcpy(h->frame + off, band->buf, n);
+}
+
+static void put16(FILE *f, unsigned v)
+{
+    fputc((int)(v >> 8) & 0xFF, f);
+    fputc((int)v & 0xFF, f);
+}
+
+static int on_frame(void *ctx, r8_u16 no)
+{
+    struct host *h = ctx;
+    if (h->dump) {
+        fwrite("R8FB", 1, 4, h->dump);
+        put16(h->dump, no);
+        put16(h->dump, (unsigned)h->cfg->render.width);
+        put16(h->dump, (unsigned)h->cfg->render.height);
+        fputc(h->cfg->render.format, h->dump);
+        fputc(0, h->dump);
+        fwrite(h->frame, 1, h->frame_bytes, h->dump);
+        fflush(h->dump);
+    }
+    if (h->rx_fd >= 0) {
+        unsigned char buf[64];
+        struct pollfd p;
+        ssize_t n, k;
+        p.fd = h->rx_fd;
+        p.events = POLLIN;
+        while (poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
+            n = read(h->rx_fd, buf, sizeof buf);
+            if (n <= 0)
+                break;
+            for (k = 0; k < n; k++)
+                app_rx(buf[k]);
+            h->requests++;
+        }
+    }
+    return plat_host_failed();
+}
+
+/* ---- outputs */
+static int open_pty(void)
+{
+    int m = posix_openpt(O_RDWR | O_NOCTTY);
+    struct termios t;
+    int s;
+    const char *name;
+    if (m < 0 || grantpt(m) || unlockpt(m) || !(name = ptsname(m)))
+        die(1, "cannot create a pty: %s", strerror(errno));
+    /* raw mode on the slave side, then let the reader open it */
+    s = open(name, O_RDWR | O_NOCTTY);
+    if (s < 0 || tcgetattr(s, &t))
+        die(1, "cannot set up the pty: %s", strerror(errno));
+    cfmakeraw(&t);
+    tcsetattr(s, TCSANOW, &t);
+    printf("%s\n", name);
+    fflush(stdout);
+    close(s);
+    return m;
+}
+
+/* Wait until a reader has the pty slave open (the master stops
+ * reporting POLLHUP). */
+static void pty_wait_reader(int m)
+{
+    struct pollfd p;
+    for (;;) {
+        p.fd = m;
+        p.events = POLLOUT;
+        p.revents = 0;
+        poll(&p, 1, 100);
+        if (!(p.revents & POLLHUP))
+            return;
+        usleep(20000);
+    }
+}
+
+/* After the run: wait until the reader closes (POLLHUP) or linger ends.
+ * Closing the master earlier would drop bytes it has not read yet. */
+static void pty_linger(int m, double secs)
+{
+    struct pollfd p;
+    struct timespec a, b;
+    char buf[64];
+    clock_gettime(CLOCK_MONOTONIC, &a);
+    for (;;) {
+        p.fd = m;
+        p.events = POLLIN;
+        p.revents = 0;
+        poll(&p, 1, 100);
+        if (p.revents & POLLHUP)
+            return;
+        if (p.revents & POLLIN && read(m, buf, sizeof buf) <= 0)
+            return;
+        clock_gettime(CLOCK_MONOTONIC, &b);
+        if ((double)(b.tv_sec - a.tv_sec) + (double)(b.tv_nsec - a.tv_nsec) / 1e9 > secs)
+            return;
+    }
+}
+
+static int open_tcp(long port)
+{
+    int s = socket(AF_INET, SOCK_STREAM, 0), c, one = 1;
+    struct sockaddr_in a;
+    socklen_t len = sizeof a;
+    if (s < 0)
+        die(1, "socket: %s", strerror(errno));
+    setsockopt(s, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    memset(&a, 0, sizeof a);
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    a.sin_port = htons((unsigned short)port);
+    if (bind(s, (struct sockaddr *)&a, sizeof a) || listen(s, 1))
+        die(1, "cannot listen on the port: %s", strerror(errno));
+    getsockname(s, (struct sockaddr *)&a, &len);
+    printf("%u\n", (unsigned)ntohs(a.sin_port));
+    fflush(stdout);
+    c = accept(s, 0, 0);
+    if (c < 0)
+        die(1, "accept: %s", strerror(errno));
+    close(s);
+    return c;
+}
+
+static void tcp_linger(int c, double secs)
+{
+    struct pollfd p;
+    char buf[64];
+    int ms = (int)(secs * 1000);
+    shutdown(c, SHUT_WR);
+    p.fd = c;
+    p.events = POLLIN;
+    while (ms > 0 && poll(&p, 1, 100) >= 0) {
+        if (p.revents & (POLLIN | POLLHUP)) {
+            if (read(c, buf, sizeof buf) <= 0)
+                return;
+        }
+        ms -= 100;
+    }
+}
+
+static int fmt_by_name(const char *s)
+{
+    if (!strcmp(s, "page1")) return R8_FMT_PAGE1;
+    if (!strcmp(s, "row1")) return R8_FMT_ROW1;
+    if (!strcmp(s, "idx8")) return R8_FMT_IDX8;
+    return -1;
+}
+
+int main(int argc, char **argv)
+{
+    enum { O_OUT = 256, O_PTY, O_TCP, O_BAUD, O_RAM, O_SCENE, O_METHOD, O_BAND,
+           O_FRAMES, O_FIRST, O_W, O_H, O_FMT, O_CODEC, O_PERIOD, O_NODIRTY,
+           O_DUMP, O_LINGER, O_PRINTRAM };
+    static const struct option opts[] = {
+        { "out", 1, 0, O_OUT }, { "pty", 0, 0, O_PTY }, { "tcp", 1, 0, O_TCP },
+        { "baud", 1, 0, O_BAUD }, { "ram", 1, 0, O_RAM }, { "scene", 1, 0, O_SCENE },
+        { "method", 1, 0, O_METHOD }, { "band", 1, 0, O_BAND },
+        { "frames", 1, 0, O_FRAMES }, { "first", 1, 0, O_FIRST },
+        { "width", 1, 0, O_W }, { "height", 1, 0, O_H }, { "format", 1, 0, O_FMT },
+        { "codec", 1, 0, O_CODEC }, { "full-period", 1, 0, O_PERIOD },
+        { "no-dirty", 0, 0, O_NODIRTY }, { "dump", 1, 0, O_DUMP },
+        { "linger", 1, 0, O_LINGER }, { "print-ram", 0, 0, O_PRINTRAM },
+        { "quiet", 0, 0, 'q' }, { "help", 0, 0, 'h' }, { 0, 0, 0, 0 }
+    };
+    app_cfg cfg;
+    app_layout lay;
+    struct host host;
+    const char *out = "-", *dump = 0;
+    int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc;
+    long tcp = -1, baud = 0, ram = -1;
+    double linger = 30;
+    unsigned char *arena;
+    unsigned need, size, k;
+
+    app_defaults(&cfg);
+    memset(&host, 0, sizeof host);
+    host.rx_fd = -1;
+    while ((c = getopt_long(argc, argv, "qh", opts, 0)) != -1) {
+        switch (c) {
+        case O_OUT: out = optarg; break;
+        case O_PTY: use_pty = 1; break;
+        case O_TCP: tcp = num("--tcp", optarg, 0, 65535); break;
+        case O_BAUD: baud = num("--baud", optarg, 0, 100000000L); break;
+        case O_RAM: ram = num("--ram", optarg, 1, 1L << 30); break;
+        case O_SCENE:
+            if ((v = r8_scene_by_name(optarg)) < 0)
+                die(2, "--scene: unknown scene '%s' (see --help)", optarg);
+            cfg.render.scene = (r8_u8)v;
+            break;
+        case O_METHOD:
+            if ((v = r8_method_by_name(optarg)) < 0)
+                die(2, "--method: unknown method '%s' (see --help)", optarg);
+            cfg.render.method = (r8_u8)v;
+            break;
+        case O_BAND: cfg.render.band = (r8_s16)num("--band", optarg, 1, R8_WIRE_MAX_DIM); break;
+        case O_FRAMES: cfg.frames = (r8_u16)num("--frames", optarg, 0, 65535); break;
+        case O_FIRST: cfg.first_frame = (r8_u16)num("--first", optarg, 0, 65535); break;
+        case O_W: cfg.render.width = (r8_s16)num("--width", optarg, 1, R8_WIRE_MAX_DIM); break;
+        case O_H: cfg.render.height = (r8_s16)num("--height", optarg, 1, R8_WIRE_MAX_DIM); break;
+        case O_FMT:
+            if ((v = fmt_by_name(optarg)) < 0)
+                die(2, "--format: unknown format '%s' (page1, row1, idx8)", optarg);
+            cfg.render.format = (r8_u8)v;
+            break;
+        case O_CODEC:
+            if ((v = r8_codec_by_name(optarg)) < 0)
+                die(2, "--codec: unknown codec '%s' (rle, lz77, raw)", optarg);
+            cfg.codec = (r8_u8)v;
+            break;
+        case O_PERIOD: cfg.full_period = (r8_u16)num("--full-period", optarg, 0, 65535); break;
+        case O_NODIRTY: cfg.dirty = 0; break;
+        case O_DUMP: dump = optarg; break;
+        case O_LINGER: linger = (double)num("--linger", optarg, 0, 86400); break;
+        case O_PRINTRAM: print_ram = 1; break;
+        case 'q': quiet = 1; break;
+        case 'h': usage(stdout); return 0;
+        default:
+            fprintf(stderr, "%s: see --help\n", prog);
+            return 2;
+        }
+    }
+    if (optind < argc)
+        die(2, "unexpected argument '%s' (see --help)", argv[optind]);
+    if ((use_pty != 0) + (tcp >= 0) + (strcmp(out, "-") != 0) > 1)
+        die(2, "%s", "choose one of --out, --pty, --tcp");
+
+    if (app_plan(&cfg, &lay)) {
+        fprintf(stderr, "%s: invalid configuration: %dx%d format %d band %d "
+                "(band must be 1..height, a multiple of 8 for page1, and a "
+                "band at most %u bytes)\n", prog, cfg.render.width,
+                cfg.render.height, cfg.render.format, cfg.render.band,
+                R8_WIRE_MAX_BAND);
+        return 2;
+    }
+    need = lay.total;
+    if (print_ram) {
+        printf("%u bytes: render work %u + band %u + encoder %u\n", need,
+               lay.work_size, lay.band_size, lay.scratch_size);
+        return 0;
+    }
+    if (ram >= 0 && (unsigned long)ram < need) {
+        fprintf(stderr, "%s: RAM budget exceeded: this config needs %u bytes "
+                "(render work %u + band %u + encoder %u) but --ram is %ld\n",
+                prog, need, lay.work_size, lay.band_size, lay.scratch_size, ram);
+        return 3;
+    }
+    size = ram >= 0 ? (unsigned)ram : need;
+    arena = malloc((size_t)size + GUARD_BYTES);
+    if (!arena)
+        die(1, "%s", "out of memory");
+    memset(arena, 0xCD, size);
+    memset(arena + size, GUARD, GUARD_BYTES);
+
+    if (dump) {
+        host.dump = fopen(dump, "wb");
+        if (!host.dump)
+            die(1, "cannot write the dump file: %s", strerror(errno));
+        host.frame_bytes = r8_fb_bytes(cfg.render.format, cfg.render.width, cfg.render.height);
+        host.frame = calloc(1, host.frame_bytes);
+    }
+    host.cfg = &cfg;
+    cfg.on_band = on_band;
+    cfg.on_frame = on_frame;
+    cfg.ctx = &host;
+
+    signal(SIGPIPE, SIG_IGN);
+    if (use_pty) {
+        fd = open_pty();
+        pty_wait_reader(fd);
+        host.rx_fd = fd;
+    } else if (tcp >= 0) {
+        fd = open_tcp(tcp);
+        host.rx_fd = fd;
+    } else if (strcmp(out, "-")) {
+        fd = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (fd < 0)
+            die(1, "cannot write the output file: %s", strerror(errno));
+    }
+
+    plat_init();
+    plat_host_output(fd, baud);
+    rc = app_run(&cfg, arena, size);
+    if (rc == APP_E_RAM)
+        die(3, "%s", "RAM budget too small");
+    if (rc)
+        die(2, "%s", "invalid configuration");
+    for (k = 0; k < GUARD_BYTES; k++)
+        if (arena[size + k] != GUARD) {
+            fprintf(stderr, "%s: RAM overrun: a write past the %u-byte arena\n", prog, size);
+            return 4;
+        }
+    if (use_pty)
+        pty_linger(fd, linger);
+    else if (tcp >= 0)
+        tcp_linger(fd, linger);
+    if (fd != 1)
+        close(fd);
+    if (host.dump)
+        fclose(host.dump);
+    if (plat_host_failed()) {
+        fprintf(stderr, "%s: output failed after %lu bytes (reader went away?)\n",
+                prog, plat_host_bytes());
+        return 5;
+    }
+    if (!quiet) {
+        unsigned long frames = plat_host_marks(PLAT_MARK_FRAME_END);
+        fprintf(stderr, "%s: %lu frames, %lu bytes (%.1f B/frame), %s, RAM %u of %u bytes, %.2f s\n",
+                prog, frames, plat_host_bytes(),
+                frames ? (double)plat_host_bytes() / (double)frames : 0.0,
+                r8_codec_name(cfg.codec), need, size, plat_host_elapsed());
+    }
+    free(arena);
+    free(host.frame);
+    return 0;
+}
