@@ -43,3 +43,9 @@ test-cross:
 	@bash scripts/run-step.sh cross bash scripts/cross-compile.sh
 
 TEST_STEPS += test-lint test-strict test-cross test-unit test-asan
+
+# r8dump: render built-in scenes on the host to raw bytes or PGM.
+R8DUMP := $(BUILD)/r8dump
+ALL_TARGETS += $(R8DUMP)
+$(R8DUMP): tests/tools/r8dump.c $(LIB) $(wildcard include/*.h)
+	$(CC) -std=c99 -O2 -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@

@@ -113,7 +113,7 @@ unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg)
     case R8_VIS_Z16:
         return 2u * w * h;
     case R8_VIS_BLOCK:
-        return blocks;
+        return 2u * blocks;  /* depth + owner id */
     case R8_VIS_BLOCKMASK:
         return ((blocks + 1u) & ~1u) + 2u * blocks;
     default:

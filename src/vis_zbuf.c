@@ -86,10 +86,13 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
 
 /* The 4x4-block z-buffer, two designs (docs/visibility.md):
  *  naive (the seed's): one 8-bit depth per 4x4 block, compared once per
- *    block per span row with the span's depth where it enters the block;
- *    the whole run of the span inside the block is drawn or dropped.  A
- *    polygon that only partly covers a block still claims it, so a
- *    farther polygon loses the rest of the block: holes at edges.
+ *    block and polygon: the first span row of a polygon entering a block
+ *    compares its depth there with the block's; if nearer (or equal) the
+ *    polygon owns the block (its id is kept beside the depth) and all
+ *    its pixels in the block are drawn, else they are dropped until a
+ *    later row passes the test.  A polygon that only partly covers a
+ *    block still claims it, so a farther polygon loses the rest of the
+ *    block: holes at edges and wrong winners at intersections.
  *  mask: the same depth plus a 16-bit coverage mask per block.  Pixels
  *    not yet covered are always drawn (and marked); covered pixels are
  *    drawn only if nearer than the block depth, which keeps the nearest
@@ -103,7 +106,9 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
     r8_u16 brow = (r8_u16)(((sp->y - fb->y0) >> 2) * bw);
     r8_u16 nblocks = (r8_u16)(bw * (r8_u16)(fb->rows >> 2));
     r8_u8 *bz = st->depth;
+    r8_u8 *owner = st->depth + nblocks;   /* naive: polygon id per block */
     r8_u16 *bm = (r8_u16 *)(void *)(st->depth + ((nblocks + 1u) & ~1u));
+    r8_u8 id = (r8_u8)(p - st->poly);
     r8_u16 rowbits = (r8_u16)((sp->y & 3) << 2);
     int gouraud = (st->attrs & R8_ATTR_S) != 0;
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
@@ -116,9 +121,11 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
         if (end > xb)
             end = xb;
         if (!mask) {
-            int draw = d8 >= bz[b];
-            if (draw)
+            int draw = owner[b] == id || d8 >= bz[b];
+            if (draw && owner[b] != id) {
                 bz[b] = d8;
+                owner[b] = id;
+            }
             for (; x < end; x++) {
                 if (draw)
                     r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
