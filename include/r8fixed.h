@@ -66,7 +66,8 @@ void r8_cross3(const r8_vec3 *a, const r8_vec3 *b, r8_vec3l *c);
  * fits |x| < 2^14, then to unit length in Q1.14 (zero stays zero). */
 void r8_normalize(const r8_vec3l *v, r8_vec3 *out);
 
-/* Rotation about X, then Y, then Z (m = Rz * Ry * Rx), Q1.14. */
+/* Rotation about Z, then Y, then X (m = Rx * Ry * Rz), Q1.14: an object
+ * spun about its own Y axis and then tilted by X. */
 void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az);
 /* c = a * b (Q1.14). c may not alias a or b. */
 void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c);

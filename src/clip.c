@@ -82,7 +82,7 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
     }
     if (n < 3)
         return 0;
-    if (st->nsv + n > st->nverts + R8_CLIP_VERTS || st->nidx + n > st->maxidx) {
+    if (st->nsv + n > st->nverts + st->nclip || st->nidx + n > st->maxidx) {
         st->dropped++;
         return 0;
     }

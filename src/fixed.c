@@ -218,8 +218,8 @@ void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az)
     rz.m[0] = c; rz.m[1] = (r8_s16)-s; rz.m[2] = 0;
     rz.m[3] = s; rz.m[4] = c; rz.m[5] = 0;
     rz.m[6] = 0; rz.m[7] = 0; rz.m[8] = R8_ONE14;
-    r8_mat_mul(&ry, &rx, &t);
-    r8_mat_mul(&rz, &t, m);
+    r8_mat_mul(&ry, &rz, &t);
+    r8_mat_mul(&rx, &t, m);
 }
 
 void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c)

@@ -8,8 +8,7 @@
 #include "r8raster.h"
 #include "r8fixed.h"
 
-#define R8_CLIP_VERTS 48    /* extra screen vertices made by clipping per frame */
-#define R8_CLIP_IDX 96      /* extra polygon indices made by clipping per frame */
+#define R8_CLIP_VERTS 48    /* at most this many vertices made by clipping per frame */
 #define R8_MAX_CLIP_POLY (R8_MAX_FACE_VERTS + 5)
 #define R8_SCAN_POOL 24     /* persistent scan states (more: seeked per band) */
 #define R8_JEFF_BUCKETS 64  /* painter's depth buckets */
@@ -54,10 +53,10 @@ typedef struct r8_state {
     const r8_scene *scene;
     r8_camera cam;
     r8_s32 dc1, dc2;    /* depth = dc1 / z - dc2 */
-    r8_u16 nverts, nfaces, maxidx;
+    r8_u16 nverts, nfaces, maxidx, nclip;
     r8_u8 attrs;        /* R8_ATTR_* the method and shading need */
     r8_objx *obj;
-    r8_svert *sv;       /* nverts + R8_CLIP_VERTS */
+    r8_svert *sv;       /* nverts + nclip */
     r8_u8 *out;         /* nverts outcodes */
     r8_vec3 *fnorm;     /* nfaces model-space unit normals */
     r8_vec3 *vnorm;     /* nverts vertex normals (Gouraud only) */

@@ -79,7 +79,7 @@ static unsigned align_up(unsigned n)
 
 typedef struct plan {
     unsigned obj, sv, out, fnorm, vnorm, poly, idx, order, jeff, pool, depth, snode, shead, total;
-    r8_u16 nverts, nfaces, maxidx;
+    r8_u16 nverts, nfaces, maxidx, nclip;
     r8_u8 npool;
 } plan;
 
@@ -145,10 +145,16 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    pl->maxidx = (r8_u16)(ni + R8_CLIP_IDX);
-    pl->npool = (r8_u8)(nf < R8_SCAN_POOL ? nf : R8_SCAN_POOL);
+    /* clipping adds at most 5 vertices per face; the pool is sized for a
+     * few faces at a time, and a face that finds it full is dropped and
+     * counted (st->dropped) */
+    pl->nclip = (r8_u16)(3u * nf + 6u < R8_CLIP_VERTS ? 3u * nf + 6u : R8_CLIP_VERTS);
+    pl->maxidx = (r8_u16)(ni + pl->nclip);
+    /* a closed mesh shows at most about half its faces at once; polygons
+     * beyond the pool are seeked to each band's first row instead */
+    pl->npool = (r8_u8)((nf + 1u) / 2u < R8_SCAN_POOL ? (nf + 1u) / 2u : R8_SCAN_POOL);
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
-    pl->sv = o; o += align_up(sizeof(r8_svert) * (nv + R8_CLIP_VERTS));
+    pl->sv = o; o += align_up(sizeof(r8_svert) * (nv + pl->nclip));
     pl->out = o; o += align_up(nv);
     pl->fnorm = o; o += align_up(sizeof(r8_vec3) * nf);
     pl->vnorm = o;
@@ -207,6 +213,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->nverts = pl.nverts;
     st->nfaces = pl.nfaces;
     st->maxidx = pl.maxidx;
+    st->nclip = pl.nclip;
     st->npool = pl.npool;
     st->obj = (r8_objx *)(void *)(base + pl.obj);
     st->sv = (r8_svert *)(void *)(base + pl.sv);
