@@ -54,10 +54,10 @@ int app_plan(const app_cfg *cfg, app_layout *lay)
     unsigned max = 0u - 1u;
     tx_cfg_from(cfg, &t);
     lay->work = 0;
-    lay->work_size = r8_render_ram(&cfg->render);
+    lay->work_size = r8_render_ram(&cfg->render); /* 0: cfg rejected */
     lay->band_size = r8_tx_band_bytes(&t);
     lay->scratch_size = r8_tx_scratch(&t);
-    if (!lay->band_size || !lay->scratch_size ||
+    if (!lay->work_size || !lay->band_size || !lay->scratch_size ||
         r8_fb_bytes(t.format, t.width, t.band) != lay->band_size)
         return -1;
     /* the sum must fit an unsigned (16 bits on the targets) */

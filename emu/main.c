@@ -39,6 +39,10 @@ static void usage(FILE *f)
 "                    printed on stdout) for one client, e.g. pyserial socket://\n"
 "  --baud N          pace output in real time as 8N1 at N baud (10 bits/byte);\n"
 "                    default: unpaced\n"
+"  --gate MS         pty/tcp: once the reader is there, wait up to MS ms for its\n"
+"                    first byte before streaming (default 2000; rast8 sends a\n"
+"                    REQUEST on open): pyserial discards input that arrives\n"
+"                    before it has finished opening the port\n"
 "  --linger S        pty/tcp: after the last frame wait up to S seconds for the\n"
 "                    reader to close (default 30) so no byte is lost\n"
 "\n"
@@ -218,6 +222,23 @@ static void pty_linger(int m, double secs)
     }
 }
 
+/* Gate: wait up to secs for the reader's first byte (rast8 sends a
+ * REQUEST when it opens the port).  pyserial flushes pending input when
+ * it opens a port or socket, so bytes sent before that would be lost. */
+static void wait_first_byte(int fd, double secs)
+{
+    struct pollfd p;
+    char buf[64];
+    p.fd = fd;
+    p.events = POLLIN;
+    p.revents = 0;
+    if (poll(&p, 1, (int)(secs * 1000)) > 0 && (p.revents & POLLIN)) {
+        usleep(20000); /* let the rest of the hello arrive */
+        if (read(fd, buf, sizeof buf) < 0)
+            return;
+    }
+}
+
 static int open_tcp(long port)
 {
     int s = socket(AF_INET, SOCK_STREAM, 0), c, one = 1;
@@ -271,7 +292,7 @@ int main(int argc, char **argv)
 {
     enum { O_OUT = 256, O_PTY, O_TCP, O_BAUD, O_RAM, O_SCENE, O_METHOD, O_BAND,
            O_FRAMES, O_FIRST, O_W, O_H, O_FMT, O_CODEC, O_PERIOD, O_NODIRTY,
-           O_DUMP, O_LINGER, O_PRINTRAM };
+           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE };
     static const struct option opts[] = {
         { "out", 1, 0, O_OUT }, { "pty", 0, 0, O_PTY }, { "tcp", 1, 0, O_TCP },
         { "baud", 1, 0, O_BAUD }, { "ram", 1, 0, O_RAM }, { "scene", 1, 0, O_SCENE },
@@ -280,7 +301,7 @@ int main(int argc, char **argv)
         { "width", 1, 0, O_W }, { "height", 1, 0, O_H }, { "format", 1, 0, O_FMT },
         { "codec", 1, 0, O_CODEC }, { "full-period", 1, 0, O_PERIOD },
         { "no-dirty", 0, 0, O_NODIRTY }, { "dump", 1, 0, O_DUMP },
-        { "linger", 1, 0, O_LINGER }, { "print-ram", 0, 0, O_PRINTRAM },
+        { "linger", 1, 0, O_LINGER }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
         { "quiet", 0, 0, 'q' }, { "help", 0, 0, 'h' }, { 0, 0, 0, 0 }
     };
     app_cfg cfg;
@@ -289,7 +310,7 @@ int main(int argc, char **argv)
     const char *out = "-", *dump = 0;
     int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc;
     long tcp = -1, baud = 0, ram = -1;
-    double linger = 30;
+    double linger = 30, gate = 2;
     unsigned char *arena;
     unsigned need, size, k;
 
@@ -332,6 +353,7 @@ int main(int argc, char **argv)
         case O_NODIRTY: cfg.dirty = 0; break;
         case O_DUMP: dump = optarg; break;
         case O_LINGER: linger = (double)num("--linger", optarg, 0, 86400); break;
+        case O_GATE: gate = (double)num("--gate", optarg, 0, 86400) / 1000.0; break;
         case O_PRINTRAM: print_ram = 1; break;
         case 'q': quiet = 1; break;
         case 'h': usage(stdout); return 0;
@@ -345,6 +367,13 @@ int main(int argc, char **argv)
     if ((use_pty != 0) + (tcp >= 0) + (strcmp(out, "-") != 0) > 1)
         die(2, "%s", "choose one of --out, --pty, --tcp");
 
+    if (!r8_render_ram(&cfg.render)) {
+        fprintf(stderr, "%s: invalid configuration: the renderer does not accept "
+                "scene %s, method %s, %dx%d, format %d, band %d\n", prog,
+                r8_scene_name(cfg.render.scene), r8_method_name(cfg.render.method),
+                cfg.render.width, cfg.render.height, cfg.render.format, cfg.render.band);
+        return 2;
+    }
     if (app_plan(&cfg, &lay)) {
         fprintf(stderr, "%s: invalid configuration: %dx%d format %d band %d "
                 "(band must be 1..height, a multiple of 8 for page1, and a "
@@ -388,9 +417,11 @@ int main(int argc, char **argv)
     if (use_pty) {
         fd = open_pty();
         pty_wait_reader(fd);
+        wait_first_byte(fd, gate);
         host.rx_fd = fd;
     } else if (tcp >= 0) {
         fd = open_tcp(tcp);
+        wait_first_byte(fd, gate);
         host.rx_fd = fd;
     } else if (strcmp(out, "-")) {
         fd = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -43,3 +43,8 @@ demo: $(SETUP) $(EMU)
 # dirty bands (make stats DEMO_FRAMES=64).
 stats: $(SETUP) $(EMU)
 	@$(PY) -m rast8.demo --emu $(EMU) --frames $(DEMO_FRAMES) --compare
+
+# Library objects also depend on the private headers in src/ (the
+# pattern rule in the Makefile lists include/*.h only); without this a
+# changed src/*.h leaves stale objects and rast8-emu crashes.
+$(LIB_OBJ): $(wildcard src/*.h)

@@ -236,6 +236,8 @@ static int on_packet(r8_dec *d)
         return on_band(d, p, n);
     case R8_PKT_FRAME_END:
         return on_end(d, p, n);
+    case R8_PKT_REQUEST:
+        return R8_DEC_NONE; /* our own request echoed back: ignore */
     default:
         return bad(d);
     }

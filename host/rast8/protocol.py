@@ -196,6 +196,8 @@ class StreamDecoder:
             return self._on_band(p)
         if t == PKT_FRAME_END:
             return self._on_end(p)
+        if t == PKT_REQUEST:
+            return None         # our own request echoed back: ignore
         return self._bad("unknown packet type 0x%02x" % t)
 
     def _on_start(self, p):

@@ -41,10 +41,16 @@ class SerialSource:
     idle=SECONDS, after that long without a byte."""
     kind = "serial"
 
-    def __init__(self, ser, name, idle=None):
+    def __init__(self, ser, name, idle=None, hello=True):
         self.ser = ser
         self.name = name
         self.idle = idle
+        if hello:
+            # A REQUEST right after opening: asks for a full frame, and
+            # tells rast8-emu --pty/--tcp that we are ready (pyserial
+            # flushes input while it opens a port, see docs/protocol.md).
+            from .protocol import request_packet
+            self.write(request_packet())
 
     def read(self, n=4096):
         import serial
@@ -92,7 +98,7 @@ def open_source(spec, baud=DEFAULT_BAUD, idle=None):
     import serial
     if _is_url(spec):
         ser = serial.serial_for_url(spec, baudrate=baud, timeout=0.05)
-        return SerialSource(ser, spec, idle)
+        return SerialSource(ser, spec, idle, hello=not spec.startswith("loop://"))
     try:
         st = os.stat(spec)
     except OSError as e:
