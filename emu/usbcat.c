@@ -519,23 +519,15 @@ int main(int argc, char **argv)
     t0 = last_data = now_s();
     for (;;) {
         int got = 0, want = URB_SIZE;
-        double limit, waited, left;
+        double limit, left;
         unsigned int slice;
         if (stop_requested) break;
         if (o.max_bytes && total >= o.max_bytes) break;
         limit = (total > 0 && o.idle > 0) ? o.idle : o.timeout;
-        waited = now_s() - last_data;
-        left = limit > 0 ? limit - waited : SLICE_MS / 1000.0;
-        if (limit > 0 && left <= 0) {
-            if (total > 0 && o.idle > 0) break;               /* clean end */
-            rc = fail(EX_TIMEOUT, "timeout: no data from %s for %.1f s%s. Check that the "
-                      "firmware is streaming, or wait longer with --timeout SEC "
-                      "(0 = forever)%s", o.spec, limit,
-                      total ? " (after the data so far)" : "",
-                      total ? "; --idle SEC ends a capture cleanly" : "");
-            break;
-        }
-        slice = (unsigned int)(left * 1000.0 + 0.5);
+        left = limit > 0 ? limit - (now_s() - last_data) : SLICE_MS / 1000.0;
+        /* always ask the device once more before giving up, so a slow
+         * host (not a quiet device) never ends the stream early */
+        slice = left > 0 ? (unsigned int)(left * 1000.0 + 0.5) : 1;
         if (slice > SLICE_MS) slice = SLICE_MS;
         if (slice == 0) slice = 1;
         r = libusb_bulk_transfer(h, (unsigned char)o.ep, buf, want, &got, slice);
@@ -549,7 +541,18 @@ int main(int argc, char **argv)
             total += keep;
             last_data = now_s();
         }
-        if (r == 0 || r == LIBUSB_ERROR_TIMEOUT || r == LIBUSB_ERROR_INTERRUPTED) continue;
+        if (r == 0 || r == LIBUSB_ERROR_TIMEOUT || r == LIBUSB_ERROR_INTERRUPTED) {
+            if (got == 0 && limit > 0 && now_s() - last_data >= limit) {
+                if (total > 0 && o.idle > 0) break;           /* clean end */
+                rc = fail(EX_TIMEOUT, "timeout: no data from %s for %.1f s%s. Check that "
+                          "the firmware is streaming, or wait longer with --timeout SEC "
+                          "(0 = forever)%s", o.spec, limit,
+                          total ? " (after the data so far)" : "",
+                          total ? "; --idle SEC ends a capture cleanly" : "");
+                break;
+            }
+            continue;
+        }
         if (r == LIBUSB_ERROR_NO_DEVICE) {
             rc = fail(EX_UNPLUGGED, "device unplugged: %s disappeared mid-stream after %lld "
                       "bytes (all written out). Check the cable and power, re-plug and "

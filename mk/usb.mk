@@ -27,3 +27,5 @@ usbcat: $(USBCAT)
 # Needs the emulator (mk/wire.mk) for a real stream, and the venv.
 test-usb: $(USBCAT) $(USB_SHIM) $(BUILD)/rast8-emu $(SETUP)
 	@bash scripts/run-step.sh usb $(PY) -m pytest -p no:cacheprovider tests/usb
+
+TEST_STEPS += test-usb

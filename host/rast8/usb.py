@@ -231,6 +231,7 @@ def _code(exc):
 
 class UsbSource:
     """File-like reader of one bulk IN endpoint; use open_usb()."""
+    kind = "usb"
 
     def __init__(self, spec, timeout=None, idle=None):
         import usb.core
@@ -377,31 +378,27 @@ class UsbSource:
         while not self._buf and self._error is None and not self._eof:
             idle = self.opts["idle"]
             limit = idle if (idle and self.bytes_read) else self.opts["timeout"]
-            waited = time.monotonic() - self._last_data
-            if limit:
-                left = limit - waited
-                if left <= 0:
-                    if idle and self.bytes_read:
-                        self._eof = True
-                        return
-                    more = (" (after the data so far); idle=SEC ends a capture cleanly"
-                            if self.bytes_read else "")
-                    self._error = UsbTimeout(
-                        f"timeout: no data from {self.name} for {limit:g} s{more}. Check "
-                        "that the firmware is streaming, or wait longer with "
-                        f"{self.name},timeout=SEC (0 = forever)")
-                    return
-            else:
-                left = SLICE
+            left = limit - (time.monotonic() - self._last_data) if limit else SLICE
+            # always ask the device once more before giving up, so a slow
+            # host (not a quiet device) never ends the stream early
             ms = max(1, min(int(left * 1000 + 0.5), int(SLICE * 1000)))
             data, r = self._transfer(ms)
             if data:
                 self._buf += data
                 self.bytes_read += len(data)
                 self._last_data = time.monotonic()
-            if r in (_SUCCESS, _ERR_TIMEOUT, _ERR_INTERRUPTED):
-                continue
-            self._error = self._error_for(r)
+            if r not in (_SUCCESS, _ERR_TIMEOUT, _ERR_INTERRUPTED):
+                self._error = self._error_for(r)
+            elif not data and limit and time.monotonic() - self._last_data >= limit:
+                if idle and self.bytes_read:
+                    self._eof = True
+                else:
+                    more = (" (after the data so far); idle=SEC ends a capture cleanly"
+                            if self.bytes_read else "")
+                    self._error = UsbTimeout(
+                        f"timeout: no data from {self.name} for {limit:g} s{more}. Check "
+                        "that the firmware is streaming, or wait longer with "
+                        f"{self.name},timeout=SEC (0 = forever)")
 
     def read(self, n=-1):
         """Up to n bytes (n < 0: what is buffered); b'' at the end of the stream.
@@ -426,6 +423,12 @@ class UsbSource:
 
     def readable(self):
         return True
+
+    def write(self, data):
+        """The USB source is read-only: nothing is sent to the board, so a
+        request for a full frame is not delivered (returns 0, as for a file);
+        the board's periodic full frames resynchronise the viewer."""
+        return 0
 
     def close(self):
         if self.closed:

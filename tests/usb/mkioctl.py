@@ -36,7 +36,7 @@ ENODEV, EPIPE = 19, 32
 
 # chunk lengths cycle through these: full reads, packet multiples, odd
 # lengths, a single byte and a zero-length packet (which carries nothing)
-CHUNKS = [64, 1, 700, 0, 4096, 3000, 128, 63, 1500, 4096, 2, 1000]
+CHUNKS = [64, 1, 700, 0, 4096, 300, 128, 63, 1500, 2, 1000, 4096, 64, 512]
 
 
 def _desc_hex(parts):

@@ -27,7 +27,7 @@ USBCAT = BUILD / "rast8-usbcat"
 SHIM = BUILD / "usb" / "faultshim.so"
 EMU = BUILD / "rast8-emu"
 RAST8 = Path(sys.executable).parent / "rast8"
-FRAMES = 8
+FRAMES = 16
 SPEC = "usb:feed:beef"
 
 sys.path.insert(0, str(HERE))
@@ -221,7 +221,7 @@ def test_usbcat_copies_the_stream_exactly(bed, stream, clean, work):
     assert delivered == stream.stat().st_size and replies > 5
     out = work / "cat.bin"
     # the device goes silent after its last reply; --idle ends the capture
-    r = mock(bed, ioctl, [USBCAT, "--idle", "0.3", "-o", out, SPEC],
+    r = mock(bed, ioctl, [USBCAT, "--idle", "0.2", "-o", out, SPEC],
              fault=f"silent={replies}")
     assert r.returncode == 0, r.stderr
     assert out.read_bytes() == stream.read_bytes()
@@ -236,7 +236,7 @@ def test_usbcat_bytes_limit(bed, stream, clean):
 
 def test_usbcat_pipe_to_decode_equals_file(bed, stream, clean, reference, work):
     ioctl, replies, _ = clean
-    cat = mock(bed, ioctl, [USBCAT, "-q", "--idle", "0.3", SPEC], fault=f"silent={replies}")
+    cat = mock(bed, ioctl, [USBCAT, "-q", "--idle", "0.2", SPEC], fault=f"silent={replies}")
     assert cat.returncode == 0, cat.stderr
     d = work / "via-usbcat"
     r = decode("-", d, input=cat.stdout)
@@ -247,7 +247,7 @@ def test_usbcat_pipe_to_decode_equals_file(bed, stream, clean, reference, work):
 def test_usb_source_decode_equals_file(bed, clean, reference, work):
     ioctl, replies, _ = clean
     d = work / "via-usb"
-    r = mock(bed, ioctl, [RAST8, "decode", f"{SPEC},idle=0.3", "-o", d],
+    r = mock(bed, ioctl, [RAST8, "decode", f"{SPEC},idle=0.2", "-o", d],
              fault=f"silent={replies}")
     assert r.returncode == 0, r.stderr.decode()
     assert frames_in(d) == reference
@@ -257,7 +257,7 @@ def test_usb_source_decode_equals_file(bed, clean, reference, work):
 def test_python_source_reads_the_stream_exactly(bed, stream, clean, work, backend):
     ioctl, replies, delivered = clean
     out = work / f"py-{backend}.bin"
-    rc, rep = usbread(bed, ioctl, f"{SPEC}:81,idle=0.3", out, fault=f"silent={replies}",
+    rc, rep = usbread(bed, ioctl, f"{SPEC}:81,idle=0.2", out, fault=f"silent={replies}",
                       chunk=333, backend=backend)
     assert rc == 0 and rep["error"] is None, rep
     assert out.read_bytes() == stream.read_bytes()
@@ -345,10 +345,10 @@ def test_fault_mid_stream_keeps_earlier_frames(bed, stream, work, reference, fau
 
 
 def test_timeout_before_any_data(bed, clean):
-    r = mock(bed, clean[0], [USBCAT, "-t", "0.4", SPEC], fault="silent=0")
+    r = mock(bed, clean[0], [USBCAT, "-t", "0.3", SPEC], fault="silent=0")
     assert r.returncode == EX_TIMEOUT and r.stdout == b""
     assert "timeout: no data" in r.stderr.decode()
-    rc, rep = usbread(bed, clean[0], f"{SPEC},timeout=0.4", os.devnull, fault="silent=0")
+    rc, rep = usbread(bed, clean[0], f"{SPEC},timeout=0.3", os.devnull, fault="silent=0")
     assert rc == EX_TIMEOUT and rep["error"]["type"] == "UsbTimeout" and rep["bytes"] == 0
 
 
@@ -362,11 +362,11 @@ def test_timeout_mid_stream_keeps_data(bed, stream, clean, work):
         pos = min(len(data), pos + mkioctl.CHUNKS[i % len(mkioctl.CHUNKS)])
     expect = pos
     assert 0 < expect < len(data)
-    r = mock(bed, ioctl, [USBCAT, "-t", "0.4", SPEC], fault=f"silent={k}")
+    r = mock(bed, ioctl, [USBCAT, "-t", "0.3", SPEC], fault=f"silent={k}")
     assert r.returncode == EX_TIMEOUT and r.stdout == data[:expect]
     assert "timeout" in r.stderr.decode()
     out = work / "timeout.py.bin"
-    rc, rep = usbread(bed, ioctl, f"{SPEC},timeout=0.4", out, fault=f"silent={k}")
+    rc, rep = usbread(bed, ioctl, f"{SPEC},timeout=0.3", out, fault=f"silent={k}")
     assert rc == EX_TIMEOUT and rep["error"]["type"] == "UsbTimeout", rep
     assert out.read_bytes() == data[:expect]
 
@@ -410,7 +410,7 @@ def test_device_selection_between_identical_boards(bed2, stream, clean, work):
 
     rc, rep = usbread(bed2, scripts, f"{SPEC},addr=4", work / "sel4.bin")
     assert rc == EX_STALL and (work / "sel4.bin").read_bytes() == data[:at]
-    rc, rep = usbread(bed2, scripts, f"{SPEC},bus=1,addr=2,idle=0.3", work / "sel2.bin",
+    rc, rep = usbread(bed2, scripts, f"{SPEC},bus=1,addr=2,idle=0.2", work / "sel2.bin",
                       fault=f"silent={clean[1]}")
     assert rc == 0 and (work / "sel2.bin").read_bytes() == data
 
