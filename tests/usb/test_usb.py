@@ -253,6 +253,24 @@ def test_usb_source_decode_equals_file(bed, clean, reference, work):
     assert frames_in(d) == reference
 
 
+def test_usb_source_stats(bed, clean):
+    ioctl, replies, delivered = clean
+    r = mock(bed, ioctl, [RAST8, "stats", f"{SPEC},idle=0.2", "--json"],
+             fault=f"silent={replies}")
+    assert r.returncode == 0, r.stderr.decode()
+    st = json.loads(r.stdout.decode().strip().splitlines()[-1])
+    assert (st["frames"], st["bytes"], st["errors"]) == (FRAMES, delivered, 0)
+
+
+def test_usb_source_frames_limit(bed, clean, reference, work):
+    """--frames N stops a capture from a board that never goes quiet."""
+    d = work / "via-usb-frames"
+    r = mock(bed, clean[0], [RAST8, "decode", SPEC, "--frames", "5", "-o", d])
+    assert r.returncode == 0, r.stderr.decode()
+    got = frames_in(d)
+    assert len(got) == 5 and all(reference[k] == v for k, v in got.items())
+
+
 @pytest.mark.parametrize("backend", ["system", "package"])
 def test_python_source_reads_the_stream_exactly(bed, stream, clean, work, backend):
     ioctl, replies, delivered = clean
@@ -335,6 +353,12 @@ def test_fault_mid_stream_keeps_earlier_frames(bed, stream, work, reference, fau
     assert out.read_bytes() == data[:at]
     d = work / f"{fault}.cat"
     decode(out, d)
+    assert frames_in(d) == kept
+
+    # rast8 decode usb:...: the frames before the fault are written, and it fails
+    d = work / f"{fault}.cli"
+    r = mock(bed, ioctl, [RAST8, "decode", SPEC, "-o", d])
+    assert r.returncode != 0 and words in r.stderr.decode()
     assert frames_in(d) == kept
 
     # rast8.usb: data first, then the error on the next read (and again after)
