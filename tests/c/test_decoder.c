@@ -311,6 +311,23 @@ static void test_frame_too_big_for_display(void)
     TEST_ASSERT_EQUAL_UINT(NFRAMES, dec.incomplete);
 }
 
+/* A REQUEST echoed back into the display's input is ignored. */
+static void test_echoed_request_is_ignored(void)
+{
+    r8_u8 req[R8_DEC_REQUEST_BYTES];
+    unsigned k, n = r8_dec_request(req);
+    encode(R8_CODEC_RLE, 0, 1);
+    dec_reset();
+    for (k = 0; k < n; k++)
+        feed(req[k]);
+    feed_all(0);
+    for (k = 0; k < n; k++)
+        feed(req[k]);
+    TEST_ASSERT_EQUAL_UINT(NFRAMES, good);
+    TEST_ASSERT_EQUAL_UINT(0, dec.bad_packets);
+    TEST_ASSERT_EQUAL_UINT(0, wrong);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -326,5 +343,6 @@ int main(void)
     RUN_TEST(test_garbage_then_stream);
     RUN_TEST(test_oversized_packet_is_dropped);
     RUN_TEST(test_frame_too_big_for_display);
+    RUN_TEST(test_echoed_request_is_ignored);
     return UNITY_END();
 }

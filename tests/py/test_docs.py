@@ -1,0 +1,34 @@
+"""docs/protocol.md's worked byte examples are what the code produces."""
+import os
+import re
+
+from rast8.protocol import Encoder, request_packet
+from rast8 import codec as C
+from conftest import ROOT
+
+DOC = open(os.path.join(ROOT, "docs", "protocol.md")).read()
+
+
+def block(tag):
+    m = re.search(r"<!-- %s -->\n```\n(.*?)```" % tag, DOC, re.S)
+    assert m, tag
+    return bytes.fromhex(m.group(1).replace("\n", " "))
+
+
+def test_example_stream():
+    px = bytes([0] * 6 + [0xFF] * 4 + [0] * 6)
+    enc = Encoder(0, 16, 8, 8, C.RLE, full_period=32, dirty=True)
+    assert block("example-stream-0") == enc.sync() + enc.frame(0, px)
+    assert block("example-stream-1") == enc.frame(1, px)
+
+
+def test_request_bytes_and_version():
+    assert "`00 04 10 F3 C1 00`" in DOC
+    assert request_packet() == bytes.fromhex("000410F3C100")
+    assert DOC.startswith("# rast8 serial display protocol — version 1")
+
+
+def test_seed_examples_in_doc():
+    assert C.rle_encode(bytes([1] + [3] * 9 + [8, 7, 6, 5])).hex(" ").upper() in DOC
+    seed = bytes.fromhex("0005 0102030405 FFFC 0003 0002 0302 FFF6 0002 FFFB 0005".replace(" ", ""))
+    assert C.lz77_decode(seed) == bytes([1, 2, 3, 4, 5, 2, 3, 4, 3, 2, 1, 2, 4, 3, 2, 1, 2])
