@@ -17,12 +17,20 @@ $(EMU): $(EMU_SRC) $(EMU_HDR) $(LIB)
 $(CODEC_TOOL): emu/codec_host.c $(wildcard include/*.h) $(LIB)
 	$(CC) $(EMU_CFLAGS) $(INC) emu/codec_host.c $(LIB) -o $@
 
-# app.c runs on every target: hold it to the library's C89 gate too.
+# app.c runs on every target: hold it to the library's C89 gate and
+# the three cross compilers too.
 .PHONY: test-app-c89 test-py test-vectors demo stats
 test-app-c89:
-	@bash scripts/run-step.sh app-c89 bash -c 'p=0; f=0; \
+	@bash scripts/run-step.sh app-c89 bash -c 'p=0; f=0; t=$$(mktemp -d); \
 	  for cc in gcc clang; do if $$cc $(STRICT) $(INC) -Iemu -c emu/app.c -o /dev/null; \
-	  then p=$$((p+1)); else f=$$((f+1)); fi; done; echo "$$p passed, $$f failed"; [ $$f = 0 ]'
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: $$cc emu/app.c"; fi; done; \
+	  if avr-gcc $(STRICT) -mmcu=atmega328p -Os $(INC) -Iemu -c emu/app.c -o $$t/a.o; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: avr-gcc emu/app.c"; fi; \
+	  if cc65 -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) -Iemu emu/app.c -o $$t/a.s >/dev/null; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: cc65 emu/app.c"; fi; \
+	  if sdcc -mz80 --std-c89 --Werror $(INC) -Iemu -c emu/app.c -o $$t/a.rel >/dev/null; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: sdcc emu/app.c"; fi; \
+	  rm -rf $$t; echo "$$p passed, $$f failed"; [ $$f = 0 ]'
 
 # Python: codec/vector agreement with C, protocol, fault injection,
 # emulator end to end over a pty, loop://, pacing, headless viewer.
