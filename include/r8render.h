@@ -86,4 +86,29 @@ void r8_render_frame(r8_render *r, r8_u16 frame);
 /* Clear the band and draw every face's rows inside it. */
 void r8_render_band(r8_render *r, r8_fb *band);
 
+/* ---- the analyser: no more than a scene needs ---- */
+
+#define R8_WHY_CONVEX 1      /* one convex mesh: backface cull is exact */
+#define R8_WHY_SORTABLE 2    /* convex objects apart in depth: painter's is exact */
+#define R8_WHY_OVERLAP 3     /* non-convex or interpenetrating: z-buffer */
+#define R8_WHY_USER 4        /* method given by the user */
+#define R8_WHY_RAM 5         /* exact method does not fit; best that fits */
+
+typedef struct r8_analysis {
+    r8_u8 method;       /* chosen visibility method */
+    r8_u8 why;          /* R8_WHY_* */
+    r8_s16 band;        /* chosen band height (rows) */
+    unsigned ram;       /* r8_render_ram + band buffer at that choice */
+    r8_s32 znear, zfar; /* camera-space depth range from the scene's extents */
+    r8_u8 coord_bits;   /* bits a camera-space coordinate needs (with sign) */
+    r8_u8 exact;        /* 1 if the method is exact for this scene */
+} r8_analysis;
+
+/* Choose for cfg's scene: the cheapest exact visibility method (unless
+ * cfg->method is a real method: then it is kept), and the largest band
+ * height whose renderer work memory plus band buffer fits `budget`
+ * bytes (unless cfg->band > 0 is given and fits).  Writes the choice
+ * into cfg and a report into a.  Returns 0, or -1 if nothing fits. */
+int r8_analyse(r8_render_cfg *cfg, unsigned budget, r8_analysis *a);
+
 #endif

@@ -54,10 +54,15 @@ static r8_u8 clip_pass(const r8_camera *cam, r8_u8 plane, const clipv *in,
     return m;
 }
 
+unsigned r8_clip_bytes(void)
+{
+    return 2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(clipv);
+}
+
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
                  const r8_face *fc, r8_poly *p)
 {
-    clipv a[R8_MAX_CLIP_POLY], b[R8_MAX_CLIP_POLY];
+    clipv *a = (clipv *)st->clipbuf, *b = a + R8_MAX_CLIP_POLY;  /* work memory, not stack */
     clipv *in = a, *out = b, *t;
     r8_u8 n = fc->n, i, plane;
     const r8_mesh *me = ob->mesh;

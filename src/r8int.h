@@ -46,7 +46,7 @@ typedef struct r8_snode {
     r8_s32 dd;          /* depth step per pixel, 16.16 */
     r8_s16 s, ds;       /* Gouraud shade at x0 (8.8) and step (8.8 per px, rounded) */
     r8_u8 shade;        /* flat level */
-    r8_u8 next;         /* next node in the row, 0xFF = end */
+    r8_u16 next;        /* next node in the row, 0xFFFF = end */
 } r8_snode;
 
 typedef struct r8_state {
@@ -55,6 +55,7 @@ typedef struct r8_state {
     r8_s32 dc1, dc2;    /* depth = dc1 / z - dc2 */
     r8_u16 nverts, nfaces, maxidx, nclip;
     r8_u8 attrs;        /* R8_ATTR_* the method and shading need */
+    void *clipbuf;      /* r8_clip_bytes(): the clipper's two polygons */
     r8_objx *obj;
     r8_svert *sv;       /* nverts + nclip */
     r8_u8 *out;         /* nverts outcodes */
@@ -69,7 +70,7 @@ typedef struct r8_state {
     r8_u8 *depth;       /* the method's depth memory for one band */
     unsigned depth_bytes;
     r8_snode *snode;    /* S-buffer nodes */
-    r8_u8 *shead;       /* S-buffer row heads, band rows */
+    r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
     r8_u16 npoly, nsv, nidx;
     /* counters for the last frame (stability reports) */
@@ -85,6 +86,7 @@ r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light, r
 void r8_cull_normals(r8_state *st);
 int r8_cull_front(const r8_state *st, const r8_objx *o, const r8_mesh *me, r8_u16 f);
 /* clip.c */
+unsigned r8_clip_bytes(void);
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
                  const r8_face *fc, r8_poly *p);
 /* vis_painter.c */

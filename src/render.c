@@ -6,6 +6,7 @@
  * so edges are never walked again from the top; a polygon without a
  * pooled state is seeked straight to the band's first row, which gives
  * the same spans.  All memory is the caller's `work`. */
+#include <stddef.h>
 #include "r8int.h"
 
 void r8_render_defaults(r8_render_cfg *cfg)
@@ -78,7 +79,7 @@ static unsigned align_up(unsigned n)
 }
 
 typedef struct plan {
-    unsigned obj, sv, out, fnorm, vnorm, poly, idx, order, jeff, pool, depth, snode, shead, total;
+    unsigned clipbuf, obj, sv, out, fnorm, vnorm, poly, idx, order, jeff, pool, depth, snode, shead, total;
     r8_u16 nverts, nfaces, maxidx, nclip;
     r8_u8 npool;
 } plan;
@@ -123,11 +124,19 @@ unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg)
 
 r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
 {
-    unsigned n;
-    if (cfg->method != R8_VIS_SBUF)
+    /* per row: one span per face that can cross it plus a split, at most
+     * 32; indices are 16-bit */
+    const r8_scene *sc = r8_scene_get(cfg->scene);
+    unsigned per = 2, n;
+    r8_u8 i;
+    if (cfg->method != R8_VIS_SBUF || !sc)
         return 0;
-    n = (unsigned)cfg->band * 12u;
-    return (r8_u16)(n > 254u ? 254u : n);
+    for (i = 0; i < sc->nobjects && per < 32u; i++)
+        per += sc->objects[i].mesh->nfaces;
+    if (per > 32u)
+        per = 32u;
+    n = (unsigned)cfg->band * per;
+    return (r8_u16)(n > 0xFFF0u ? 0xFFF0u : n);
 }
 
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
@@ -153,6 +162,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     /* a closed mesh shows at most about half its faces at once; polygons
      * beyond the pool are seeked to each band's first row instead */
     pl->npool = (r8_u8)((nf + 1u) / 2u < R8_SCAN_POOL ? (nf + 1u) / 2u : R8_SCAN_POOL);
+    pl->clipbuf = o; o += align_up(r8_clip_bytes());
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(sizeof(r8_svert) * (nv + pl->nclip));
     pl->out = o; o += align_up(nv);
@@ -171,7 +181,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->snode = o; o += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
     pl->shead = o;
     if (cfg->method == R8_VIS_SBUF)
-        o += align_up((unsigned)cfg->band);
+        o += align_up(2u * (unsigned)cfg->band);
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
 
@@ -193,14 +203,14 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     const r8_scene *sc;
     r8_s32 zn, zf;
     r8_u8 i;
-    r8_u16 vb = 0, fb = 0;
+    r8_u16 vb = 0, fb = 0, k;
     if (!cfg_valid(cfg))
         return -1;
     make_plan(cfg, &pl);
     if (work_size < pl.total)
         return -2;
     /* state first, aligned; the rest follows */
-    base = work + ((ALIGN_TO - ((unsigned)((unsigned long)(void *)work & (ALIGN_TO - 1)))) & (ALIGN_TO - 1));
+    base = work + ((ALIGN_TO - ((unsigned)((size_t)(void *)work & (ALIGN_TO - 1)))) & (ALIGN_TO - 1));
     st = (r8_state *)(void *)base;
     base += align_up(sizeof(r8_state));
     r->cfg = *cfg;
@@ -215,6 +225,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->maxidx = pl.maxidx;
     st->nclip = pl.nclip;
     st->npool = pl.npool;
+    st->clipbuf = base + pl.clipbuf;
     st->obj = (r8_objx *)(void *)(base + pl.obj);
     st->sv = (r8_svert *)(void *)(base + pl.sv);
     st->out = base + pl.out;
@@ -229,10 +240,10 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->depth_bytes = r8_vis_depth_bytes(cfg);
     st->snode = (r8_snode *)(void *)(base + pl.snode);
     st->nsnode = r8_vis_sbuf_nodes(cfg);
-    st->shead = base + pl.shead;
+    st->shead = (r8_u16 *)(void *)(base + pl.shead);
     st->sused = 0;
-    for (i = 0; i < cfg->band && cfg->method == R8_VIS_SBUF; i++)
-        st->shead[i] = 0xFF;
+    for (k = 0; k < (r8_u16)cfg->band && cfg->method == R8_VIS_SBUF; k++)
+        st->shead[k] = 0xFFFF;
     st->attrs = 0;
     if (cfg->method >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;

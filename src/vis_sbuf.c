@@ -12,7 +12,7 @@
  * in st->dropped (a visible error, never a write outside the pool). */
 #include "r8int.h"
 
-#define SB_END 0xFF
+#define SB_END 0xFFFFu
 
 static r8_s32 depth_at(const r8_snode *n, r8_s16 x)
 {
@@ -27,19 +27,19 @@ static void cut_left(r8_snode *n, r8_s16 x)
     n->x0 = x;
 }
 
-static r8_u8 new_node(r8_state *st)
+static r8_u16 new_node(r8_state *st)
 {
     if (st->sused >= st->nsnode)
         return SB_END;
-    return (r8_u8)st->sused++;
+    return st->sused++;
 }
 
 /* Put a copy of span t, restricted to [u, v), after node `prev` (or at
  * the row head).  Returns the new node or SB_END. */
-static r8_u8 put_piece(r8_state *st, r8_u8 *head, r8_u8 prev, const r8_snode *t,
+static r8_u16 put_piece(r8_state *st, r8_u16 *head, r8_u16 prev, const r8_snode *t,
                        r8_s16 u, r8_s16 v)
 {
-    r8_u8 k = new_node(st);
+    r8_u16 k = new_node(st);
     r8_snode *n;
     if (k == SB_END) {
         st->dropped++;
@@ -62,8 +62,8 @@ static r8_u8 put_piece(r8_state *st, r8_u8 *head, r8_u8 prev, const r8_snode *t,
 void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
 {
     r8_snode t;
-    r8_u8 *head = &st->shead[sp->y - fb->y0];
-    r8_u8 prev = SB_END, cur = *head;
+    r8_u16 *head = &st->shead[sp->y - fb->y0];
+    r8_u16 prev = SB_END, cur = *head;
     r8_s16 n = (r8_s16)(sp->x1 - sp->x0);
     r8_s16 c, b;
     /* the new span as a node (not yet in the list) */
@@ -92,7 +92,7 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
             continue;
         }
         if (e->x0 > c) {                  /* free gap before e */
-            r8_u8 k = put_piece(st, head, prev, &t, c, e->x0);
+            r8_u16 k = put_piece(st, head, prev, &t, c, e->x0);
             if (k == SB_END)
                 return;
             prev = k;
@@ -128,7 +128,7 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
         }
         /* t takes [lo, xc) from e */
         if (lo == e->x0 && xc == e->x1) {           /* replace e entirely */
-            r8_u8 nx = e->next;
+            r8_u16 nx = e->next;
             *e = t;
             cut_left(e, lo);
             e->x1 = xc;
@@ -136,14 +136,14 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
             prev = cur;
             cur = nx;
         } else if (lo == e->x0) {                   /* t before the rest of e */
-            r8_u8 k = put_piece(st, head, prev, &t, lo, xc);
+            r8_u16 k = put_piece(st, head, prev, &t, lo, xc);
             if (k == SB_END)
                 return;
             cut_left(&st->snode[cur], xc);
             prev = k;
         } else {                                    /* e keeps [e.x0, lo) */
             r8_s16 eend = e->x1;
-            r8_u8 k, r;
+            r8_u16 k, r;
             e->x1 = lo;
             k = put_piece(st, head, cur, &t, lo, xc);
             if (k == SB_END) {
@@ -151,7 +151,8 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
                 return;
             }
             if (xc < eend) {                        /* and the right part of e */
-                r8_snode right = st->snode[cur];
+                r8_snode right;
+                right = st->snode[cur];   /* assignment: cc65/sdcc reject struct initialisers */
                 right.x1 = eend;
                 r = put_piece(st, head, k, &right, xc, eend);
                 if (r == SB_END) {
@@ -179,7 +180,7 @@ void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb)
 {
     r8_s16 r;
     for (r = 0; r < fb->rows; r++) {
-        r8_u8 k = st->shead[r];
+        r8_u16 k = st->shead[r];
         r8_s16 y = (r8_s16)(fb->y0 + r);
         while (k != SB_END) {
             const r8_snode *n = &st->snode[k];
