@@ -374,6 +374,9 @@ int main(int argc, char **argv)
                 cfg.render.width, cfg.render.height, cfg.render.format, cfg.render.band);
         return 2;
     }
+    if (!use_pty && tcp < 0 && !strcmp(out, "-") && !print_ram && isatty(1))
+        die(2, "%s", "refusing to write a binary stream to a terminal: use --out FILE, "
+            "--pty, --tcp PORT, or a pipe (see --help)");
     if (app_plan(&cfg, &lay)) {
         fprintf(stderr, "%s: invalid configuration: %dx%d format %d band %d "
                 "(band must be 1..height, a multiple of 8 for page1, and a "

@@ -140,7 +140,8 @@ def cmd_decode(args):
 
 def cmd_stats(args):
     src = _open(args)
-    cap = Capture(src, args.frames, progress=args.progress, request=not args.no_request)
+    cap = Capture(src, args.frames, progress=args.progress or (sys.stderr.isatty() and not args.json),
+                  request=not args.no_request)
     try:
         cap.run(lambda fr: None)
     except KeyboardInterrupt:
@@ -205,7 +206,8 @@ def build_parser():
     s = sub.add_parser("stats", help="frames, frames/s, bytes/frame, compression, errors")
     common(s)
     s.add_argument("--json", action="store_true")
-    s.add_argument("--progress", action="store_true", help="show progress on stderr")
+    s.add_argument("--progress", action="store_true",
+                   help="show progress on stderr (default when stderr is a terminal)")
     s.set_defaults(func=cmd_stats)
 
     v = sub.add_parser("view", help="live window with fps, bytes/s and error counts")
