@@ -70,6 +70,7 @@ typedef struct r8_scan {
     r8_u8 n;
     r8_u8 attrs;        /* R8_ATTR_* to interpolate */
     r8_u8 backface;     /* set when Judd's test found left right of right */
+    r8_u8 front;        /* set when Judd's test found a front face */
     r8_s16 y;           /* next row */
     r8_s16 ybot;        /* first row below the polygon */
     r8_edge l, r;

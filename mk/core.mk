@@ -2,22 +2,32 @@
 # C unit tests: every tests/c/test_*.c is one binary, linked with the
 # library and tests/unity; add a file and it is built and run.
 
+# tests/host/test_*.c: host-only C tests (whole scenes, too big to run
+# inside the simulators); built and run the same way.
 TEST_C    := $(sort $(wildcard tests/c/test_*.c))
-TEST_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/tests/%)
-ASAN_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/asan/%)
+TEST_HC   := $(sort $(wildcard tests/host/test_*.c))
+TEST_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/tests/%) $(TEST_HC:tests/host/%.c=$(BUILD)/tests/%)
+ASAN_BIN  := $(TEST_C:tests/c/%.c=$(BUILD)/asan/%) $(TEST_HC:tests/host/%.c=$(BUILD)/asan/%)
 SANFLAGS  := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 TEST_INC  := $(INC) -Itests/unity -Itests/c
 TEST_DEPS := tests/unity/unity.c tests/unity/unity.h $(wildcard tests/c/*.h)
 
 ALL_TARGETS += $(TEST_BIN)
 
-$(BUILD)/tests/%: tests/c/%.c $(LIB) $(TEST_DEPS) | $(BUILD)/tests
+$(BUILD)/tests/%: tests/c/%.c $(LIB) $(TEST_DEPS) $(wildcard src/*.h) | $(BUILD)/tests
 	$(CC) $(STRICT) $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB) -o $@
 
+$(BUILD)/tests/%: tests/host/%.c $(LIB) $(TEST_DEPS) | $(BUILD)/tests
+	$(CC) -std=c99 -pedantic -Wall -Wextra -Werror $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB) -o $@
+
 # Sanitizer build: library sources compiled in, not the release archive.
-$(BUILD)/asan/%: tests/c/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h)
+$(BUILD)/asan/%: tests/c/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h src/*.h)
 	@mkdir -p $(dir $@)
 	clang $(STRICT) -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) -o $@
+
+$(BUILD)/asan/%: tests/host/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h src/*.h)
+	@mkdir -p $(dir $@)
+	clang -std=c99 -pedantic -Wall -Wextra -Werror -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) -o $@
 
 .PHONY: test-unit test-asan lint test-lint test-strict test-cross
 test-unit: $(TEST_BIN)

@@ -399,6 +399,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     r8_fb_clear(fb, 0);
     for (i = 0; i < st->depth_bytes; i++)
         st->depth[i] = 0;
+    if (r->cfg.method == R8_VIS_BLOCK)   /* owner ids: none */
+        for (i = st->depth_bytes / 2u; i < st->depth_bytes; i++)
+            st->depth[i] = 0xFF;
     for (k = 0; k < st->npoly; k++) {
         r8_poly *p = &st->poly[st->order[k]];
         r8_scan tmp, *sc;

@@ -6,8 +6,9 @@
  * at pixel centres with the top-left rule (r8raster.h).
  *
  * Judd's backface test: on a clockwise (front) polygon the left chain is
- * never right of the right chain; on a back face it is on every row that
- * has width, so the first such row ends the polygon before any pixel. */
+ * never right of the right chain; on a back face it is on every row where
+ * they differ, so the first row where the two edges' subpixel positions
+ * differ decides, before any pixel is drawn. */
 #include "r8raster.h"
 #include "r8fixed.h"
 
@@ -82,6 +83,7 @@ r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
     s->n = n;
     s->attrs = attrs;
     s->backface = 0;
+    s->front = 0;
     s->y = s->ybot = 0;
     if (n < 3)
         return 0;
@@ -124,6 +126,16 @@ int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
             edge_start(s, &s->l, s->l.vi, -1, y);
         if (y >= s->r.yend)
             edge_start(s, &s->r, s->r.vi, 1, y);
+        /* Judd: decided on the first row where the edges differ by a
+         * subpixel, before any pixel of the polygon is drawn */
+        if (judd && !s->front && s->l.x.val != s->r.x.val) {
+            if (s->l.x.val > s->r.x.val) {
+                s->backface = 1;
+                s->y = s->ybot;
+                return 0;
+            }
+            s->front = 1;
+        }
         xl = col_of(&s->l.x);
         xr = col_of(&s->r.x);
         if (xl < xr) {
@@ -140,11 +152,6 @@ int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
         s->y++;
         if (xl < xr)
             return 1;
-        if (xl > xr && judd) {
-            s->backface = 1;
-            s->y = s->ybot;
-            return 0;
-        }
     }
     return 0;
 }

@@ -69,8 +69,8 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
     /* the new span as a node (not yet in the list) */
     t.x0 = sp->x0;
     t.x1 = sp->x1;
-    t.d = (r8_s32)sp->dl << 8;
-    t.dd = r8_floordiv(((r8_s32)sp->dr - sp->dl) << 8, n);
+    t.d = (r8_s32)sp->dl * 256;
+    t.dd = r8_floordiv(((r8_s32)sp->dr - sp->dl) * 256, n);
     t.s = sp->sl;
     t.ds = (r8_s16)r8_divround((r8_s32)sp->sr - sp->sl, n);
     t.shade = p->shade;

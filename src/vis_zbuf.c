@@ -108,7 +108,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
     r8_u8 *bz = st->depth;
     r8_u8 *owner = st->depth + nblocks;   /* naive: polygon id per block */
     r8_u16 *bm = (r8_u16 *)(void *)(st->depth + ((nblocks + 1u) & ~1u));
-    r8_u8 id = (r8_u8)(p - st->poly);
+    r8_u8 id = (r8_u8)((r8_u16)(p - st->poly) % 255u);   /* 0xFF: no owner */
     r8_u16 rowbits = (r8_u16)((sp->y & 3) << 2);
     int gouraud = (st->attrs & R8_ATTR_S) != 0;
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
