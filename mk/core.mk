@@ -59,3 +59,13 @@ R8DUMP := $(BUILD)/r8dump
 ALL_TARGETS += $(R8DUMP)
 $(R8DUMP): tests/tools/r8dump.c $(LIB) $(wildcard include/*.h)
 	$(CC) -std=c99 -O2 -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+
+# Golden frames: compared byte for byte; only `make golden` rewrites them.
+.PHONY: test-golden
+golden: $(R8DUMP)
+	bash scripts/golden.sh update
+
+test-golden: $(R8DUMP)
+	@bash scripts/run-step.sh golden bash scripts/golden.sh check
+
+TEST_STEPS += test-golden
