@@ -69,3 +69,8 @@ test-golden: $(R8DUMP)
 	@bash scripts/run-step.sh golden bash scripts/golden.sh check
 
 TEST_STEPS += test-golden
+
+# Regenerate src/scene_data.c from host/rast8/scene.py and its .r8s files.
+.PHONY: scenes
+scenes: $(SETUP)
+	$(PY) -m rast8.scene c src/scene_data.c
