@@ -85,6 +85,8 @@ int main(int argc, char **argv)
             r8_s16 yy, x;
             r8_fb_set_band(&band, y);
             r8_render_band(&r, &band);
+            if (!raw && !pgm)
+                continue;   /* benchmarking: render only */
             for (yy = y; yy < y + cfg.band && yy < cfg.height; yy++)
                 for (x = 0; x < cfg.width; x++)
                     r8_fb_pixel(&full, x, yy, r8_fb_get(&band, x, yy));
