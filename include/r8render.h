@@ -16,6 +16,8 @@
 #include "r8types.h"
 #include "r8fb.h"
 
+struct r8_scene;
+
 /* Visibility methods (see docs/visibility.md). */
 #define R8_VIS_CULL 0      /* backface cull only: exact for one convex mesh */
 #define R8_VIS_PAINTER 1   /* painter's, faces jeffsorted by depth */
@@ -44,6 +46,8 @@ typedef struct r8_render_cfg {
     r8_u8 format;      /* R8_FMT_* */
     r8_s16 width, height;
     r8_s16 band;       /* band height in rows (multiple of 8 for PAGE1) */
+    const struct r8_scene *custom; /* 0: built-in `scene`; else render this
+                                      caller-owned scene (tools, tests) */
 } r8_render_cfg;
 
 /* Built-in scenes. */
@@ -56,8 +60,12 @@ typedef struct r8_render_cfg {
 #define R8_SCENE_SEPARATE 6    /* several separate objects */
 #define R8_SCENE_COUNT 7
 
-/* Defaults: cube, cull only, Lambert, normal cull, PAGE1 128x64, band 8. */
+/* Defaults: cube, cull only, Lambert, normal cull, PAGE1 128x64, band 8,
+ * no custom scene. */
 void r8_render_defaults(r8_render_cfg *cfg);
+
+/* The scene cfg renders: cfg->custom if set, else built-in cfg->scene. */
+const struct r8_scene *r8_render_scene(const r8_render_cfg *cfg);
 
 /* Scene and method names ("cube", "zbuf16", ...); 0 when out of range.
  * r8_*_by_name return -1 for an unknown name. */

@@ -94,7 +94,7 @@ int r8_analyse(r8_render_cfg *cfg, unsigned budget, r8_analysis *a)
     static const r8_u8 fallback[] = {
         R8_VIS_Z16, R8_VIS_SBUF, R8_VIS_Z8, R8_VIS_BLOCKMASK, R8_VIS_BLOCK
     };
-    const r8_scene *sc = r8_scene_get(cfg->scene);
+    const r8_scene *sc = r8_render_scene(cfg);
     r8_s32 zn, zf, c1, c2, m = 0;
     r8_s16 given = cfg->band;
     r8_u8 i, exact_method;

@@ -19,6 +19,12 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->width = 128;
     cfg->height = 64;
     cfg->band = 8;
+    cfg->custom = 0;
+}
+
+const r8_scene *r8_render_scene(const r8_render_cfg *cfg)
+{
+    return cfg->custom ? cfg->custom : r8_scene_get(cfg->scene);
 }
 
 static const char *const scene_names[R8_SCENE_COUNT] = {
@@ -86,7 +92,8 @@ typedef struct plan {
 
 static int cfg_valid(const r8_render_cfg *cfg)
 {
-    if (cfg->scene >= R8_SCENE_COUNT || cfg->method >= R8_VIS_COUNT ||
+    const r8_scene *sc = r8_render_scene(cfg);
+    if (!sc || sc->nobjects == 0 || cfg->method >= R8_VIS_COUNT ||
         cfg->shading > R8_SHADE_GOURAUD || cfg->cull > R8_CULL_JUDD ||
         cfg->format > R8_FMT_IDX8)
         return 0;
@@ -126,7 +133,7 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
 {
     /* per row: one span per face that can cross it plus a split, at most
      * 32; indices are 16-bit */
-    const r8_scene *sc = r8_scene_get(cfg->scene);
+    const r8_scene *sc = r8_render_scene(cfg);
     unsigned per = 2, n;
     r8_u8 i;
     if (cfg->method != R8_VIS_SBUF || !sc)
@@ -141,7 +148,7 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
 
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
 {
-    const r8_scene *sc = r8_scene_get(cfg->scene);
+    const r8_scene *sc = r8_render_scene(cfg);
     r8_u8 i;
     unsigned nv = 0, nf = 0, ni = 0, o = 0;
     for (i = 0; i < sc->nobjects; i++) {
@@ -218,7 +225,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->work_size = work_size;
     r->frame = 0;
     r->state = st;
-    sc = r8_scene_get(cfg->scene);
+    sc = r8_render_scene(cfg);
     st->scene = sc;
     st->nverts = pl.nverts;
     st->nfaces = pl.nfaces;
