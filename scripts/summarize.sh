@@ -12,7 +12,7 @@ for f in "$dir"/*.log; do
   while IFS= read -r line; do
     if [[ $line =~ ^([0-9]+)\ passed,\ ([0-9]+)\ failed ]]; then
       p=$((p + BASH_REMATCH[1])); fl=$((fl + BASH_REMATCH[2])); seen=1
-    elif [[ $line =~ ^=+\ .*(passed|failed|error).*\ in\ [0-9.]+s ]]; then
+    elif [[ $line =~ ^(=+\ )?[0-9]+\ (passed|failed|errors?).*\ in\ [0-9.]+s ]]; then
       [[ $line =~ ([0-9]+)\ passed ]] && p=$((p + BASH_REMATCH[1]))
       [[ $line =~ ([0-9]+)\ failed ]] && fl=$((fl + BASH_REMATCH[1]))
       [[ $line =~ ([0-9]+)\ errors? ]] && fl=$((fl + BASH_REMATCH[1]))
