@@ -1,0 +1,23 @@
+# mk/chart.mk - accuracy and stability (issue 6): the floating-point
+# reference's tests, the stability suite (tests/host/test_stability*.c,
+# built and run by mk/core.mk), short libFuzzer runs, `make fuzz` for long
+# ones and `make chart` (docs/speed-accuracy.{png,md}).
+#
+#   build/r8probe            renders built-in scenes or scene blobs: frames,
+#                            per-pixel face ids, C-projected vertices
+#   build/r8fill             r8_fill_poly on polygons read from stdin
+#   build/fuzz/fuzz_<name>   libFuzzer targets (tests/fuzz/fuzz_<name>.c)
+
+R8PROBE := $(BUILD)/r8probe
+R8FILL  := $(BUILD)/r8fill
+ALL_TARGETS += $(R8PROBE) $(R8FILL)
+
+$(R8PROBE): tests/tools/r8probe.c $(LIB) $(wildcard include/*.h src/*.h)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+
+$(R8FILL): tests/tools/r8fill.c $(LIB) $(wildcard include/*.h)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+
+# tests/py/test_reference.py runs in mk/wire.mk's py-wire step (pytest on
+# tests/py) and needs the two tools.
+test-py: $(R8PROBE) $(R8FILL)
