@@ -253,6 +253,7 @@ class UsbSource:
         self._claimed = None
         self._detached = False
         self._dev = None
+        self.warnings = []
         self._last_data = time.monotonic()
         backend, self.backend_name = get_backend()
         self._backend = backend
@@ -303,8 +304,13 @@ class UsbSource:
             except NotImplementedError:
                 active = False
             if active:
-                dev.detach_kernel_driver(iface)
-                self._detached = iface
+                try:
+                    dev.detach_kernel_driver(iface)
+                    self._detached = iface
+                except usb.core.USBError as e:
+                    if _code(e) not in (_ERR_NOT_FOUND, None):
+                        self.warnings.append(f"cannot detach the kernel driver of interface "
+                                             f"{iface}: {e}")
             self._usb_util.claim_interface(dev, iface)
             self._claimed = iface
             if intf.bAlternateSetting:

@@ -7,12 +7,17 @@
  * library (LD_PRELOAD=faultshim.so:libumockdev-preload.so, see
  * tests/usb/mockrun.sh) and fakes those kernel answers at the usbdevfs
  * ioctl level, so libusb, pyusb and rast8-usbcat run their real code
- * paths.  Selected by RAST8_USB_FAULT:
+ * paths.  Selected by RAST8_USB_FAULT (comma-separated, e.g. driver,silent=5):
  *   access       open() of /dev/bus/usb/... fails with EACCES
  *   busy         USBDEVFS_CLAIMINTERFACE fails with EBUSY
  *   silent=K     the first K bulk IN requests go to umockdev as usual;
  *                later ones never complete (the device sends nothing),
  *                until libusb cancels them on its timeout
+ *   driver       a kernel driver ("rast8drv") is bound to the interface:
+ *                claiming fails with EBUSY until it is detached
+ *                (USBDEVFS_DISCONNECT); detach and re-attach
+ *                (USBDEVFS_CONNECT) are logged on stderr as
+ *                "faultshim: detach N" / "faultshim: attach N"
  * Test code only (gnu99).
  */
 #define _GNU_SOURCE
@@ -20,12 +25,15 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
 #include <linux/usbdevice_fs.h>
 
-static int mode = -1;               /* 0 none, 1 access, 2 busy, 3 silent */
+static int inited;
+static int f_access, f_busy, f_silent, f_driver;
+static int driver_bound = 1;
 static long silent_after;
 static long in_submits;
 static struct usbdevfs_urb *pending;
@@ -33,14 +41,16 @@ static int pending_discarded;
 
 static void init_mode(void)
 {
-    const char *f;
-    if (mode >= 0) return;
+    const char *f, *p;
+    if (inited) return;
+    inited = 1;
     f = getenv("RAST8_USB_FAULT");
-    mode = 0;
-    if (!f) return;
-    if (!strcmp(f, "access")) mode = 1;
-    else if (!strcmp(f, "busy")) mode = 2;
-    else if (!strncmp(f, "silent=", 7)) { mode = 3; silent_after = strtol(f + 7, NULL, 10); }
+    for (p = f; p && *p; p = strchr(p, ',') ? strchr(p, ',') + 1 : NULL) {
+        if (!strncmp(p, "access", 6)) f_access = 1;
+        else if (!strncmp(p, "busy", 4)) f_busy = 1;
+        else if (!strncmp(p, "driver", 6)) f_driver = 1;
+        else if (!strncmp(p, "silent=", 7)) { f_silent = 1; silent_after = strtol(p + 7, NULL, 10); }
+    }
 }
 
 static int is_usb_node(const char *path)
@@ -56,7 +66,7 @@ static int do_open(const char *name, const char *path, int flags, va_list ap)
     mode_t m = 0;
     init_mode();
     if (flags & (O_CREAT | O_TMPFILE)) m = (mode_t)va_arg(ap, int);
-    if (mode == 1 && is_usb_node(path)) {
+    if (f_access && is_usb_node(path)) {
         errno = EACCES;
         return -1;
     }
@@ -87,7 +97,7 @@ int __open_2(const char *path, int flags)
 {
     open_fn real = (open_fn)dlsym(RTLD_NEXT, "__open_2");
     init_mode();
-    if (mode == 1 && is_usb_node(path)) {
+    if (f_access && is_usb_node(path)) {
         errno = EACCES;
         return -1;
     }
@@ -106,11 +116,43 @@ int ioctl(int fd, unsigned long req, ...)
     va_end(ap);
     if (!real) real = (ioctl_fn)dlsym(RTLD_NEXT, "ioctl");
     init_mode();
-    if (mode == 2 && req == USBDEVFS_CLAIMINTERFACE) {
+    if (f_busy && req == USBDEVFS_CLAIMINTERFACE) {
         errno = EBUSY;
         return -1;
     }
-    if (mode == 3) {
+    if (f_driver) {
+        if (req == USBDEVFS_GETDRIVER) {
+            struct usbdevfs_getdriver *g = arg;
+            if (!driver_bound) {
+                errno = ENODATA;
+                return -1;
+            }
+            strcpy(g->driver, "rast8drv");
+            return 0;
+        }
+        if (req == USBDEVFS_IOCTL) {
+            struct usbdevfs_ioctl *c = arg;
+            if (c->ioctl_code == (int)USBDEVFS_DISCONNECT) {
+                if (!driver_bound) {
+                    errno = ENODATA;
+                    return -1;
+                }
+                driver_bound = 0;
+                fprintf(stderr, "faultshim: detach %d\n", c->ifno);
+                return 0;
+            }
+            if (c->ioctl_code == (int)USBDEVFS_CONNECT) {
+                driver_bound = 1;
+                fprintf(stderr, "faultshim: attach %d\n", c->ifno);
+                return 0;
+            }
+        }
+        if (req == USBDEVFS_CLAIMINTERFACE && driver_bound) {
+            errno = EBUSY;
+            return -1;
+        }
+    }
+    if (f_silent) {
         if (req == USBDEVFS_SUBMITURB) {
             struct usbdevfs_urb *u = arg;
             if (u->type == USBDEVFS_URB_TYPE_BULK && (u->endpoint & 0x80) &&

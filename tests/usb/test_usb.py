@@ -442,3 +442,20 @@ def test_device_selection_between_identical_boards(bed2, stream, clean, work):
 def test_usbcat_unwritable_output(bed, clean, work):
     r = mock(bed, clean[0], [USBCAT, "-o", work / "no" / "such" / "dir", SPEC])
     assert r.returncode == 9 and "cannot write" in r.stderr.decode()
+
+
+def test_kernel_driver_is_detached_and_reattached(bed, stream, clean, work):
+    """A bound kernel driver holds the interface (claim: EBUSY) until detached."""
+    ioctl, replies, _ = clean
+    fault = f"driver,silent={replies}"
+    r = mock(bed, ioctl, [USBCAT, "--idle", "0.2", SPEC], fault=fault)
+    err = r.stderr.decode()
+    assert r.returncode == 0 and r.stdout == stream.read_bytes(), err
+    assert err.index("faultshim: detach 0") < err.index("faultshim: attach 0")
+
+    out = work / "driver.py.bin"
+    r = mock(bed, ioctl, [sys.executable, HERE / "usbread.py", f"{SPEC},idle=0.2", out],
+             fault=fault)
+    err = r.stderr.decode()
+    assert r.returncode == 0 and out.read_bytes() == stream.read_bytes(), err
+    assert err.index("faultshim: detach 0") < err.index("faultshim: attach 0")
