@@ -14,6 +14,7 @@ timeout, idle end, busy and permission cases still run libusb's real code.
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -459,3 +460,25 @@ def test_kernel_driver_is_detached_and_reattached(bed, stream, clean, work):
     err = r.stderr.decode()
     assert r.returncode == 0 and out.read_bytes() == stream.read_bytes(), err
     assert err.index("faultshim: detach 0") < err.index("faultshim: attach 0")
+
+
+@pytest.mark.skipif(not shutil.which("xvfb-run"), reason="needs Xvfb (scripts/setup.sh installs it)")
+def test_view_usb_source_screenshot(bed, stream, clean, work):
+    """rast8 view usb:..., headless: the window shows the last frame exactly."""
+    from PIL import Image, ImageChops
+    from rast8.protocol import StreamDecoder
+    ioctl, replies, _ = clean
+    shot = work / "view.png"
+    env = dict(os.environ, RAST8_USB_FAULT=f"silent={replies}")
+    env.pop("RAST8_USB_BACKEND", None)
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 800x600x24",
+           "umockdev-run", "--device", str(bed), "--ioctl", f"{mkioctl.DEVNODE}={ioctl}", "--",
+           "sh", "-c", 'LD_PRELOAD="$0${LD_PRELOAD:+:$LD_PRELOAD}" exec "$@"', str(SHIM),
+           str(RAST8), "view", f"{SPEC},idle=0.2", "--scale", "3", "--screenshot", str(shot)]
+    r = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert f"{FRAMES} frames, errors 0" in r.stdout
+    last = StreamDecoder().feed(stream.read_bytes())[-1]
+    want = last.to_image(3).convert("RGB")
+    got = Image.open(shot).convert("RGB")
+    assert got.size == want.size and ImageChops.difference(got, want).getbbox() is None
