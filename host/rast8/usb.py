@@ -234,10 +234,12 @@ class UsbSource:
     kind = "usb"
 
     def __init__(self, spec, timeout=None, idle=None):
+        opts = parse_spec(spec)
+        backend, self.backend_name = get_backend()     # UsbBackendMissing without pyusb
         import usb.core
         import usb.util
         self._usb_util = usb.util
-        opts = parse_spec(spec)
+        self._backend = backend
         if timeout is not None:
             opts["timeout"] = timeout
         if idle is not None:
@@ -255,8 +257,6 @@ class UsbSource:
         self._dev = None
         self.warnings = []
         self._last_data = time.monotonic()
-        backend, self.backend_name = get_backend()
-        self._backend = backend
 
         def match(d):
             return ((opts["bus"] is None or d.bus == opts["bus"]) and
@@ -274,6 +274,9 @@ class UsbSource:
                 "'rast8-usbcat --list' or 'lsusb'")
         dev = devs[0]
         self.bus, self.addr = dev.bus, dev.address
+        if len(devs) > 1:
+            self.warnings.append(f"{len(devs)} devices match {self.vid:04x}:{self.pid:04x}; using "
+                                 f"bus {dev.bus} addr {dev.address} (choose with ,bus=N,addr=N)")
         self._dev = dev
         try:
             self._setup(dev, opts)

@@ -435,6 +435,11 @@ def test_device_selection_between_identical_boards(bed2, stream, clean, work):
 
     rc, rep = usbread(bed2, scripts, f"{SPEC},addr=4", work / "sel4.bin")
     assert rc == EX_STALL and (work / "sel4.bin").read_bytes() == data[:at]
+    assert rep["warnings"] == []
+    rc, rep = usbread(bed2, scripts, f"{SPEC},addr=9", os.devnull)
+    assert rc == EX_NODEV and "at the given bus/addr" in rep["error"]["message"]
+    rc, rep = usbread(bed2, scripts, f"{SPEC},timeout=0.3", os.devnull, fault="silent=0")
+    assert rc == EX_TIMEOUT and "2 devices match" in rep["warnings"][0], rep
     rc, rep = usbread(bed2, scripts, f"{SPEC},bus=1,addr=2,idle=0.2", work / "sel2.bin",
                       fault=f"silent={clean[1]}")
     assert rc == 0 and (work / "sel2.bin").read_bytes() == data

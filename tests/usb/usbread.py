@@ -27,6 +27,7 @@ def main():
             print(json.dumps(report))
             return e.exit_code
         report["backend"] = src.backend_name
+        report["warnings"] = src.warnings
         try:
             while True:
                 data = src.read(chunk)
