@@ -21,8 +21,25 @@ void r8_cull_normals(r8_state *st)
             const r8_s16 *c = me->verts + fc->v[2] * 3;
             r8_vec3 e1, e2;
             r8_vec3l n;
-            e1.x = (r8_s16)(b[0] - a[0]); e1.y = (r8_s16)(b[1] - a[1]); e1.z = (r8_s16)(b[2] - a[2]);
-            e2.x = (r8_s16)(c[0] - a[0]); e2.y = (r8_s16)(c[1] - a[1]); e2.z = (r8_s16)(c[2] - a[2]);
+            r8_s32 d[6];
+            r8_u8 j, big = 1;
+            /* edges of coordinates up to +/-32767 need 17 bits: halve both
+             * until every component fits 16 (same scale: same direction) */
+            for (j = 0; j < 3; j++) {
+                d[j] = (r8_s32)b[j] - a[j];
+                d[3 + j] = (r8_s32)c[j] - a[j];
+            }
+            while (big) {
+                big = 0;
+                for (j = 0; j < 6; j++)
+                    if (d[j] > 32767 || d[j] < -32767)
+                        big = 1;
+                if (big)
+                    for (j = 0; j < 6; j++)
+                        d[j] = r8_asr32(d[j], 1);
+            }
+            e1.x = (r8_s16)d[0]; e1.y = (r8_s16)d[1]; e1.z = (r8_s16)d[2];
+            e2.x = (r8_s16)d[3]; e2.y = (r8_s16)d[4]; e2.z = (r8_s16)d[5];
             r8_cross3(&e2, &e1, &n);  /* outward: faces are clockwise from outside */
             r8_normalize(&n, &st->fnorm[o->fbase + f]);
         }
