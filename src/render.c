@@ -327,7 +327,8 @@ void r8_render_frame(r8_render *r, r8_u16 frame)
                 oand &= c;
                 oor |= c;
             }
-            if (oand)                        /* all outside one side */
+            if (oand & (r8_u8)~R8_OUT_GUARD) /* all outside one side (the guard
+                                                 flag is any side: clip instead) */
                 continue;
             if (r->cfg.cull == R8_CULL_NORMAL && !r8_cull_front(st, o, me, f))
                 continue;
