@@ -186,6 +186,14 @@ def test_bad_spec_is_a_clear_error(bad, words):
     assert ei.value.exit_code == EX_USAGE
 
 
+def test_bad_backend_choice_is_a_clear_error(monkeypatch):
+    from rast8.usb import UsbBackendMissing, open_usb
+    monkeypatch.setenv("RAST8_USB_BACKEND", "winusb")
+    with pytest.raises(UsbBackendMissing) as ei:
+        open_usb(SPEC)
+    assert "use 'system' or 'package'" in str(ei.value) and ei.value.exit_code == 1
+
+
 def test_usbcat_help_and_usage_errors():
     r = subprocess.run([USBCAT, "--help"], capture_output=True, text=True)
     assert r.returncode == 0 and "usb:VID:PID[:EP]" in r.stdout and "--list" in r.stdout
