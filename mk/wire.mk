@@ -19,7 +19,7 @@ $(CODEC_TOOL): emu/codec_host.c $(wildcard include/*.h) $(LIB)
 
 # app.c runs on every target: hold it to the library's C89 gate and
 # the three cross compilers too.
-.PHONY: test-app-c89 test-py test-vectors demo stats
+.PHONY: test-app-c89 test-py vectors demo stats
 test-app-c89:
 	@bash scripts/run-step.sh app-c89 bash -c 'p=0; f=0; t=$$(mktemp -d); \
 	  for cc in gcc clang; do if $$cc $(STRICT) $(INC) -Iemu -c emu/app.c -o /dev/null; \
@@ -56,3 +56,11 @@ stats: $(SETUP) $(EMU)
 # pattern rule in the Makefile lists include/*.h only); without this a
 # changed src/*.h leaves stale objects and rast8-emu crashes.
 $(LIB_OBJ): $(wildcard src/*.h)
+
+# The C tests that read the shared vectors; `make vectors` regenerates
+# tests/vectors/vectors.h from tests/vectors/codec.txt (a pytest checks
+# that it is up to date).
+VEC_TESTS := test_rle test_lz77 test_wire
+$(VEC_TESTS:%=$(BUILD)/tests/%) $(VEC_TESTS:%=$(BUILD)/asan/%): tests/vectors/vectors.h
+vectors: $(SETUP)
+	$(PY) -m rast8.vectors tests/vectors/codec.txt tests/vectors/vectors.h

@@ -47,7 +47,7 @@ def load(path):
 
 
 KIND_IDS = {"rle": 1, "lz77": 2, "lz77_dec": 3, "cobs": 4, "crc": 5,
-            "rle_bad": 6, "lz77_bad": 7, "cobs_bad": 8}
+            "rle_bad": 6, "lz77_bad": 7, "cobs_bad": 8, "stream": 9}
 ERR_IDS = {"SPACE": -1, "MALFORMED": -2, "TRUNC": -3}
 
 

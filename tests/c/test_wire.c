@@ -281,6 +281,40 @@ static void test_tx_palette_and_raw_fallback(void)
     }
 }
 
+/* The shared protocol stream vector (docs/protocol.md section 7). */
+static void test_stream_vector(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    r8_fb fb;
+    unsigned i, k, seen = 0;
+    for (i = 0; i < TVEC_COUNT; i++) {
+        const tvec *v = &tvecs[i];
+        if (v->kind != VK_STREAM)
+            continue;
+        seen++;
+        tx_cfg(&c);
+        c.width = 16;
+        c.height = 8;
+        c.full_period = 32;
+        TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+        TEST_ASSERT_EQUAL_INT(0, r8_fb_init(&fb, band, R8_FMT_PAGE1, 16, 8, 0, 8));
+        cap_len = 0;
+        r8_tx_sync(&tx);
+        for (k = 0; k < 2; k++) {
+            unsigned j;
+            for (j = 0; j < 16; j++)
+                band[j] = v->in[j];
+            r8_tx_frame_begin(&tx, (r8_u16)k);
+            r8_tx_band(&tx, &fb);
+            r8_tx_frame_end(&tx);
+        }
+        TEST_ASSERT_EQUAL_UINT(v->out_len, cap_len);
+        TEST_ASSERT_EQUAL_MEMORY(v->out, cap_buf, cap_len);
+    }
+    TEST_ASSERT_EQUAL_UINT(1, seen);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -291,5 +325,6 @@ int main(void)
     RUN_TEST(test_tx_full_then_dirty);
     RUN_TEST(test_tx_request_packet);
     RUN_TEST(test_tx_palette_and_raw_fallback);
+    RUN_TEST(test_stream_vector);
     return UNITY_END();
 }

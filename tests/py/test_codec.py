@@ -36,6 +36,11 @@ def test_vector_python(v):
         assert codec.cobs_decode(o) == i
     elif k == "crc":
         assert codec.crc16(i).to_bytes(2, "big") == o
+    elif k == "stream":
+        from rast8.protocol import Encoder, StreamDecoder
+        enc = Encoder(0, 16, 8, 8, codec.RLE, full_period=32, dirty=True)
+        assert enc.sync() + enc.frame(0, i) + enc.frame(1, i) == o
+        assert [f.pixels for f in StreamDecoder().feed(o)] == [i, i]
     else:
         fn = {"rle_bad": codec.rle_decode, "lz77_bad": codec.lz77_decode,
               "cobs_bad": lambda d, limit=None: codec.cobs_decode(d)}[k]
