@@ -54,6 +54,7 @@ struct opts {
     long long max_bytes;       /* 0 = no limit */
     const char *out;           /* NULL or "-" = stdout */
     int pty;
+    double gate;               /* s to wait for a pty reader's first byte */
     double linger;             /* s to wait for a pty reader to drain */
     int list;
     char spec[64];
@@ -71,7 +72,8 @@ static void usage(FILE *f)
 "options:\n"
 "  -o, --output FILE   write to FILE instead of stdout (- = stdout)\n"
 "      --pty           create a pty, print its path on stdout and write the\n"
-"                      stream to it (open the path with any serial tool)\n"
+"                      stream to it (open the path with any serial tool);\n"
+"                      streaming starts once a reader has opened it\n"
 "      --list          list candidate devices: vendor-class interfaces with a\n"
 "                      bulk IN endpoint, one usb: spec per line\n"
 "  -t, --timeout SEC   fail (exit 8) when no data arrives for SEC seconds\n"
@@ -82,8 +84,13 @@ static void usage(FILE *f)
 "      --bus N         pick the device on bus N (when several match)\n"
 "      --addr N        pick the device with address N\n"
 "  -i, --interface N   claim interface N (default: the one owning EP)\n"
-"      --linger SEC    with --pty: at the end wait up to SEC s (default 5)\n"
-"                      for the reader to drain the pty before closing it\n"
+"      --gate MS       with --pty: once the reader has opened the pty, wait\n"
+"                      up to MS ms for its first byte before streaming\n"
+"                      (default 2000; rast8 sends one as soon as its port is\n"
+"                      open, pyserial discards input that arrives earlier)\n"
+"      --linger SEC    with --pty: at the end wait up to SEC s (default 30)\n"
+"                      for the reader to read everything (or to close the\n"
+"                      pty) before closing it, so no byte is lost\n"
 "  -q, --quiet         no summary line on stderr\n"
 "  -h, --help          this help\n"
 "\n"
@@ -273,33 +280,122 @@ static int do_list(libusb_context *ctx)
     return EX_OK;
 }
 
-/* pty: master fd, slave path; the slave is kept open by us too, raw. */
-static int open_pty(int *master, int *slave, char *path, size_t pathlen)
+/* pty: master fd and slave path.  The slave is opened once to make it raw
+ * (no echo, no CR/LF translation; the setting stays with the pty), then
+ * closed, so that the master polls POLLHUP whenever no reader has it open. */
+static int open_pty(int *master, char *path, size_t pathlen)
 {
     struct termios t;
     const char *name;
-    int m = posix_openpt(O_RDWR | O_NOCTTY);
+    int s, m = posix_openpt(O_RDWR | O_NOCTTY);
     if (m < 0 || grantpt(m) || unlockpt(m) || !(name = ptsname(m))) return -1;
     snprintf(path, pathlen, "%s", name);
-    *slave = open(path, O_RDWR | O_NOCTTY);
-    if (*slave < 0) return -1;
-    if (tcgetattr(*slave, &t) == 0) {
+    s = open(path, O_RDWR | O_NOCTTY);
+    if (s < 0) return -1;
+    if (tcgetattr(s, &t) == 0) {
         cfmakeraw(&t);
-        tcsetattr(*slave, TCSANOW, &t);
+        tcsetattr(s, TCSANOW, &t);
     }
+    close(s);
     *master = m;
     return 0;
 }
 
-/* Wait until a pty reader has read everything (or linger runs out). */
-static void drain_pty(int slave, double linger)
+static int pty_reader_present(int master)
 {
-    double end = now_s() + linger;
-    while (now_s() < end && !stop_requested) {
-        int pending = 0;
-        if (ioctl(slave, FIONREAD, &pending) != 0 || pending == 0) return;
+    struct pollfd p;
+    p.fd = master;
+    p.events = POLLIN;
+    p.revents = 0;
+    poll(&p, 1, 0);
+    return !(p.revents & POLLHUP);
+}
+
+/* Read and drop what the reader sent (rast8 sends requests; we are
+ * read-only towards the board).  Returns 1 if something was read. */
+static int pty_discard_input(int master, int wait_ms)
+{
+    unsigned char junk[256];
+    struct pollfd p;
+    p.fd = master;
+    p.events = POLLIN;
+    p.revents = 0;
+    if (poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN) && !(p.revents & POLLHUP))
+        return read(master, junk, sizeof junk) > 0;
+    return 0;
+}
+
+/* Wait for a reader to open the pty, then up to gate s for its first byte.
+ * Returns 0, or -1 if interrupted. */
+static int pty_wait_reader(int master, double gate)
+{
+    double end;
+    while (!pty_reader_present(master)) {
+        if (stop_requested) return -1;
         usleep(20000);
     }
+    end = now_s() + gate;
+    while (now_s() < end) {
+        if (stop_requested) return -1;
+        if (pty_discard_input(master, 20)) break;
+        if (!pty_reader_present(master)) break;
+    }
+    return 0;
+}
+
+/* Write all of buf to the (non-blocking) master, waiting while the
+ * reader is slow; fails with EPIPE if the reader closes the pty. */
+static int pty_write_all(int master, const unsigned char *buf, size_t n)
+{
+    while (n > 0) {
+        ssize_t w = write(master, buf, n);
+        if (w > 0) {
+            buf += w;
+            n -= (size_t)w;
+            continue;
+        }
+        if (w < 0 && errno != EAGAIN && errno != EINTR) return -1;
+        if (!pty_reader_present(master)) {
+            errno = EPIPE;
+            return -1;
+        }
+        pty_discard_input(master, 0);
+        {
+            struct pollfd p;
+            p.fd = master;
+            p.events = POLLOUT;
+            p.revents = 0;
+            poll(&p, 1, 50);
+        }
+    }
+    return 0;
+}
+
+/* At the end: wait until the reader has read everything (FIONREAD on a
+ * slave fd, where the kernel supports it) or has closed the pty, at most
+ * linger s.  Closing the master drops what the reader has not read. */
+static void pty_drain(int master, const char *path, double linger)
+{
+    double end = now_s() + linger;
+    int zeros = 0, n = 0;
+    int s = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    if (s >= 0 && ioctl(s, FIONREAD, &n) != 0) {
+        close(s);                   /* no FIONREAD: wait for the reader to close */
+        s = -1;
+    }
+    while (now_s() < end && !stop_requested) {
+        if (s >= 0) {
+            if (ioctl(s, FIONREAD, &n) == 0 && n == 0) {
+                if (++zeros >= 4) break;    /* empty for 200 ms: all read */
+            } else {
+                zeros = 0;
+            }
+        } else if (!pty_reader_present(master)) {
+            break;
+        }
+        pty_discard_input(master, 50);
+    }
+    if (s >= 0) close(s);
 }
 
 int main(int argc, char **argv)
@@ -309,7 +405,7 @@ int main(int argc, char **argv)
     libusb_device **list = NULL, *dev = NULL;
     libusb_device_handle *h = NULL;
     ssize_t n, i;
-    int matches = 0, iface = -1, alt = 0, r, rc = EX_OK, outfd = 1, pty_slave = -1;
+    int matches = 0, iface = -1, alt = 0, r, rc = EX_OK, outfd = 1;
     int claimed = 0, detached = 0;
     long long total = 0;
     const char *spec = NULL;
@@ -319,7 +415,7 @@ int main(int argc, char **argv)
     struct sigaction sa;
 
     memset(&o, 0, sizeof o);
-    o.ep = 0x81; o.bus = -1; o.addr = -1; o.iface = -1; o.timeout = 5.0; o.linger = 5.0;
+    o.ep = 0x81; o.bus = -1; o.addr = -1; o.iface = -1; o.timeout = 5.0; o.linger = 30.0; o.gate = 2.0;
 
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -337,6 +433,10 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--idle")) {
             NEED_VAL();
             if (parse_num(val, &o.idle)) return fail(EX_USAGE, "bad --idle '%s' (seconds, >= 0)", val);
+        } else if (!strcmp(a, "--gate")) {
+            NEED_VAL();
+            if (parse_num(val, &o.gate)) return fail(EX_USAGE, "bad --gate '%s' (milliseconds, >= 0)", val);
+            o.gate /= 1000.0;
         } else if (!strcmp(a, "--linger")) {
             NEED_VAL();
             if (parse_num(val, &o.linger)) return fail(EX_USAGE, "bad --linger '%s' (seconds, >= 0)", val);
@@ -494,14 +594,22 @@ int main(int argc, char **argv)
     /* a halt left over from an earlier run would stall the first read */
     libusb_clear_halt(h, (unsigned char)o.ep);
 
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+
     /* output */
     if (o.pty) {
-        if (open_pty(&outfd, &pty_slave, ptypath, sizeof ptypath) != 0) {
+        if (open_pty(&outfd, ptypath, sizeof ptypath) != 0) {
             rc = fail(EX_OUTPUT, "cannot create a pty: %s", strerror(errno));
             goto out;
         }
         printf("%s\n", ptypath);
         fflush(stdout);
+        if (pty_wait_reader(outfd, o.gate) != 0) goto out;
+        fcntl(outfd, F_SETFL, fcntl(outfd, F_GETFL) | O_NONBLOCK);
     } else if (o.out && strcmp(o.out, "-") != 0) {
         outfd = open(o.out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (outfd < 0) {
@@ -509,12 +617,6 @@ int main(int argc, char **argv)
             goto out;
         }
     }
-
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    signal(SIGPIPE, SIG_IGN);
 
     t0 = last_data = now_s();
     for (;;) {
@@ -530,12 +632,25 @@ int main(int argc, char **argv)
         slice = left > 0 ? (unsigned int)(left * 1000.0 + 0.5) : 1;
         if (slice > SLICE_MS) slice = SLICE_MS;
         if (slice == 0) slice = 1;
+        if (o.pty) {
+            pty_discard_input(outfd, 0);
+            if (!pty_reader_present(outfd)) {
+                rc = fail(EX_OUTPUT, "cannot write the output: the reader closed %s after "
+                          "%lld bytes", ptypath, total);
+                break;
+            }
+        }
         r = libusb_bulk_transfer(h, (unsigned char)o.ep, buf, want, &got, slice);
         if (got > 0) {
             long long keep = got;
             if (o.max_bytes && total + keep > o.max_bytes) keep = o.max_bytes - total;
-            if (write_all(outfd, buf, (size_t)keep) != 0) {
-                rc = fail(EX_OUTPUT, "cannot write the output: %s", strerror(errno));
+            if ((o.pty ? pty_write_all(outfd, buf, (size_t)keep)
+                       : write_all(outfd, buf, (size_t)keep)) != 0) {
+                if (o.pty && errno == EPIPE)
+                    rc = fail(EX_OUTPUT, "cannot write the output: the reader closed %s "
+                              "after %lld bytes", ptypath, total);
+                else
+                    rc = fail(EX_OUTPUT, "cannot write the output: %s", strerror(errno));
                 break;
             }
             total += keep;
@@ -570,15 +685,14 @@ int main(int argc, char **argv)
         }
         break;
     }
-    if (pty_slave >= 0 && (rc == EX_OK || total > 0))
-        drain_pty(pty_slave, o.linger);
+    if (o.pty && outfd > 2 && rc != EX_OUTPUT)
+        pty_drain(outfd, ptypath, o.linger);
     if (!quiet)
         fprintf(stderr, "%s: %lld bytes from %s in %.2f s%s\n", prog, total, o.spec,
                 now_s() - t0, stop_requested ? " (interrupted)" : "");
 
 out:
     if (outfd > 2) close(outfd);
-    if (pty_slave >= 0) close(pty_slave);
     if (claimed) libusb_release_interface(h, iface);
     if (detached) libusb_attach_kernel_driver(h, iface);
     if (h) libusb_close(h);

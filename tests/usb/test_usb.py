@@ -292,36 +292,59 @@ def test_python_source_reads_the_stream_exactly(bed, stream, clean, work, backen
     assert rep["backend"].startswith(want)
 
 
-def test_usbcat_pty(bed, stream, clean):
-    """--pty prints a path; a reader of that path gets the stream, then EOF."""
-    ioctl, replies, _ = clean
+def _usbcat_pty(bed, ioctl, replies, *args):
     env = dict(os.environ, RAST8_USB_FAULT=f"silent={replies}")
     cmd = ["umockdev-run", "--device", str(bed), "--ioctl", f"{mkioctl.DEVNODE}={ioctl}", "--",
            "sh", "-c", 'LD_PRELOAD="$0${LD_PRELOAD:+:$LD_PRELOAD}" exec "$@"', str(SHIM),
-           str(USBCAT), "--pty", "--idle", "0.5", "--linger", "10", SPEC]
+           str(USBCAT), "--pty", *args, SPEC]
     p = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    path = p.stdout.readline().decode().strip()
+    return p, path
+
+
+def test_usbcat_pty(bed, stream, clean):
+    """--pty prints a path and streams once a reader has it open: a plain
+    reader (it sends nothing, so after --gate) gets exactly the stream."""
+    ioctl, replies, _ = clean
+    data = stream.read_bytes()
+    p, path = _usbcat_pty(bed, ioctl, replies, "--idle", "0.3", "--gate", "200")
     try:
-        path = p.stdout.readline().decode().strip()
-        assert path.startswith("/dev/pts/"), path
+        assert path.startswith("/dev/pts/"), (path, p.stderr.read())
         fd = os.open(path, os.O_RDONLY | os.O_NOCTTY)
         got = bytearray()
         try:
-            while True:
-                try:
-                    b = os.read(fd, 4096)
-                except OSError:          # EIO: the writer closed the pty
-                    break
+            while len(got) < len(data):
+                b = os.read(fd, 4096)
                 if not b:
                     break
                 got += b
         finally:
-            os.close(fd)
+            os.close(fd)              # usbcat ends once its reader is gone
         assert p.wait(timeout=30) == 0, p.stderr.read()
     finally:
         if p.poll() is None:
             p.kill()
             p.wait()
-    assert bytes(got) == stream.read_bytes()
+    assert bytes(got) == data
+
+
+def test_usbcat_pty_to_rast8_decode(bed, clean, reference, work):
+    """rast8 decode over pyserial on the pty: rast8 sends a request once its
+    port is open, which starts the stream (no byte lost to pyserial's flush)."""
+    ioctl, replies, _ = clean
+    p, path = _usbcat_pty(bed, ioctl, replies, "--idle", "0.3")
+    d = work / "via-pty"
+    try:
+        assert path.startswith("/dev/pts/"), (path, p.stderr.read())
+        r = subprocess.run([str(RAST8), "decode", path, "--frames", str(FRAMES), "-o", str(d)],
+                           capture_output=True, timeout=60)
+        assert r.returncode == 0, r.stderr.decode()
+        assert p.wait(timeout=30) == 0, p.stderr.read()
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+    assert frames_in(d) == reference
 
 
 # ------------------------------------------------------------------ errors
