@@ -21,3 +21,24 @@ $(R8FILL): tests/tools/r8fill.c $(LIB) $(wildcard include/*.h)
 # tests/py/test_reference.py runs in mk/wire.mk's py-wire step (pytest on
 # tests/py) and needs the two tools.
 test-py: $(R8PROBE) $(R8FILL)
+
+# ---- fuzzing: libFuzzer (clang), the library sources compiled in
+FUZZ_SRC  := $(sort $(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_BIN  := $(FUZZ_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
+FUZZ_SECS ?= 4
+FUZZ_LONG ?= 600
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_SRC) $(wildcard include/*.h src/*.h)
+	@mkdir -p $(dir $@)
+	clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(INC) $< $(LIB_SRC) -o $@
+
+.PHONY: test-fuzz
+# short runs inside make test
+test-fuzz: $(FUZZ_BIN)
+	@bash scripts/run-step.sh fuzz bash tests/fuzz/run.sh $(FUZZ_SECS) $(FUZZ_BIN)
+
+# long runs: make fuzz [FUZZ_LONG=seconds per target]
+fuzz: $(FUZZ_BIN)
+	bash tests/fuzz/run.sh $(FUZZ_LONG) $(FUZZ_BIN)
+
+TEST_STEPS += test-fuzz
