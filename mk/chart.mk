@@ -42,3 +42,15 @@ fuzz: $(FUZZ_BIN)
 	bash tests/fuzz/run.sh $(FUZZ_LONG) $(FUZZ_BIN)
 
 TEST_STEPS += test-fuzz
+
+# ---- make chart: docs/speed-accuracy.{png,md}
+# Uses AVR cycles from build/bench/results.json (make bench, issue 5) when
+# present, adding the accuracy fields to its records first; otherwise (or
+# for variants the bench does not cover) host instructions by callgrind.
+# CHART_BENCH=0 skips running make bench when results.json is missing.
+CHART_BENCH ?= 1
+chart: $(R8PROBE) $(SETUP)
+	@if [ "$(CHART_BENCH)" != 0 ] && [ -f bench/bench.py ] && [ ! -f $(BUILD)/bench/results.json ]; then \
+	  $(MAKE) --no-print-directory bench || echo "chart: make bench failed; charting host instruction counts"; fi
+	@if [ -f $(BUILD)/bench/results.json ]; then $(PY) bench/accuracy.py $(BUILD)/bench/results.json; fi
+	$(PY) bench/chart.py $(CHART_ARGS)

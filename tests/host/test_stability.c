@@ -273,7 +273,7 @@ static void test_bands_on_huge_polygon(void)
  * step (value k == floor(a + (b - a) k / n)), so nothing drifts however
  * long the span; the same values from r8_interp_init_mul with products
  * past 32 bits.  A naive 8.8 accumulated delta drifts by up to
- * n * 2^-9 (docs/stability.md): 19 levels over 10,000 steps. */
+ * n / 256 (docs/stability.md): 33 over 10,000 steps. */
 static void test_interp_no_drift(void)
 {
     static const long ends[][2] = {{0, 32767}, {32767, 0}, {-16384, 16383}, {5, 6}, {100, -100}, {0, 0}};

@@ -250,3 +250,26 @@ def test_blob_scene_renders_like_builtin(probe_tool, tmp_path):
     a, ia, _ = M.probe("torus", "zbuf16", frames=(5,))
     b, ib, _ = M.probe("torus", "zbuf16", frames=(5,), blob=str(blob))
     assert (a[0] == b[0]).all() and (ia[0] == ib[0]).all()
+
+
+def test_bench_accuracy_annotates_records(probe_tool, tmp_path):
+    # bench/accuracy.py adds the accuracy fields to every benchmark record
+    import json
+    import sys
+    sys.path.insert(0, os.path.join(ROOT, "bench"))
+    import accuracy
+    res = tmp_path / "results.json"
+    recs = [{"target": "avr1284", "scene": "wall", "method": "painter", "width": 128, "height": 64,
+             "format": "page1", "cycles_per_frame": 1},
+            {"target": "z80", "scene": "wall", "method": "painter", "width": 128, "height": 64,
+             "format": "page1", "cycles_per_frame": 2},
+            {"target": "host", "scene": "cube", "method": "cull", "format": "idx8"}]
+    res.write_text(json.dumps(recs))
+    accuracy.annotate(str(res))
+    out = json.loads(res.read_text())
+    for r in out:
+        for k in ("pixel_diff_pct", "depth_order_errors", "vertex_error_subpx_max", "psnr_db"):
+            assert k in r
+    assert out[0]["depth_order_errors"] == out[1]["depth_order_errors"] > 0   # the seed's painter failure
+    assert out[0]["pixels_total"] == 128 * 64 * len(M.FRAMES)                  # 1 bpp: raw counts
+    assert out[2]["depth_order_errors"] == 0 and "pixels_total" not in out[2]
