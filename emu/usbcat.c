@@ -11,7 +11,8 @@
  * libusb.h is not C89.  See docs/usb.md.
  *
  * Exit codes (the Python usb: source uses the same numbers):
- *   0 ok  1 other USB error  2 usage  3 no such device  4 permission denied
+ *   0 ok (also when the reader closes the pipe/pty)  1 other USB error
+ *   2 usage  3 no such device  4 permission denied
  *   5 interface busy  6 unplugged mid-stream  7 endpoint stalled
  *   8 timeout  9 cannot write the output
  * Bytes read before an error are always written out before the error is
@@ -94,7 +95,8 @@ static void usage(FILE *f)
 "  -q, --quiet         no summary line on stderr\n"
 "  -h, --help          this help\n"
 "\n"
-"exit codes: 0 ok, 1 other USB error, 2 usage, 3 no such device,\n"
+"exit codes: 0 ok (also when the reader of the pipe or pty closes it),\n"
+"  1 other USB error, 2 usage, 3 no such device,\n"
 "  4 permission denied, 5 interface busy, 6 device unplugged mid-stream,\n"
 "  7 endpoint stalled, 8 timeout, 9 cannot write the output.\n"
 "Bytes received before an error are written out before it is reported.\n"
@@ -406,7 +408,7 @@ int main(int argc, char **argv)
     libusb_device_handle *h = NULL;
     ssize_t n, i;
     int matches = 0, iface = -1, alt = 0, r, rc = EX_OK, outfd = 1;
-    int claimed = 0, detached = 0;
+    int claimed = 0, detached = 0, reader_gone = 0;
     long long total = 0;
     const char *spec = NULL;
     char ptypath[PATH_MAX];
@@ -635,8 +637,7 @@ int main(int argc, char **argv)
         if (o.pty) {
             pty_discard_input(outfd, 0);
             if (!pty_reader_present(outfd)) {
-                rc = fail(EX_OUTPUT, "cannot write the output: the reader closed %s after "
-                          "%lld bytes", ptypath, total);
+                reader_gone = 1;
                 break;
             }
         }
@@ -646,9 +647,8 @@ int main(int argc, char **argv)
             if (o.max_bytes && total + keep > o.max_bytes) keep = o.max_bytes - total;
             if ((o.pty ? pty_write_all(outfd, buf, (size_t)keep)
                        : write_all(outfd, buf, (size_t)keep)) != 0) {
-                if (o.pty && errno == EPIPE)
-                    rc = fail(EX_OUTPUT, "cannot write the output: the reader closed %s "
-                              "after %lld bytes", ptypath, total);
+                if (errno == EPIPE)     /* the reader is done: a normal end */
+                    reader_gone = 1;
                 else
                     rc = fail(EX_OUTPUT, "cannot write the output: %s", strerror(errno));
                 break;
@@ -685,11 +685,12 @@ int main(int argc, char **argv)
         }
         break;
     }
-    if (o.pty && outfd > 2 && rc != EX_OUTPUT)
+    if (o.pty && outfd > 2 && rc != EX_OUTPUT && !reader_gone)
         pty_drain(outfd, ptypath, o.linger);
     if (!quiet)
         fprintf(stderr, "%s: %lld bytes from %s in %.2f s%s\n", prog, total, o.spec,
-                now_s() - t0, stop_requested ? " (interrupted)" : "");
+                now_s() - t0, stop_requested ? " (interrupted)" :
+                reader_gone ? " (the reader closed the output)" : "");
 
 out:
     if (outfd > 2) close(outfd);

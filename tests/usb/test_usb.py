@@ -328,6 +328,29 @@ def test_usbcat_pty(bed, stream, clean):
     assert bytes(got) == data
 
 
+def test_usbcat_pty_reader_leaving_ends_cleanly(bed, stream, clean):
+    """A reader that takes 100 bytes and closes, while the board keeps
+    streaming: usbcat notices and ends with exit 0."""
+    ioctl, _, _ = clean
+    p, path = _usbcat_pty(bed, ioctl, 10 ** 6, "--gate", "100")   # never silent
+    try:
+        assert path.startswith("/dev/pts/"), (path, p.stderr.read())
+        fd = os.open(path, os.O_RDONLY | os.O_NOCTTY)
+        got = bytearray()
+        try:
+            while len(got) < 100:
+                got += os.read(fd, 100 - len(got))
+        finally:
+            os.close(fd)
+        assert p.wait(timeout=30) == 0
+        assert b"the reader closed the output" in p.stderr.read()
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+    assert bytes(got) == stream.read_bytes()[:100]
+
+
 def test_usbcat_pty_to_rast8_decode(bed, clean, reference, work):
     """rast8 decode over pyserial on the pty: rast8 sends a request once its
     port is open, which starts the stream (no byte lost to pyserial's flush)."""
