@@ -64,6 +64,14 @@ void r8_fb_span(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c);
 void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
                        r8_u8 s, r8_u8 base);
 
+/* The 4x4 ordered-dither pattern of level s on frame row y: a byte,
+ * MSB = pixel x % 8 == 0, period 4. */
+r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y);
+
+/* Page-layout run: n column bytes from p, bit mask m, 4-periodic
+ * pattern pat starting at phase ph (x & 3): the inner loop of page fills. */
+void r8_fb_page_run(r8_u8 *p, unsigned n, r8_u8 m, r8_u8 pat, r8_u8 ph);
+
 /* One pixel of shade level s through the same dither (8 bpp: base + s). */
 void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base);
 

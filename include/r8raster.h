@@ -94,6 +94,12 @@ r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
  * marks the polygon as a back face (s->backface) and ends it. */
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out);
 
+/* Scan rows < ylimit and fill every span with dither level `level` (no
+ * depth test): the same pixels as r8_scan_next + r8_fb_span_dither, in
+ * one loop (the fast path for cull-only and painter's with flat or
+ * Lambert shading).  fb's band must cover the rows scanned. */
+void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+
 /* Row of the first pixel centre at or below subpixel y: ceil((y-8)/16). */
 r8_s16 r8_row_of(r8_s16 y);
 

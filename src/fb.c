@@ -51,13 +51,12 @@ static r8_s16 band_rows(const r8_fb *fb)
 
 void r8_fb_clear(r8_fb *fb, r8_u8 c)
 {
-    unsigned n = r8_fb_bytes(fb->format, fb->width, fb->rows);
-    unsigned i;
+    r8_u8 *p = fb->buf, *end = p + r8_fb_bytes(fb->format, fb->width, fb->rows);
     r8_u8 v = c;
     if (fb->format != R8_FMT_IDX8)
         v = (r8_u8)(c ? 0xFF : 0x00);
-    for (i = 0; i < n; i++)
-        fb->buf[i] = v;
+    while (p < end)
+        *p++ = v;
 }
 
 void r8_fb_pixel(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 c)
@@ -111,7 +110,7 @@ static const r8_u8 bayer4[16] = {
 
 /* Byte pattern (MSB = leftmost, x = 0 mod 4 at bits 7 and 3) of shade
  * level s on frame row y. */
-static r8_u8 dither_row(r8_u8 s, r8_s16 y)
+r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y)
 {
     const r8_u8 *t = bayer4 + ((y & 3) << 2);
     r8_u8 p = 0;
@@ -155,33 +154,45 @@ static void row1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
     *p = (r8_u8)((*p & ~rm) | (pat & rm));
 }
 
-/* Page layout: one byte per pixel column; set or clear bit m for
- * pixels whose pattern bit (MSB-first per x%8) is set. */
-static void page1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
+void r8_fb_page_run(r8_u8 *p, unsigned n, r8_u8 m, r8_u8 pat, r8_u8 ph)
 {
-    r8_u8 *p = fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x0;
-    r8_u8 m = (r8_u8)(1u << (y & 7));
     r8_u8 nm = (r8_u8)~m;
-    r8_s16 x;
+    r8_u8 *e = p + n;
     if (pat == 0xFF) {
-        for (x = x0; x < x1; x++)
+        while (p < e)
             *p++ |= m;
     } else if (pat == 0) {
-        for (x = x0; x < x1; x++)
+        while (p < e)
             *p++ &= nm;
     } else {
-        r8_u8 bit = (r8_u8)(0x80u >> (x0 & 7));
-        for (x = x0; x < x1; x++) {
-            if (pat & bit)
-                *p |= m;
-            else
-                *p &= nm;
+        /* dither patterns repeat every 4 pixels: one ready-made bit per
+         * phase, four columns per step */
+        r8_u8 l0 = (r8_u8)(pat & 0x08 ? m : 0), l1 = (r8_u8)(pat & 0x04 ? m : 0);
+        r8_u8 l2 = (r8_u8)(pat & 0x02 ? m : 0), l3 = (r8_u8)(pat & 0x01 ? m : 0);
+        ph &= 3;
+        while (ph && p < e) {
+            *p = (r8_u8)((*p & nm) | (ph == 1 ? l1 : ph == 2 ? l2 : l3));
             p++;
-            bit >>= 1;
-            if (!bit)
-                bit = 0x80;
+            ph = (r8_u8)((ph + 1) & 3);
         }
+        while (e - p >= 4) {
+            p[0] = (r8_u8)((p[0] & nm) | l0);
+            p[1] = (r8_u8)((p[1] & nm) | l1);
+            p[2] = (r8_u8)((p[2] & nm) | l2);
+            p[3] = (r8_u8)((p[3] & nm) | l3);
+            p += 4;
+        }
+        if (p < e) *p = (r8_u8)((*p & nm) | l0), p++;
+        if (p < e) *p = (r8_u8)((*p & nm) | l1), p++;
+        if (p < e) *p = (r8_u8)((*p & nm) | l2);
     }
+}
+
+/* Page layout: one byte per pixel column, bit (row & 7). */
+static void page1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
+{
+    r8_fb_page_run(fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x0,
+                   (unsigned)(x1 - x0), (r8_u8)(1u << (y & 7)), pat, (r8_u8)(x0 & 3));
 }
 
 static void idx8_fill(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c)
@@ -215,7 +226,7 @@ void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
     r8_u8 pat;
     if (!clip_span(fb, y, &x0, &x1))
         return;
-    pat = dither_row(s, y);
+    pat = r8_fb_dither_row(s, y);
     y = (r8_s16)(y - fb->y0);
     switch (fb->format) {
     case R8_FMT_PAGE1:

@@ -8,8 +8,36 @@ void r8_interp_init(r8_interp *it, r8_s16 base, r8_s32 num0, r8_s32 step,
                     r8_u16 den)
 {
     r8_s32 d = den ? (r8_s32)den : 1;
-    r8_s32 q0 = r8_floordiv(num0, d);
-    r8_s32 qs = r8_floordiv(step, d);
+    r8_s32 q0, qs;
+    if (num0 > -32768L && num0 < 32768L && step > -32768L && step < 32768L) {
+        /* 16-bit floor division and remainder: several times cheaper on
+         * 8-bit targets (no product can overflow here) */
+        r8_u16 dd = (r8_u16)d, un, ur;
+        if (num0 >= 0) {
+            un = (r8_u16)num0;
+            it->val = r8_sat16((r8_s32)base + (r8_s32)(un / dd));
+            it->err = (r8_u16)(un % dd);
+        } else {
+            un = (r8_u16)(-(num0 + 1));            /* -num0 - 1 >= 0 */
+            ur = (r8_u16)(un % dd);
+            it->val = r8_sat16((r8_s32)base - (r8_s32)(un / dd) - 1);
+            it->err = (r8_u16)(dd - 1u - ur);
+        }
+        if (step >= 0) {
+            un = (r8_u16)step;
+            it->q = (r8_s16)(un / dd);
+            it->r = (r8_u16)(un % dd);
+        } else {
+            un = (r8_u16)(-(step + 1));
+            ur = (r8_u16)(un % dd);
+            it->q = (r8_s16)(-(r8_s16)(un / dd) - 1);
+            it->r = (r8_u16)(dd - 1u - ur);
+        }
+        it->den = dd;
+        return;
+    }
+    q0 = r8_floordiv(num0, d);
+    qs = r8_floordiv(step, d);
     it->den = (r8_u16)d;
     it->val = r8_sat16((r8_s32)base + q0);
     it->err = (r8_u16)(num0 - q0 * d);

@@ -55,6 +55,7 @@ typedef struct r8_state {
     r8_s32 dc1, dc2;    /* depth = dc1 / z - dc2 */
     r8_u16 nverts, nfaces, maxidx, nclip;
     r8_u8 attrs;        /* R8_ATTR_* the method and shading need */
+    r8_u8 need_depth;   /* vertex depth needed (all but cull only) */
     void *clipbuf;      /* r8_clip_bytes(): the clipper's two polygons */
     r8_objx *obj;
     r8_svert *sv;       /* nverts + nclip */

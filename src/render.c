@@ -252,6 +252,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     for (k = 0; k < (r8_u16)cfg->band && cfg->method == R8_VIS_SBUF; k++)
         st->shead[k] = 0xFFFF;
     st->attrs = 0;
+    st->need_depth = cfg->method != R8_VIS_CULL;   /* painter's keys use it too */
     if (cfg->method >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;
     if (cfg->shading == R8_SHADE_GOURAUD)
@@ -349,9 +350,12 @@ void r8_render_frame(r8_render *r, r8_u16 frame)
                 st->nidx = p->idx;   /* no pixel centre inside: drop it */
                 continue;
             }
-            for (k = 0; k < p->n; k++)
-                dsum += st->sv[st->idx[p->idx + k]].d;
-            p->key = (r8_u8)((dsum / p->n) >> 9);   /* 0..63, 0 = far */
+            if (r->cfg.method == R8_VIS_PAINTER) {
+                for (k = 0; k < p->n; k++)
+                    dsum += st->sv[st->idx[p->idx + k]].d;
+                /* mean depth >> 9: 0..63, 0 = far (16-bit division) */
+                p->key = (r8_u8)((r8_u16)(dsum >> 4) / p->n >> 5);
+            }
             if (r->cfg.shading == R8_SHADE_FLAT)
                 p->shade = fc->colour;
             else
@@ -400,6 +404,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
     int judd = r->cfg.cull == R8_CULL_JUDD;
+    /* no depth test and one level per face: the fused scan-and-fill loop */
+    int fast = (r->cfg.method == R8_VIS_CULL || r->cfg.method == R8_VIS_PAINTER) &&
+               !(st->attrs & R8_ATTR_S);
     unsigned i;
     r8_u16 k;
     if (y1 > fb->height)
@@ -434,8 +441,11 @@ void r8_render_band(r8_render *r, r8_fb *fb)
                 continue;
             }
         }
-        while (r8_scan_next(sc, y1, judd, &sp))
-            draw_span(st, r, fb, p, &sp);
+        if (fast)
+            r8_scan_fill(sc, y1, judd, fb, p->shade);
+        else
+            while (r8_scan_next(sc, y1, judd, &sp))
+                draw_span(st, r, fb, p, &sp);
         if (sc->y >= sc->ybot || sc->backface) {
             p->ybot = y0;         /* finished: never looked at again */
             if (p->slot != R8_NO_SLOT) {

@@ -18,13 +18,6 @@ r8_s16 r8_row_of(r8_s16 y)
     return (r8_s16)(v >= 0 ? v >> 4 : -((-v + 15) >> 4));
 }
 
-/* Pixel column of the first centre at or right of the edge. */
-static r8_s16 col_of(const r8_interp *x)
-{
-    r8_s32 v = (r8_s32)x->val + (x->err != 0) + 7;
-    return (r8_s16)(v >= 0 ? v >> 4 : -((-v + 15) >> 4));
-}
-
 static r8_u8 wrap(const r8_scan *s, r8_u8 i, int dir)
 {
     if (dir > 0)
@@ -118,42 +111,108 @@ static void edge_step(const r8_scan *s, r8_edge *e)
         R8_INTERP_STEP(&e->s);
 }
 
+/* Column of the first pixel centre at or right of edge x (16-bit: edge x
+ * stays inside the guard band). */
+#define COL_OF(it, c) do { r8_s16 v_ = (it).val; \
+    if (v_ > 32700) c = 2044; else { v_ = (r8_s16)(v_ + 7 + ((it).err != 0)); \
+    c = (r8_s16)(v_ >= 0 ? v_ >> 4 : -((-v_ + 15) >> 4)); } } while (0)
+
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
 {
-    while (s->y < s->ybot && s->y < ylimit) {
+    r8_edge *l = &s->l, *r = &s->r;
+    r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+    r8_u8 attrs = s->attrs;
+    while (s->y < lim) {
         r8_s16 y = s->y, xl, xr;
-        if (y >= s->l.yend)
-            edge_start(s, &s->l, s->l.vi, -1, y);
-        if (y >= s->r.yend)
-            edge_start(s, &s->r, s->r.vi, 1, y);
+        if (y >= l->yend)
+            edge_start(s, l, l->vi, -1, y);
+        if (y >= r->yend)
+            edge_start(s, r, r->vi, 1, y);
         /* Judd: decided on the first row where the edges differ by a
          * subpixel, before any pixel of the polygon is drawn */
-        if (judd && !s->front && s->l.x.val != s->r.x.val) {
-            if (s->l.x.val > s->r.x.val) {
+        if (judd && !s->front && l->x.val != r->x.val) {
+            if (l->x.val > r->x.val) {
                 s->backface = 1;
                 s->y = s->ybot;
                 return 0;
             }
             s->front = 1;
         }
-        xl = col_of(&s->l.x);
-        xr = col_of(&s->r.x);
+        COL_OF(l->x, xl);
+        COL_OF(r->x, xr);
+        s->y = (r8_s16)(y + 1);
         if (xl < xr) {
             out->y = y;
             out->x0 = xl;
             out->x1 = xr;
-            out->dl = s->l.d.val;
-            out->dr = s->r.d.val;
-            out->sl = s->l.s.val;
-            out->sr = s->r.s.val;
-        }
-        edge_step(s, &s->l);
-        edge_step(s, &s->r);
-        s->y++;
-        if (xl < xr)
+            if (attrs) {
+                out->dl = l->d.val;
+                out->dr = r->d.val;
+                out->sl = l->s.val;
+                out->sr = r->s.val;
+                edge_step(s, l);
+                edge_step(s, r);
+            } else {
+                R8_INTERP_STEP(&l->x);
+                R8_INTERP_STEP(&r->x);
+            }
             return 1;
+        }
+        if (attrs) {
+            edge_step(s, l);
+            edge_step(s, r);
+        } else {
+            R8_INTERP_STEP(&l->x);
+            R8_INTERP_STEP(&r->x);
+        }
     }
     return 0;
+}
+
+void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+{
+    r8_edge *l = &s->l, *r = &s->r;
+    r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+    r8_s16 w = fb->width, y = s->y;
+    if (s->attrs || fb->format != R8_FMT_PAGE1) {
+        /* general case: one span at a time */
+        r8_span sp;
+        while (r8_scan_next(s, ylimit, judd, &sp))
+            r8_fb_span_dither(fb, sp.y, sp.x0, sp.x1, level, 0);
+        return;
+    }
+    for (; y < lim; y++) {
+        r8_s16 xl, xr;
+        if (y >= l->yend)
+            edge_start(s, l, l->vi, -1, y);
+        if (y >= r->yend)
+            edge_start(s, r, r->vi, 1, y);
+        if (judd && !s->front && l->x.val != r->x.val) {
+            if (l->x.val > r->x.val) {
+                s->backface = 1;
+                s->y = s->ybot;
+                return;
+            }
+            s->front = 1;
+        }
+        COL_OF(l->x, xl);
+        COL_OF(r->x, xr);
+        R8_INTERP_STEP(&l->x);
+        R8_INTERP_STEP(&r->x);
+        if (xl < 0)
+            xl = 0;
+        if (xr > w)
+            xr = w;
+        if (xl < xr && y >= fb->y0) {
+            /* SSD1306 page: one byte per column, bit (row & 7) */
+            r8_s16 by = (r8_s16)(y - fb->y0);
+            r8_fb_page_run(fb->buf + (unsigned)(by >> 3) * (unsigned)w + (unsigned)xl,
+                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)),
+                           level >= 16 ? 0xFF : level == 0 ? 0 : r8_fb_dither_row(level, y),
+                           (r8_u8)(xl & 3));
+        }
+    }
+    s->y = y;
 }
 
 r8_s32 r8_fill_poly(r8_fb *fb, const r8_svert *v, const r8_u16 *idx,

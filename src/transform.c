@@ -98,7 +98,7 @@ void r8_tf_vertices(r8_state *st)
                 if (s->x >= wsub) out |= R8_OUT_RIGHT;
                 if (s->y < 0) out |= R8_OUT_TOP;
                 if (s->y >= hsub) out |= R8_OUT_BOTTOM;
-                s->d = r8_tf_depth(st, c.z);
+                s->d = st->need_depth ? r8_tf_depth(st, c.z) : 0;
             }
             s->s = 0;
             if (st->attrs & R8_ATTR_S)
