@@ -39,6 +39,8 @@ r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
 /* (a * b) >> frac, rounded to nearest (ties away from zero), saturated
  * to r8_s16.  r8_mulq(a, b, 8) is the Q8.8 multiply, 14 the Q1.14 one. */
 r8_s16 r8_mulq(r8_s16 a, r8_s16 b, r8_u8 frac);
+/* floor(v / 2^14), the Q1.14 shift, fast on 8-bit CPUs. */
+r8_s32 r8_asr14(r8_s32 v);
 /* floor(v / 2^n) for any sign (an arithmetic shift, portably). */
 r8_s32 r8_asr32(r8_s32 v, r8_u8 n);
 /* floor(n / d), d > 0, for any sign of n. */

@@ -9,6 +9,15 @@ r8_s32 r8_mul16(r8_s16 a, r8_s16 b)
     return p;
 }
 
+r8_s32 r8_asr14(r8_s32 v)
+{
+    /* floor(v / 2^14) from byte moves and short shifts: no 14-step
+     * 32-bit shift loop on 8-bit CPUs */
+    r8_s32 w = v >= 0 ? v : ~v;   /* ~v = -v - 1 >= 0 */
+    w = ((w >> 16) << 2) | (r8_u8)((r8_u8)(w >> 8) >> 6);
+    return v >= 0 ? w : ~w;
+}
+
 r8_s32 r8_asr32(r8_s32 v, r8_u8 n)
 {
     if (v >= 0)
@@ -45,7 +54,7 @@ r8_s32 r8_floordiv(r8_s32 n, r8_s32 d)
 
 r8_s32 r8_divround(r8_s32 n, r8_s32 d)
 {
-    r8_u32 un, ud, q;
+    r8_u32 un, ud, q, r;
     int neg = 0;
     if (n < 0) {
         un = (r8_u32)(-(n + 1)) + 1u;
@@ -60,7 +69,8 @@ r8_s32 r8_divround(r8_s32 n, r8_s32 d)
         ud = (r8_u32)d;
     }
     q = un / ud;
-    if (un - q * ud >= ud - (un - q * ud))
+    r = un % ud;               /* one division routine gives both */
+    if (r >= ud - r)
         q++;
     if (q > 0x7FFFFFFFUL)
         q = neg ? 0x80000000UL : 0x7FFFFFFFUL;
@@ -230,28 +240,28 @@ void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c)
             r8_s32 s = r8_mul16(a->m[i * 3], b->m[j]) +
                        r8_mul16(a->m[i * 3 + 1], b->m[3 + j]) +
                        r8_mul16(a->m[i * 3 + 2], b->m[6 + j]);
-            c->m[i * 3 + j] = r8_sat16(r8_asr32(s + 8192, 14));
+            c->m[i * 3 + j] = r8_sat16(r8_asr14(s + 8192));
         }
 }
 
 void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
 {
-    out->x = r8_asr32(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[1], v->y) +
-                      r8_mul16(m->m[2], v->z) + 8192, 14);
-    out->y = r8_asr32(r8_mul16(m->m[3], v->x) + r8_mul16(m->m[4], v->y) +
-                      r8_mul16(m->m[5], v->z) + 8192, 14);
-    out->z = r8_asr32(r8_mul16(m->m[6], v->x) + r8_mul16(m->m[7], v->y) +
-                      r8_mul16(m->m[8], v->z) + 8192, 14);
+    out->x = r8_asr14(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[1], v->y) +
+                      r8_mul16(m->m[2], v->z) + 8192);
+    out->y = r8_asr14(r8_mul16(m->m[3], v->x) + r8_mul16(m->m[4], v->y) +
+                      r8_mul16(m->m[5], v->z) + 8192);
+    out->z = r8_asr14(r8_mul16(m->m[6], v->x) + r8_mul16(m->m[7], v->y) +
+                      r8_mul16(m->m[8], v->z) + 8192);
 }
 
 void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out)
 {
-    out->x = r8_sat16(r8_asr32(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[3], v->y) +
-                               r8_mul16(m->m[6], v->z) + 8192, 14));
-    out->y = r8_sat16(r8_asr32(r8_mul16(m->m[1], v->x) + r8_mul16(m->m[4], v->y) +
-                               r8_mul16(m->m[7], v->z) + 8192, 14));
-    out->z = r8_sat16(r8_asr32(r8_mul16(m->m[2], v->x) + r8_mul16(m->m[5], v->y) +
-                               r8_mul16(m->m[8], v->z) + 8192, 14));
+    out->x = r8_sat16(r8_asr14(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[3], v->y) +
+                               r8_mul16(m->m[6], v->z) + 8192));
+    out->y = r8_sat16(r8_asr14(r8_mul16(m->m[1], v->x) + r8_mul16(m->m[4], v->y) +
+                               r8_mul16(m->m[7], v->z) + 8192));
+    out->z = r8_sat16(r8_asr14(r8_mul16(m->m[2], v->x) + r8_mul16(m->m[5], v->y) +
+                               r8_mul16(m->m[8], v->z) + 8192));
 }
 
 void r8_camera_init(r8_camera *c, r8_s16 width, r8_s16 height, r8_s16 focal,

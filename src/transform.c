@@ -22,12 +22,12 @@ void r8_tf_objects(r8_state *st, r8_u16 frame)
         p.x = (r8_s16)-ob->x;
         p.y = (r8_s16)-ob->y;
         p.z = (r8_s16)-ob->z;
-        o->eye.x = r8_asr32(r8_mul16(o->m.m[0], p.x) + r8_mul16(o->m.m[3], p.y) +
-                            r8_mul16(o->m.m[6], p.z) + 8192, 14);
-        o->eye.y = r8_asr32(r8_mul16(o->m.m[1], p.x) + r8_mul16(o->m.m[4], p.y) +
-                            r8_mul16(o->m.m[7], p.z) + 8192, 14);
-        o->eye.z = r8_asr32(r8_mul16(o->m.m[2], p.x) + r8_mul16(o->m.m[5], p.y) +
-                            r8_mul16(o->m.m[8], p.z) + 8192, 14);
+        o->eye.x = r8_asr14(r8_mul16(o->m.m[0], p.x) + r8_mul16(o->m.m[3], p.y) +
+                            r8_mul16(o->m.m[6], p.z) + 8192);
+        o->eye.y = r8_asr14(r8_mul16(o->m.m[1], p.x) + r8_mul16(o->m.m[4], p.y) +
+                            r8_mul16(o->m.m[7], p.z) + 8192);
+        o->eye.z = r8_asr14(r8_mul16(o->m.m[2], p.x) + r8_mul16(o->m.m[5], p.y) +
+                            r8_mul16(o->m.m[8], p.z) + 8192);
     }
 }
 
@@ -50,14 +50,14 @@ r8_s16 r8_tf_depth(const r8_state *st, r8_s32 z)
 r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light,
                    r8_u8 colour)
 {
-    r8_s32 i = r8_asr32(r8_dot3(n, light), 14);   /* Q1.14 cosine */
+    r8_s32 i = r8_asr14(r8_dot3(n, light));   /* Q1.14 cosine */
     r8_s32 amb = st->scene->ambient, k;
     if (i < 0)
         i = 0;
     if (i > R8_ONE14)
         i = R8_ONE14;
-    k = amb + r8_asr32((R8_ONE14 - amb) * i, 14);  /* Q1.14 intensity */
-    return (r8_s16)r8_asr32(k * ((r8_s32)colour << 8) + 8192, 14);
+    k = amb + r8_asr14((R8_ONE14 - amb) * i);  /* Q1.14 intensity */
+    return (r8_s16)r8_asr14(k * ((r8_s32)colour << 8) + 8192);
 }
 
 void r8_tf_vertices(r8_state *st)

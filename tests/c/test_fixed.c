@@ -33,6 +33,14 @@ static void test_mulq_rounding_and_saturation(void)
 
 static void test_shift_and_division(void)
 {
+    static const long vals[] = {0, 1, -1, 16383, 16384, -16384, -16385, 1073741823L,
+                                -1073741824L, 2147483647L, -2147483647L - 1, 123456789L, -98765432L};
+    unsigned i;
+    for (i = 0; i < sizeof vals / sizeof vals[0]; i++)
+        TEST_ASSERT_EQUAL_INT32(r8_asr32(vals[i], 14), r8_asr14(vals[i]));
+    TEST_ASSERT_EQUAL_INT32(-1, r8_asr14(-1));
+    TEST_ASSERT_EQUAL_INT32(131071L, r8_asr14(2147483647L));
+    TEST_ASSERT_EQUAL_INT32(-131072L, r8_asr14(-2147483647L - 1));
     TEST_ASSERT_EQUAL_INT32(-4, r8_asr32(-7, 1));
     TEST_ASSERT_EQUAL_INT32(-1, r8_asr32(-1, 14));
     TEST_ASSERT_EQUAL_INT32(3, r8_asr32(7, 1));
