@@ -12,6 +12,8 @@ Per frame, both rendered at the same size and format:
     face the reference shows there (a wrong surface, not a shifted edge);
 - vertex error: the largest |C 12.4 projection - 16 * float projection|
   over the vertices in front of the near plane, in subpixels;
+- error: pixel_diff or depth order (a hidden surface of the same shade
+  is still wrong): the charts' error axis;
 - PSNR: 10 log10(peak^2 / MSE), peak 16 for levels and 1 for bits; 100 dB
   stands for identical frames;
 - 1 bpp: raw counts of wrong, C-lit and reference-lit pixels as well.
@@ -64,11 +66,11 @@ def probe(scene, method, shading="lambert", fmt="idx8", width=128, height=64,
     return pix, ids, verts
 
 
-def depth_order_errors(ref, cids):
+def depth_order_mask(ref, cids):
     """Pixels where C shows face A, the reference shows face B != A, and A
     covers the pixel in the reference but is farther than B there."""
     both = (cids >= 0) & (ref.fid >= 0) & (cids != ref.fid)
-    n = 0
+    out = np.zeros(cids.shape, bool)
     for a in np.unique(cids[both]):
         sel = both & (cids == a)
         rr, cc = np.nonzero(sel)
@@ -78,8 +80,13 @@ def depth_order_errors(ref, cids):
             continue
         za = ref.depth_at(int(a), px, py)
         zb = ref.z[rr, cc]
-        n += int(np.sum(cov & (za > zb * (1 + 1e-9) + 1e-9)))
-    return n
+        bad = cov & (za > zb * (1 + 1e-9) + 1e-9)
+        out[rr[bad], cc[bad]] = True
+    return out
+
+
+def depth_order_errors(ref, cids):
+    return int(depth_order_mask(ref, cids).sum())
 
 
 def vertex_error(sc, ref, frame, verts):
@@ -103,6 +110,7 @@ def compare_frame(ref, cpix, cids, fmt):
     ccov, rcov = cids >= 0, ref.fid >= 0
     cov = ccov != rcov
     shade = ccov & rcov & (cids == ref.fid) & diff
+    dmask = depth_order_mask(ref, cids)
     peak = 16.0 if fmt == "idx8" else 1.0
     se = float(np.sum((cpix.astype(float) - rpix) ** 2))
     return {
@@ -111,7 +119,8 @@ def compare_frame(ref, cpix, cids, fmt):
         "coverage_wrong": int(cov.sum()),
         "shade_wrong": int(shade.sum()),
         "surface_wrong": int((ccov & rcov & (cids != ref.fid)).sum()),
-        "depth_order_errors": depth_order_errors(ref, cids),
+        "depth_order_errors": int(dmask.sum()),
+        "any_wrong": int((diff | dmask).sum()),
         "sq_err": se,
         "peak": peak,
         "pixels_lit_c": int((cpix != 0).sum()),
@@ -146,6 +155,7 @@ def measure(scene, method, shading="lambert", fmt="idx8", width=128, height=64,
     n = tot["pixels"]
     out = {
         "pixel_diff_pct": round(100.0 * tot["pixels_wrong"] / n, 4),
+        "error_pct": round(100.0 * tot["any_wrong"] / n, 4),
         "coverage_diff_pct": round(100.0 * tot["coverage_wrong"] / n, 4),
         "shade_diff_pct": round(100.0 * tot["shade_wrong"] / n, 4),
         "surface_diff_pct": round(100.0 * tot["surface_wrong"] / n, 4),
