@@ -21,7 +21,8 @@
 #define GB 0x5A
 
 static r8_u8 work[65536 + GUARD];
-static r8_u8 bandmem[W * H + GUARD];
+#define WW 1024   /* the widest frame the renderer takes: 1024-pixel spans */
+static r8_u8 bandmem[WW * 8 + W * H + GUARD];
 static r8_u8 ref[W * H], img[W * H], tmp[W * H];
 static unsigned last_dropped;
 
@@ -48,7 +49,8 @@ static void render(const r8_render_cfg *cfg, r8_u16 frame, r8_u8 *out)
         if (y + rows > cfg->height)
             rows = (r8_s16)(cfg->height - y);
         for (yy = 0; yy < rows; yy++)
-            memcpy(out + (unsigned)(y + yy) * W, bandmem + (unsigned)yy * W, W);
+            memcpy(out + (unsigned)(y + yy) * (unsigned)cfg->width, bandmem + (unsigned)yy * (unsigned)cfg->width,
+                   (size_t)cfg->width);
     }
     for (i = need; i < need + GUARD; i++)
         TEST_ASSERT_EQUAL_HEX8(GB, work[i]);
@@ -397,6 +399,52 @@ static void test_far_beyond_screen(void)
         }
 }
 
+/* 1024-pixel spans (the widest frame): the X scene at 1024x64, where
+ * every row is one or two spans up to 1024 px long.  The z-buffers step
+ * depth with the exact interpolator (no drift); the S-buffer steps 16.16
+ * depth and 8.8 shade per pixel.  Bound: away from the crossing the
+ * S-buffer's Gouraud levels stay within 1 of the 16-bit z-buffer's over
+ * the whole 1024 px (no drift); pixels off by more (a different surface)
+ * only where the quads' depths tie within 15-bit rounding: at most 12 per
+ * row (measured 8 where the crossing runs nearly along a row) and 150 in
+ * all (measured 113) over 8 frames. */
+static r8_u8 wref[WW * H], wimg[WW * H];
+
+static void test_1024_pixel_spans(void)
+{
+    r8_u16 fr;
+    long worst = 0, off1 = 0, total = 0;
+    for (fr = 0; fr < 64; fr = (r8_u16)(fr + 9)) {
+        r8_render_cfg c;
+        int k, y;
+        cfg_for(&c, &x_scene, R8_VIS_Z16, R8_SHADE_GOURAUD);
+        c.width = WW;
+        render(&c, fr, wref);
+        cfg_for(&c, &x_scene, R8_VIS_SBUF, R8_SHADE_GOURAUD);
+        c.width = WW;
+        render(&c, fr, wimg);
+        for (y = 0; y < H; y++) {
+            long d = 0;
+            for (k = y * WW; k < (y + 1) * WW; k++) {
+                int a = wimg[k], b = wref[k];
+                if ((a == 0) != (b == 0) || a > b + 1 || b > a + 1) {
+                    d++;
+                    if (getenv("R8_DEBUG"))
+                        printf("fr %u y %d x %d sbuf %d z16 %d\n", fr, y, k - y * WW, a, b);
+                }
+                off1 += a != b;
+            }
+            if (d > worst)
+                worst = d;
+            total += d;
+        }
+    }
+    TEST_ASSERT_LESS_OR_EQUAL(12, worst);
+    TEST_ASSERT_LESS_OR_EQUAL(150, total);
+    printf("1024-px spans: S-buffer off by > 1 level (surface): worst %ld px/row, %ld px; %ld px differ at all\n",
+           worst, total, off1);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -407,5 +455,6 @@ int main(void)
     RUN_TEST(test_huge_floor);
     RUN_TEST(test_cross_product_overflow);
     RUN_TEST(test_far_beyond_screen);
+    RUN_TEST(test_1024_pixel_spans);
     return UNITY_END();
 }
