@@ -49,7 +49,8 @@ static void edge_start(r8_scan *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
     if (dy > 32767) {
         /* Edges over 2047 pixels tall (only reachable by direct callers;
          * the renderer's guard band keeps edges under 1800): measure in
-         * half-subpixels, exact to within one subpixel. */
+         * half-subpixels: rows stay exact to a subpixel, x can be off by
+         * up to 3 subpixels (measured, tests/host/test_stability.c). */
         dy = (dy + 1) >> 1;
         s0 >>= 1;
         sh = 1;
