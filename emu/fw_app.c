@@ -1,0 +1,60 @@
+/* fw_app.c - the demo firmware's main on every target: emu/app.c's loop
+ * over a static arena sized for this scene and method on this target.
+ *   FW_SCENE, FW_METHOD  R8_SCENE_*, R8_VIS_*               (default 0, 0)
+ *   FW_FRAMES            frames to stream                   (default 4)
+ *   FW_RAM               app_ram(cfg) measured on the target by
+ *                        fw_sizes.c (mk/targets.mk passes it in)
+ * FW_HOST builds the host reference instead: scene, method and frames
+ * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
+ * emu/fw_plat_host.c (stdout). */
+#include "plat.h"
+#include "app.h"
+
+#ifndef FW_SCENE
+#define FW_SCENE 0
+#endif
+#ifndef FW_METHOD
+#define FW_METHOD 0
+#endif
+#ifndef FW_FRAMES
+#define FW_FRAMES 4
+#endif
+
+static app_cfg cfg;
+
+#ifdef FW_HOST
+#include <stdlib.h>
+static r8_u8 mem[1L << 20];
+
+int main(int argc, char **argv)
+{
+    unsigned need;
+    plat_init();
+    app_defaults(&cfg);
+    cfg.render.scene = (r8_u8)(argc > 1 ? atoi(argv[1]) : FW_SCENE);
+    cfg.render.method = (r8_u8)(argc > 2 ? atoi(argv[2]) : FW_METHOD);
+    cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
+    need = app_ram(&cfg);
+    if (need == 0 || need > sizeof mem)
+        plat_exit(APP_E_CFG);
+    plat_exit(app_run(&cfg, mem, need));
+    return 0;
+}
+#else
+#include "fw_trim.c"
+#ifndef FW_RAM
+#define FW_RAM 1
+#endif
+static r8_u8 mem[FW_RAM];
+
+int main(void)
+{
+    plat_init();
+    app_defaults(&cfg);
+    cfg.render.scene = FW_SCENE;
+    cfg.render.method = FW_METHOD;
+    cfg.frames = FW_FRAMES;
+    plat_exit(app_run(&cfg, mem, sizeof mem));
+    return 0;
+}
+#endif

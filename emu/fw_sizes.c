@@ -1,0 +1,66 @@
+/* fw_sizes.c - prints, on the target itself, the memory every scene x
+ * method needs there (sizeof differs between host and targets):
+ *   "S M BYTES\n" per combination, then "END\n"; with -DFW_SCENE=S only
+ *   scene S (the build links only that scene's data).
+ * BYTES is app_ram(cfg) for app_defaults + scene + method (FW_HAVE_APP),
+ * else r8_render_ram(cfg) for the defaults.  The firmware builds size
+ * their static arena from these lines. */
+#include "plat.h"
+#include "r8render.h"
+#ifdef FW_HAVE_APP
+#include "app.h"
+static app_cfg acfg;
+#include "fw_trim.c"   /* sizing renders nothing: no LZ77, no S-buffer */
+#endif
+
+static void put_u(unsigned v)
+{
+    char d[6];
+    int n = 0;
+    do {
+        d[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v);
+    while (n)
+        plat_putc((r8_u8)d[--n]);
+}
+
+#ifndef FW_HAVE_APP
+static r8_render_cfg cfg;
+#endif
+
+int main(void)
+{
+    r8_u8 s, m;
+    plat_init();
+#ifdef FW_SCENE
+    /* linked with one scene's table (emu/scene_strip.py): that scene only */
+    for (s = FW_SCENE; s == FW_SCENE; s++)
+#else
+    for (s = 0; s < R8_SCENE_COUNT; s++)
+#endif
+        for (m = 0; m < R8_VIS_COUNT; m++) {
+            put_u(s);
+            plat_putc(' ');
+            put_u(m);
+            plat_putc(' ');
+#ifdef FW_HAVE_APP
+            app_defaults(&acfg);
+            acfg.render.scene = s;
+            acfg.render.method = m;
+            put_u(app_ram(&acfg));
+#else
+            r8_render_defaults(&cfg);
+            cfg.scene = s;
+            cfg.method = m;
+            put_u(r8_render_ram(&cfg) + R8_FB_PAGE1_BYTES(128, 8));
+#endif
+            plat_putc('\n');
+        }
+    plat_putc('E');
+    plat_putc('N');
+    plat_putc('D');
+    plat_putc('\n');
+    plat_exit(0);
+    return 0;
+}

@@ -1,0 +1,192 @@
+# mk/targets.mk - cross builds for AVR (ATmega328P, ATmega1284P), 6502
+# (cc65 / sim65) and Z80 (sdcc / ucsim sz80), the simulator runners, the
+# C unit tests inside each simulator, the firmware bit-identity tests and
+# `make bench`.
+#
+#   make xtargets   runners, target libraries, per-target sizes, unit tests
+#   make fw         every firmware build the identity tests use
+#   make bench      build/bench/results.json + docs/benchmarks.md
+#
+# Under build/x/<target>/ (target = avr328 avr1284 6502 z80):
+#   obj/            library objects (src/*.c, emu/app.c), plat, scene_S
+#   librast8.a / rast8.lib   the library archive
+#   sizes.txt       "scene method bytes": app_ram() measured on the target
+#                   (emu/fw_sizes.c, one program per scene)
+#   fw/fw-S-M-F.*   firmware for scene S, method M, F frames, with a static
+#                   arena of exactly app_ram() bytes (emu/fw_app.c)
+#   tests/test_x.*  tests/c/test_x.c + tests/unity + the library
+# Programs are linked by emu/xbuild.sh; one that does not fit its target
+# becomes a one-line "SKIP: reason" file, which the runners report.
+# Every firmware links build/x/scenes/scene_S.c (emu/scene_strip.py): the
+# scene table with only its own scene's meshes.
+
+XB       := $(BUILD)/x
+AVRSIM   := $(BUILD)/emu/avrsim
+FWHOST   := $(BUILD)/emu/fw-host
+XTARGETS := avr328 avr1284 6502 z80
+XHDRS    := $(wildcard include/*.h src/*.h) emu/plat.h $(wildcard emu/app.h)
+XSCENES  := 0 1 2 3 4 5 6
+
+# The library as the targets see it: src/*.c plus emu/app.c.  The
+# firmware main is emu/fw_app.c (app_run over a static arena).
+XLIB_SRC   := $(LIB_SRC) $(wildcard emu/app.c)
+FW_SRC     := emu/fw_app.c
+FW_DEFS    := -DFW_HAVE_APP
+XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
+
+AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
+              -ffunction-sections -fdata-sections $(INC) -Iemu
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) -Iemu
+Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) -Iemu
+XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
+MCU_avr328  := atmega328p
+MCU_avr1284 := atmega1284p
+EXT_avr328  := elf
+EXT_avr1284 := elf
+EXT_6502    := prg
+EXT_z80     := ihx
+OBJ_avr328  := o
+OBJ_avr1284 := o
+OBJ_6502    := o
+OBJ_z80     := rel
+LIBA_avr328  := librast8.a
+LIBA_avr1284 := librast8.a
+LIBA_6502    := rast8.lib
+LIBA_z80     := rast8.lib
+PLAT_avr328  := plat_avr
+PLAT_avr1284 := plat_avr
+PLAT_6502    := plat_sim65
+PLAT_z80     := plat_z80
+
+# ---- the libsimavr runner and the host reference firmware
+$(AVRSIM): emu/avrsim.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
+
+$(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(XHDRS)
+	@mkdir -p $(dir $@)
+	$(CC) $(STRICT) -O2 -g $(INC) -Iemu -DFW_HOST $(FW_DEFS) -o $@ $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC)
+
+# ---- one scene's table (target independent)
+$(XB)/scenes/scene_%.c: src/scene_data.c emu/scene_strip.py
+	@mkdir -p $(dir $@)
+	python3 emu/scene_strip.py $* $< > $@
+
+# ---- compile rules per target (library, plat, unity, scene tables)
+define AVR_OBJ
+$(XB)/$(1)/obj/%.o: src/%.c $(XHDRS)
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
+$(XB)/$(1)/obj/%.o: emu/%.c $(XHDRS)
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
+$(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
+$(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -Itests/unity -c $$< -o $$@
+$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o)
+	rm -f $$@ && avr-ar rcs $$@ $$^
+endef
+$(eval $(call AVR_OBJ,avr328))
+$(eval $(call AVR_OBJ,avr1284))
+
+$(XB)/6502/obj/%.o: src/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
+$(XB)/6502/obj/%.o: emu/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
+$(XB)/6502/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
+$(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
+	@mkdir -p $(dir $@)
+	bash emu/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
+$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
+	rm -f $@ && ar65 a $@ $^
+
+$(XB)/z80/obj/%.rel: src/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/sdcc.sh $(Z80_CFLAGS) --Werror -c -o $@ $<
+$(XB)/z80/obj/%.rel: emu/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
+$(XB)/z80/obj/%.rel: $(XB)/scenes/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash emu/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
+$(XB)/z80/obj/%.rel: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
+	@mkdir -p $(dir $@)
+	bash emu/sdcc.sh $(Z80_CFLAGS) -Itests/unity -c -o $@ $<
+$(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel)
+	rm -f $@ && sdar -rc $@ $^
+
+# ---- programs per target: sizes, firmware, unit tests
+# $(1) target.  Sizes come from the 1284P for both AVRs (same ABI; the
+# 328P cannot hold every scene's sizer).
+XSIZES_avr328  := $(XB)/avr1284/sizes.txt
+XSIZES_avr1284 := $(XB)/avr1284/sizes.txt
+XSIZES_6502    := $(XB)/6502/sizes.txt
+XSIZES_z80     := $(XB)/z80/sizes.txt
+define XPROG
+XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) emu/xbuild.sh
+XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))
+
+$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): emu/fw_sizes.c emu/fw_trim.c $(XB)/$(1)/obj/scene_%.$(OBJ_$(1)) $$(XDEPS_$(1))
+	@mkdir -p $$(dir $$@)
+	$(XENV) bash emu/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$*.$(OBJ_$(1)) -- $(FW_DEFS) -DFW_SCENE=$$* -Isrc -DFW_TRIM_LZ77 -DFW_TRIM_SBUF
+
+$(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) emu/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) emu/fwdefs.sh
+	@mkdir -p $$(dir $$@)
+	$(XENV) bash emu/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
+	  -- $(FW_DEFS) $$$$(bash emu/fwdefs.sh $$* $(XSIZES_$(1)))
+
+$(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh emu/xbuild.sh
+	@mkdir -p $$(dir $$@)
+	@bash tests/targets/wrap.sh $$< > $$(basename $$@).wrap.c
+	$(XENV) bash emu/xbuild.sh $(1) $$@ $$(basename $$@).wrap.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) \
+	  -- -Itests/unity -Itests/c $(if $(findstring 6502,$(1)),-W -error)
+endef
+$(foreach t,$(XTARGETS),$(eval $(call XPROG,$(t))))
+
+# sizes.txt: every scene's sizer run on the target; a scene whose sizer
+# does not fit gets "S M 0" lines (the identity test skips it, with why).
+XSZ = $(XSCENES:%=$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)))
+$(XB)/avr1284/sizes.txt: $(call XSZ,avr1284) $(AVRSIM) tests/targets/sizes.sh
+	bash tests/targets/sizes.sh avr1284 $@ $(call XSZ,avr1284)
+$(XB)/6502/sizes.txt: $(call XSZ,6502) tests/targets/sizes.sh
+	bash tests/targets/sizes.sh 6502 $@ $(call XSZ,6502)
+$(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
+	bash tests/targets/sizes.sh z80 $@ $(call XSZ,z80)
+
+# ---- test steps
+XT_NAMES   := $(TEST_C:tests/c/%.c=%)
+XT_avr1284 := $(XT_NAMES:%=$(XB)/avr1284/tests/%.elf)
+XT_6502    := $(XT_NAMES:%=$(XB)/6502/tests/%.prg)
+XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
+XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
+
+.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
+xtargets: $(XREADY) $(XT_avr1284) $(XT_6502) $(XT_z80)
+
+# Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
+xtest-avr:
+	@bash scripts/run-step.sh xunit-avr1284 bash tests/targets/unit.sh avr1284 $(XT_avr1284)
+xtest-6502:
+	@bash scripts/run-step.sh xunit-6502 bash tests/targets/unit.sh 6502 $(XT_6502)
+xtest-z80:
+	@bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
+
+# Bit identity: every scene x method that fits, per target, vs the host.
+xident-%:
+	@bash scripts/run-step.sh xident-$* $(PY) tests/targets/identity.py $*
+
+fw: $(XREADY)
+	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
+
+TEST_STEPS += xtest-avr xident-avr1284
+
+# ---- benchmark
+bench: $(SETUP)
+	$(PY) bench/bench.py

@@ -1,0 +1,249 @@
+#!/usr/bin/env python3
+"""identity.py TARGET... - firmware bit identity: every built-in scene x
+visibility method, on each target, streams the same UART bytes as the host.
+
+    identity.py [--frames F] [--build-only] TARGET...     (avr328 avr1284 6502 z80)
+
+For each scene S and method M the target firmware build/x/T/fw/fw-S-M-F.*
+(emu/fw_app.c with a static arena of app_ram() bytes measured on the
+target) runs in its simulator and its stream is compared byte for byte
+with the host build of the same main (build/emu/fw-host S M F), and with
+build/rast8-emu --scene --method --frames when that exists.  A
+combination is skipped only with a printed reason: app_ram() is 0 there,
+it does not fit the target (flash, static RAM, 64 KB address space), or,
+on the 2 KB ATmega328P, app_ram() plus the measured statics and stack
+exceed 2048 bytes.  The 328P cube is mandatory: cull and at least one
+real depth method must fit and pass.  Prints one line per combination and
+"N passed, N failed" (skips are listed and counted, never passed).
+"""
+import argparse
+import concurrent.futures as cf
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+XB = os.path.join(ROOT, "build", "x")
+EXT = {"avr328": "elf", "avr1284": "elf", "6502": "prg", "z80": "ihx"}
+SIZES = {"avr328": "avr1284", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
+RAM = {"avr328": 2048, "avr1284": 16384}
+MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
+SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
+METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"]
+AVR328_OVERHEAD = 320  # rough statics + stack besides the arena, pre-filter only
+
+
+def make(targets, keep_going=True):
+    """Build files with make -j2, serialised across steps with a lock."""
+    if not targets:
+        return 0
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    os.makedirs(XB, exist_ok=True)
+    cmd = ["flock", os.path.join(XB, ".lock"), "make", "-s", "--no-print-directory", "-j2"]
+    if keep_going:
+        cmd.append("-k")
+    r = subprocess.run(cmd + targets, cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT)
+    out = r.stdout.decode("latin-1")
+    for line in out.splitlines():
+        if not line.startswith("SKIP"):
+            print("  make: " + line)
+    return r.returncode
+
+
+def read_sizes(t):
+    sizes, why = {}, {}
+    for line in open(os.path.join(XB, SIZES[t], "sizes.txt")):
+        f = line.split(None, 3)
+        if len(f) >= 3 and f[0].isdigit():
+            sizes[(int(f[0]), int(f[1]))] = int(f[2])
+            if len(f) > 3:
+                why[(int(f[0]), int(f[1]))] = f[3].lstrip("# ").strip()
+    return sizes, why
+
+
+def fw_path(t, s, m, frames):
+    return os.path.join(XB, t, "fw", "fw-%d-%d-%d.%s" % (s, m, frames, EXT[t]))
+
+
+def is_skip(path):
+    with open(path, "rb") as f:
+        head = f.read(200)
+    return head.decode("latin-1").strip()[6:] if head.startswith(b"SKIP:") else None
+
+
+def run_target(t, path, timeout=300):
+    """Run one program; returns (bytes, exit code, info dict)."""
+    with tempfile.TemporaryDirectory() as td:
+        out, info = os.path.join(td, "out.bin"), os.path.join(td, "info.txt")
+        if t.startswith("avr"):
+            cmd = [os.path.join(ROOT, "build", "emu", "avrsim"), "-l", "3000000000", "-m", info,
+                   "-o", out, MCU[t], path]
+        elif t == "6502":
+            cmd = [sys.executable, os.path.join(ROOT, "emu", "sim65run.py"), "-m", info, "-o", out, path]
+        else:
+            cmd = [sys.executable, os.path.join(ROOT, "emu", "sz80run.py"), "-G", "-m", info,
+                   "-o", out, path]
+        try:
+            rc = subprocess.run(cmd, timeout=timeout, stdout=subprocess.DEVNULL,
+                                stderr=subprocess.DEVNULL).returncode
+        except subprocess.TimeoutExpired:
+            rc = 124
+        data = open(out, "rb").read() if os.path.exists(out) else b""
+        text = open(info).read() if os.path.exists(info) else ""
+    d = {}
+    m = re.search(r"stack_peak=(\d+)", text)
+    if m:
+        d["stack_peak"] = int(m.group(1))
+    m = re.search(r"RAM static=(\d+)", text)
+    if m:
+        d["static"] = int(m.group(1))
+    d["info"] = text
+    return data, rc, d
+
+
+def host_ref(s, m, frames):
+    cache = os.path.join(XB, "host", "ref-%d-%d-%d.bin" % (s, m, frames))
+    fwhost = os.path.join(ROOT, "build", "emu", "fw-host")
+    if os.path.exists(cache) and os.path.getmtime(cache) >= os.path.getmtime(fwhost):
+        return open(cache, "rb").read()
+    os.makedirs(os.path.dirname(cache), exist_ok=True)
+    r = subprocess.run([fwhost, str(s), str(m), str(frames)], stdout=subprocess.PIPE, timeout=120)
+    if r.returncode:
+        raise RuntimeError("fw-host %d %d %d exit %d" % (s, m, frames, r.returncode))
+    with open(cache, "wb") as f:
+        f.write(r.stdout)
+    return r.stdout
+
+
+def emu_ref(s, m, frames):
+    emu = os.path.join(ROOT, "build", "rast8-emu")
+    if not os.path.exists(emu):
+        return None
+    with tempfile.TemporaryDirectory() as td:
+        out = os.path.join(td, "emu.bin")
+        r = subprocess.run([emu, "--scene", SCENES[s], "--method", METHODS[m], "--frames",
+                            str(frames), "--out", out], stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, timeout=120)
+        if r.returncode:
+            return ("error", r.stderr.decode("latin-1").strip()[:200])
+        return open(out, "rb").read()
+
+
+def plan(t, frames):
+    sizes, why = read_sizes(t)
+    todo, skips = [], []
+    for s in range(len(SCENES)):
+        for m in range(len(METHODS)):
+            need = sizes.get((s, m), 0)
+            if need == 0:
+                skips.append((s, m, "app_ram() = 0: %s" % why.get((s, m), "configuration rejected")))
+            elif t == "avr328" and need + AVR328_OVERHEAD > RAM[t]:
+                skips.append((s, m, "RAM: app_ram() %d B + ~%d B statics/stack > %d B SRAM"
+                               % (need, AVR328_OVERHEAD, RAM[t])))
+            else:
+                todo.append((s, m, need))
+    return todo, skips
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--frames", type=int, default=4)
+    ap.add_argument("--build-only", action="store_true")
+    ap.add_argument("targets", nargs="+")
+    a = ap.parse_args()
+    os.chdir(ROOT)
+    ready = ["build/emu/avrsim", "build/emu/fw-host"] + sorted(
+        {"build/x/%s/sizes.txt" % SIZES[t] for t in a.targets})
+    if make(ready, keep_going=False):
+        print("identity: could not build the runners / sizes")
+        print("0 passed, 1 failed")
+        return 1
+    plans = {t: plan(t, a.frames) for t in a.targets}
+    files = [os.path.relpath(fw_path(t, s, m, a.frames), ROOT)
+             for t in a.targets for (s, m, _) in plans[t][0]]
+    make(files)
+    if a.build_only:
+        return 0
+    passed = failed = 0
+    nskip = 0
+    for t in a.targets:
+        todo, skips = plans[t]
+        results = {}
+
+        def one(job):
+            s, m, need = job
+            path = fw_path(t, s, m, a.frames)
+            name = "%s %s/%s" % (t, SCENES[s], METHODS[m])
+            if not os.path.exists(path):
+                return ("FAIL", "%s: not built (see the make errors above)" % name)
+            reason = is_skip(path)
+            if reason:
+                return ("SKIP", "%s: %s" % (name, reason))
+            data, rc, d = run_target(t, path)
+            ref = host_ref(s, m, a.frames)
+            size = {}
+            if os.path.exists(path + ".size"):
+                size = dict(kv.split("=") for kv in open(path + ".size").read().split())
+            extra = "arena %d B" % need
+            if "ram_static" in size:
+                extra += ", static %s B" % size["ram_static"]
+            if "stack_peak" in d:
+                extra += ", stack %d B" % d["stack_peak"]
+            if t in RAM and "stack_peak" in d and "ram_static" in size:
+                total = int(size["ram_static"]) + d["stack_peak"]
+                extra += ", total %d/%d B" % (total, RAM[t])
+                if total >= RAM[t]:
+                    return ("SKIP", "%s: RAM: statics %s + stack %d = %d B >= %d B SRAM"
+                            % (name, size["ram_static"], d["stack_peak"], total, RAM[t]))
+            if rc != 0:
+                return ("FAIL", "%s: exit %d (%s)" % (name, rc, d["info"].strip().replace("\n", "; ")[-200:]))
+            if data != ref:
+                n = min(len(data), len(ref))
+                at = next((i for i in range(n) if data[i] != ref[i]), n)
+                return ("FAIL", "%s: stream differs from the host at byte %d (%d vs %d bytes)"
+                        % (name, at, len(data), len(ref)))
+            emu = emu_ref(s, m, a.frames)
+            tag = "host fw"
+            if isinstance(emu, tuple):
+                tag += "; rast8-emu failed: %s" % emu[1]
+            elif emu is not None:
+                if emu != data:
+                    return ("FAIL", "%s: equals the host fw build but not build/rast8-emu (%d vs %d bytes)"
+                            % (name, len(data), len(emu)))
+                tag += " and rast8-emu"
+            return ("PASS", "%s: %d bytes identical to %s (%s)" % (name, len(data), tag, extra))
+
+        with cf.ThreadPoolExecutor(2) as ex:
+            for job, res in zip(todo, ex.map(one, todo)):
+                results[(job[0], job[1])] = res
+        for s, m, why in skips:
+            results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], METHODS[m], why))
+        for key in sorted(results):
+            st, msg = results[key]
+            print("%s %s" % (st, msg))
+            if st == "PASS":
+                passed += 1
+            elif st == "FAIL":
+                failed += 1
+            else:
+                nskip += 1
+        if t == "avr328":
+            cull = results.get((0, 0), ("", ""))[0] == "PASS"
+            depth = [METHODS[m] for m in range(1, len(METHODS)) if results.get((0, m), ("", ""))[0] == "PASS"]
+            ok = cull and depth
+            print("%s mandatory: ATmega328P 128x64 cube with cull %s and with depth methods [%s]"
+                  % ("PASS" if ok else "FAIL", "passes" if cull else "FAILS", ", ".join(depth)))
+            if ok:
+                passed += 1
+            else:
+                failed += 1
+    print("%d combinations skipped (reasons above)" % nskip)
+    print("%d passed, %d failed" % (passed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# unit.sh TARGET BIN...  runs target builds of the C unit tests in their
+# simulator (avr1284: emu/avrsim on an ATmega1284P; 6502: sim65; z80:
+# ucsim sz80).  Each run prints its own "N passed, N failed" line; a run
+# that crashes, times out or prints no result line adds "0 passed, 1
+# failed".  Binaries that did not fit the target hold "SKIP: reason" and
+# are listed and counted as skipped (not as passed).
+cd "$(dirname "$0")/../.."
+tgt=$1; shift
+# build the test programs here, so build errors land in this step's log
+# (serialised with the other steps' builds)
+env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL flock build/x/.lock \
+  make -s --no-print-directory -j2 -k build/emu/avrsim "$@" 2>&1 | grep -v "^SKIP"
+mkdir -p build/x
+skipped=0; ran=0; bad=0
+for bin in "$@"; do
+  name=$(basename "${bin%.*}")
+  if [ ! -e "$bin" ]; then
+    echo "$tgt $name: not built"; echo "0 passed, 1 failed"; bad=$((bad+1)); continue
+  fi
+  if head -c 5 "$bin" | grep -q '^SKIP:'; then
+    echo "$tgt $name: SKIPPED: $(cut -c7- "$bin")"; skipped=$((skipped+1)); continue
+  fi
+  ran=$((ran+1))
+  out=$(mktemp)
+  case $tgt in
+    avr*)  timeout 120 build/emu/avrsim -q -l 2000000000 -m /dev/null -o "$out" atmega1284p "$bin"; rc=$? ;;
+    6502)  python3 emu/sim65run.py -t 120 -m /dev/null -o "$out" "$bin"; rc=$? ;;
+    z80)   python3 emu/sz80run.py -G -t 120 -m /dev/null -o "$out" "$bin"; rc=$? ;;
+  esac
+  echo "== $tgt $name (exit $rc)"
+  tr -d '\r' < "$out"
+  if ! grep -Eq '^[0-9]+ passed, [0-9]+ failed' "$out"; then
+    echo "$tgt $name: no result line (exit $rc)"; echo "0 passed, 1 failed"; bad=$((bad+1))
+  elif [ "$tgt" != z80 ] && [ $rc -ne 0 ] && grep -Eq '^[0-9]+ passed, 0 failed' "$out"; then
+    echo "$tgt $name: exit $rc despite 0 failed"; echo "0 passed, 1 failed"; bad=$((bad+1))
+  elif ! grep -Eq '^[0-9]+ passed, 0 failed' "$out"; then
+    bad=$((bad+1))
+  fi
+  rm -f "$out"
+done
+echo "$tgt: $ran test programs run, $skipped skipped (did not fit)"
+[ $bad = 0 ]
