@@ -28,7 +28,7 @@ case $tgt in
     avr-gcc -mmcu=$mcu $AVR_CFLAGS "$@" -c "$src" -o "$base.o" > "$log" 2>&1 || fail
     avr-gcc -mmcu=$mcu -Wl,--gc-sections -Wl,-Map,"$base.map" -o "$out" "$base.o" "${objs[@]}" \
       $X/obj/plat_avr.o $X/librast8.a >> "$log" 2>&1 || {
-        grep -Eq 'overflowed|will not fit|not within region' "$log" && skip "$(grep -Eo '(region|will not fit|section).*' "$log" | head -1) (statics exceed the 's  B SRAM or flash)"; fail; }
+        grep -Eq 'overflowed|will not fit|not within region' "$log" && skip "$(grep -Eo '(region|will not fit|section).*' "$log" | head -1) (statics exceed the $mcu's $ram B SRAM or $flash B flash)"; fail; }
     read -r text data bss < <(avr-size "$out" | awk 'NR==2 {print $1, $2, $3}')
     echo "flash=$((text + data)) ram_static=$((data + bss))" > "$out.size"
     [ $((text + data)) -le $flash ] || { mv "$out" "$out.toobig"; skip "flash $((text + data)) > $flash bytes ($mcu)"; }
