@@ -62,11 +62,12 @@ void r8_cobs_write(const r8_u8 *src, unsigned n, r8_put_fn put, void *ctx);
 #define R8_WIRE_NBANDS(height, band) \
     (((unsigned)(height) + (unsigned)(band) - 1u) / (unsigned)(band))
 /* Largest packet body (+CRC) for a raw band of band_bytes, with a
- * palette of npal entries in the frame start. */
+ * palette of npal entries in the frame start.  No ?: (cc65 cannot use
+ * it in the constant expression of a static array size). */
+#define R8_WIRE_MAX_(a, b) ((a) + ((b) > (a)) * ((b) - (a)))
 #define R8_WIRE_PKT_BYTES(band_bytes, npal) \
-    (((unsigned)(band_bytes) + R8_WIRE_BAND_HDR > R8_WIRE_START_BYTES + 3u * (unsigned)(npal) \
-      ? (unsigned)(band_bytes) + R8_WIRE_BAND_HDR \
-      : R8_WIRE_START_BYTES + 3u * (unsigned)(npal)) + R8_WIRE_CRC_BYTES)
+    (R8_WIRE_MAX_((unsigned)(band_bytes) + R8_WIRE_BAND_HDR, \
+                  R8_WIRE_START_BYTES + 3u * (unsigned)(npal)) + R8_WIRE_CRC_BYTES)
 /* Encoder scratch: one packet plus 4 bytes of fingerprint per band. */
 #define R8_TX_SCRATCH_BYTES(band_bytes, nbands, npal) \
     (R8_WIRE_PKT_BYTES(band_bytes, npal) + 4u * (unsigned)(nbands))

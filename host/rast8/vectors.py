@@ -79,7 +79,7 @@ def c_header(vecs):
     lines.append("")
     lines.append("static const tvec tvecs[] = {")
     for i, v in enumerate(vecs):
-        lines.append('    { "%s", VK_%s, tv_in_%d, %d, tv_out_%d, %d, %d, %d },' % (
+        lines.append('    { "%s", VK_%s, tv_in_%d, %du, tv_out_%d, %du, %d, %du },' % (
             v["name"], v["kind"].upper(), i, len(v["input"]), i,
             len(v["output"] or b""), ERR_IDS.get(v["error"], 0),
             v["limit"] if v["limit"] is not None else 0xFFFF))
