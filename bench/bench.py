@@ -1,0 +1,342 @@
+#!/usr/bin/env python3
+"""bench.py - `make bench`: the firmware on every target, every built-in
+scene x visibility method, measured in the simulators.
+
+Writes build/bench/results.json (one record per target x scene x method)
+and docs/benchmarks.md (the same data as tables).  Benchmarks measure;
+nothing here asserts a timing.
+
+Method (frames N..2N-1 everywhere, N = 2, so the first full frame and
+the start-up are excluded the same way on every target):
+  * AVR (ATmega1284P, ATmega328P; avr-gcc -Os): exact cycles between the
+    firmware's FRAME_BEGIN/FRAME_END markers (GPIOR0 writes timed by
+    emu/avrsim), minus the cycles spent busy-waiting on the UART (the
+    link is accounted separately as fps_115200 / fps_1m).
+  * 6502 (cc65 -Oirs, sim65): sim65 has no readable cycle counter, so
+    differential builds: total cycles of the 2N-frame build minus the
+    N-frame build, over N.  Includes the stream encoding and write calls.
+  * Z80 (sdcc --opt-code-speed, ucsim sz80): ticks between the markers
+    (write breakpoints).  ucsim under-counts some (HL) read-modify-write
+    instructions, so these are indicative.
+  * host (x86-64, gcc -O2): callgrind instructions of the host build of
+    the same firmware main, 2N frames minus N frames, over N.
+Clocks for the compute-bound fps: AVR 16 MHz, 6502 0.985 MHz (C64 PAL),
+Z80 3.5 MHz (ZX Spectrum).  Link-bound fps at 8N1: baud / 10 / bytes.
+RAM: ram_static_bytes = .data+.bss (AVR, avr-size), DATA+BSS (6502, ld65
+map), the statics placed after the code (Z80, emu/z80link.py), all
+including the firmware's arena; stack_peak_bytes = free RAM painted with
+0xA5 before main and the high-water mark read at the end (AVR: by
+emu/avrsim from the simulator's memory; 6502/Z80: by the platform layer,
+C stack + hardware stack on the 6502).  flash_bytes = code + constant
+data (on AVR and Z80 constant data is also copied to RAM: it is counted
+in both).
+"""
+import concurrent.futures as cf
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tests", "targets"))
+import identity as idt  # noqa: E402
+
+N = 2
+FRAMES = 2 * N
+CLOCK = {"avr1284": 16000000, "avr328": 16000000, "6502": 985248, "z80": 3500000}
+CPU = {"avr1284": "ATmega1284P", "avr328": "ATmega328P", "6502": "6502", "z80": "Z80"}
+TARGETS = ["avr328", "avr1284", "6502", "z80"]
+W, H, FMT = 128, 64, "PAGE1"
+
+
+def run(cmd, **kw):
+    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **kw)
+
+
+def callgrind_ir(s, m, frames):
+    with tempfile.TemporaryDirectory() as td:
+        out = os.path.join(td, "cg.out")
+        r = run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out,
+                 os.path.join(ROOT, "build", "emu", "fw-host"), str(s), str(m), str(frames)],
+                timeout=600)
+        if r.returncode:
+            return None
+        for line in open(out):
+            if line.startswith("summary:") or line.startswith("totals:"):
+                return int(line.split()[1])
+    return None
+
+
+def size_of(path):
+    try:
+        return {k: int(v) for k, v in (kv.split("=") for kv in open(path + ".size").read().split())}
+    except (OSError, ValueError):
+        return {}
+
+
+def frames_from(info, key="compute"):
+    """Per-frame cycles of frames N..2N-1 from FRAME lines."""
+    vals = {}
+    for m in re.finditer(r"FRAME (\d+) cycles=(\d+)(?: compute=(\d+))?", info):
+        n = int(m.group(1))
+        c = int(m.group(3)) if (key == "compute" and m.group(3)) else int(m.group(2))
+        vals[n] = c
+    sel = [vals[i] for i in range(N, 2 * N) if i in vals]
+    return sel
+
+
+def measure(t, s, m, need, host_streams):
+    rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
+           "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
+           "cycles_per_frame": None, "cycles_exact": None, "host_instructions_per_frame": None,
+           "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
+           "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
+           "fps_compute": None, "identical_to_host": None, "skipped": None}
+    path = idt.fw_path(t, s, m, FRAMES)
+    if not os.path.exists(path):
+        rec["skipped"] = "not built"
+        return rec
+    why = idt.is_skip(path)
+    if why:
+        rec["skipped"] = why
+        return rec
+    sz = size_of(path)
+    rec["ram_static_bytes"] = sz.get("ram_static")
+    rec["flash_bytes"] = sz.get("flash")
+    ref2, ref4 = host_streams
+    if t.startswith("avr") or t == "z80":
+        with tempfile.TemporaryDirectory() as td:
+            out, info = os.path.join(td, "o.bin"), os.path.join(td, "i.txt")
+            if t.startswith("avr"):
+                cmd = [os.path.join(ROOT, "build", "emu", "avrsim"), "-l", "4000000000", "-m", info,
+                       "-o", out, idt.MCU[t], path]
+            else:
+                cmd = [sys.executable, os.path.join(ROOT, "emu", "sz80run.py"), "-t", "600",
+                       "-m", info, "-o", out, path]
+            r = run(cmd, timeout=900)
+            data = open(out, "rb").read() if os.path.exists(out) else b""
+            text = open(info).read() if os.path.exists(info) else ""
+        sel = frames_from(text, "compute" if t.startswith("avr") else "cycles")
+        if len(sel) == N:
+            rec["cycles_per_frame"] = sum(sel) // N
+            rec["cycles_exact"] = t.startswith("avr")
+        if t.startswith("avr"):
+            w = [a - b for a, b in zip(frames_from(text, "cycles"), sel)]
+            if w:
+                rec["uart_wait_cycles_per_frame"] = sum(w) // len(w)
+        mm = re.search(r"stack_peak=(\d+)", text)
+        if mm:
+            rec["stack_peak_bytes"] = int(mm.group(1))
+        rec["identical_to_host"] = (r.returncode == 0 and data == ref4)
+        if t == "avr328" and rec["stack_peak_bytes"] is not None and rec["ram_static_bytes"]:
+            tot = rec["stack_peak_bytes"] + rec["ram_static_bytes"]
+            rec["ram_total_bytes"] = tot
+            if tot >= 2048:
+                rec["skipped"] = "RAM: statics %d + stack %d >= 2048 B" % (rec["ram_static_bytes"],
+                                                                          rec["stack_peak_bytes"])
+    else:  # 6502: differential builds
+        p2 = idt.fw_path(t, s, m, N)
+        res = {}
+        for frames, p in ((N, p2), (FRAMES, path)):
+            if not os.path.exists(p) or idt.is_skip(p):
+                break
+            with tempfile.TemporaryDirectory() as td:
+                out, info = os.path.join(td, "o.bin"), os.path.join(td, "i.txt")
+                r = run([sys.executable, os.path.join(ROOT, "emu", "sim65run.py"), "-t", "900",
+                         "-m", info, "-o", out, p], timeout=1000)
+                data = open(out, "rb").read() if os.path.exists(out) else b""
+                text = open(info).read() if os.path.exists(info) else ""
+            mm = re.search(r"cycles=(\d+)", text)
+            res[frames] = (int(mm.group(1)) if mm else None, data, r.returncode, text)
+        if N in res and FRAMES in res and res[N][0] and res[FRAMES][0]:
+            rec["cycles_per_frame"] = (res[FRAMES][0] - res[N][0]) // N
+            rec["cycles_exact"] = True
+        if FRAMES in res:
+            mm = re.search(r"stack_peak=(\d+)", res[FRAMES][3])
+            if mm:
+                rec["stack_peak_bytes"] = int(mm.group(1))
+            rec["identical_to_host"] = (res[FRAMES][2] == 0 and res[FRAMES][1] == ref4 and
+                                        (N not in res or res[N][1] == ref2))
+    wire = (len(ref4) - len(ref2)) / float(N)
+    rec["wire_bytes_per_frame"] = round(wire, 1)
+    if wire > 0:
+        rec["fps_115200"] = round(11520.0 / wire, 2)
+        rec["fps_1m"] = round(100000.0 / wire, 2)
+    if rec["cycles_per_frame"]:
+        rec["fps_compute"] = round(CLOCK[t] / float(rec["cycles_per_frame"]), 3)
+    return rec
+
+
+def fmt(v, nd=0):
+    if v is None:
+        return "-"
+    if isinstance(v, bool):
+        return "yes" if v else "**NO**"
+    if isinstance(v, float):
+        return ("%%.%df" % nd) % v
+    if isinstance(v, int) and v >= 10000:
+        return "{:,}".format(v)
+    return str(v)
+
+
+def write_md(recs, host, elapsed):
+    L = []
+    L.append("# Benchmarks (generated by `make bench`, bench/bench.py)")
+    L.append("")
+    L.append("Do not edit: regenerated from `build/bench/results.json`.  %s; commit %s; "
+             "run took %.0f s." % (time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+                                  git_rev(), elapsed))
+    L.append("")
+    L.append("128x64 PAGE1 (1 bpp, SSD1306 layout), 8-row bands, Lambert shading, RLE + COBS + "
+             "CRC-16 wire protocol, `app_defaults()` otherwise.  Frames %d..%d of a %d-frame run "
+             "(frame 0 is the full frame; later frames send changed bands only)." % (N, 2 * N - 1, 2 * N))
+    L.append("")
+    L.append("**How it is measured** (details in bench/bench.py):")
+    L.append("")
+    L.append("* **cycles/frame** - AVR: exact, between the firmware's FRAME_BEGIN/FRAME_END GPIOR0 "
+             "markers in libsimavr (emu/avrsim), minus the UART busy-wait; 6502: exact totals of "
+             "sim65 runs with %d and %d frames, subtracted (differential builds); Z80: ucsim sz80 "
+             "ticks between markers, indicative (ucsim under-counts some `(HL)` read-modify-write "
+             "instructions)." % (N, 2 * N))
+    L.append("* **host Ir/frame** - callgrind instructions of the host build of the same firmware "
+             "main (x86-64, gcc -O2), %d-frame run minus %d-frame run, over %d." % (2 * N, N, N))
+    L.append("* **compute fps** at AVR 16 MHz, 6502 0.985 MHz (C64 PAL), Z80 3.5 MHz (ZX Spectrum). "
+             "**link fps** = baud / 10 / wire bytes per frame (8N1).")
+    L.append("* **RAM static** = .data + .bss including the firmware's arena (`app_ram()` bytes: "
+             "renderer work memory + one band + encoder scratch); **stack** = measured high-water "
+             "mark (free RAM painted with 0xA5); **flash** = code + constant data (on AVR and Z80 "
+             "the constant data also sits in RAM: the library has no PROGMEM path).")
+    L.append("* **same** = the target's UART stream is byte-identical to the host build's.")
+    L.append("")
+    # headline
+    L.append("## Headline")
+    L.append("")
+    L.append("| target | scene | method | cycles/frame | ms | compute fps | RAM static+stack | flash | same |")
+    L.append("|---|---|---|---:|---:|---:|---:|---:|---|")
+    for r in recs:
+        if r["scene"] in ("cube", "torus") and r["target"] in ("avr1284", "avr328", "6502", "z80"):
+            if r["cycles_per_frame"] is None and r["target"] != "avr328":
+                continue
+            ms = (1000.0 * r["cycles_per_frame"] / r["clock_hz"]) if r["cycles_per_frame"] else None
+            ram = None
+            if r["ram_static_bytes"] is not None and r["stack_peak_bytes"] is not None:
+                ram = "%d+%d" % (r["ram_static_bytes"], r["stack_peak_bytes"])
+            L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["cpu"], r["scene"], r["method"], fmt(r["cycles_per_frame"]), fmt(ms, 1),
+                fmt(r["fps_compute"], 2), ram or "-", fmt(r["flash_bytes"]),
+                fmt(r["identical_to_host"]) if not r["skipped"] else "skip: " + r["skipped"][:60]))
+    L.append("")
+    for t in TARGETS:
+        rs = [r for r in recs if r["target"] == t]
+        L.append("## %s (%s)" % (CPU[t], t))
+        L.append("")
+        L.append("| scene | method | cycles/frame | host Ir/frame | compute fps | wire B/frame | "
+                 "fps 115200 | fps 1M | arena | RAM static | stack | flash | same | note |")
+        L.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|")
+        for r in rs:
+            L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["scene"], r["method"], fmt(r["cycles_per_frame"]),
+                fmt(r["host_instructions_per_frame"]), fmt(r["fps_compute"], 2),
+                fmt(r["wire_bytes_per_frame"], 1), fmt(r["fps_115200"], 1), fmt(r["fps_1m"], 1),
+                fmt(r["arena_bytes"]), fmt(r["ram_static_bytes"]), fmt(r["stack_peak_bytes"]),
+                fmt(r["flash_bytes"]), fmt(r["identical_to_host"]),
+                (r["skipped"] or "").replace("|", "/")[:110]))
+        L.append("")
+    os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
+    with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
+        f.write("\n".join(L) + "\n")
+
+
+def git_rev():
+    r = run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT)
+    return r.stdout.decode().strip() or "?"
+
+
+def main():
+    t0 = time.time()
+    os.chdir(ROOT)
+    ready = ["build/emu/avrsim", "build/emu/fw-host"] + sorted(
+        {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in TARGETS})
+    if idt.make(ready, keep_going=False):
+        sys.exit("bench: cannot build the runners / sizes")
+    plans = {t: idt.plan(t, FRAMES) for t in TARGETS}
+    files = []
+    for t in TARGETS:
+        for s, m, _ in plans[t][0]:
+            files.append(os.path.relpath(idt.fw_path(t, s, m, FRAMES), ROOT))
+            if t == "6502":
+                files.append(os.path.relpath(idt.fw_path(t, s, m, N), ROOT))
+    print("bench: building %d firmware images" % len(files))
+    idt.make(files)
+    # host streams and callgrind
+    combos = [(s, m) for s in range(len(idt.SCENES)) for m in range(len(idt.METHODS))]
+    streams = {}
+    for s, m in combos:
+        try:
+            streams[(s, m)] = (idt.host_ref(s, m, N), idt.host_ref(s, m, FRAMES))
+        except Exception as e:  # noqa: BLE001
+            print("bench: host %d %d: %s" % (s, m, e))
+            streams[(s, m)] = (b"", b"")
+    print("bench: callgrind on the host build (%d runs)" % (2 * len(combos)))
+    host = {}
+
+    def cg(sm):
+        s, m = sm
+        a, b = callgrind_ir(s, m, N), callgrind_ir(s, m, FRAMES)
+        return sm, ((b - a) // N if a is not None and b is not None else None)
+
+    with cf.ThreadPoolExecutor(2) as ex:
+        for sm, v in ex.map(cg, combos):
+            host[sm] = v
+    recs = []
+    jobs = []
+    for t in TARGETS:
+        todo, skips = plans[t]
+        for s, m, need in todo:
+            jobs.append((t, s, m, need))
+        for s, m, why in skips:
+            sizes, _ = idt.read_sizes(t)
+            rec = measure(t, s, m, sizes.get((s, m), 0), streams[(s, m)]) if False else None
+            rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
+                   "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t],
+                   "arena_bytes": sizes.get((s, m), 0) or None, "cycles_per_frame": None,
+                   "cycles_exact": None, "host_instructions_per_frame": None,
+                   "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
+                   "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
+                   "fps_compute": None, "identical_to_host": None, "skipped": why}
+            recs.append(rec)
+    print("bench: running %d simulations" % len(jobs))
+    with cf.ThreadPoolExecutor(2) as ex:
+        futs = {ex.submit(measure, t, s, m, need, streams[(s, m)]): (t, s, m) for t, s, m, need in jobs}
+        for f in cf.as_completed(futs):
+            recs.append(f.result())
+    for r in recs:
+        s, m = idt.SCENES.index(r["scene"]), idt.METHODS.index(r["method"])
+        r["host_instructions_per_frame"] = host.get((s, m))
+        if r["wire_bytes_per_frame"] is None and streams[(s, m)][1]:
+            wire = (len(streams[(s, m)][1]) - len(streams[(s, m)][0])) / float(N)
+            r["wire_bytes_per_frame"] = round(wire, 1)
+            if wire > 0:
+                r["fps_115200"] = round(11520.0 / wire, 2)
+                r["fps_1m"] = round(100000.0 / wire, 2)
+    order = {t: i for i, t in enumerate(TARGETS)}
+    recs.sort(key=lambda r: (order[r["target"]], idt.SCENES.index(r["scene"]),
+                             idt.METHODS.index(r["method"])))
+    os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
+    with open(os.path.join(ROOT, "build", "bench", "results.json"), "w") as f:
+        json.dump(recs, f, indent=1)
+    write_md(recs, host, time.time() - t0)
+    print("bench: wrote build/bench/results.json (%d records) and docs/benchmarks.md in %.0f s"
+          % (len(recs), time.time() - t0))
+    for r in recs:
+        if r["scene"] in ("cube", "torus") and r["cycles_per_frame"]:
+            print("  %-8s %-6s %-9s %12s cyc/frame  static %s stack %s flash %s same=%s" % (
+                r["target"], r["scene"], r["method"], r["cycles_per_frame"], r["ram_static_bytes"],
+                r["stack_peak_bytes"], r["flash_bytes"], r["identical_to_host"]))
+
+
+if __name__ == "__main__":
+    main()
