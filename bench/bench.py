@@ -110,15 +110,19 @@ def measure(t, s, m, need, host_streams):
     if t.startswith("avr") or t == "z80":
         with tempfile.TemporaryDirectory() as td:
             out, info = os.path.join(td, "o.bin"), os.path.join(td, "i.txt")
+            prof = os.path.join(td, "prof.txt")
             if t.startswith("avr"):
                 cmd = [os.path.join(ROOT, "build", "emu", "avrsim"), "-l", "4000000000", "-m", info,
-                       "-o", out, idt.MCU[t], path]
+                       "-F", str(N), "-P", prof, "-o", out, idt.MCU[t], path]
             else:
                 cmd = [sys.executable, os.path.join(ROOT, "emu", "sz80run.py"), "-t", "600",
                        "-m", info, "-o", out, path]
             r = run(cmd, timeout=900)
             data = open(out, "rb").read() if os.path.exists(out) else b""
             text = open(info).read() if os.path.exists(info) else ""
+            ptext = open(prof).read() if os.path.exists(prof) else ""
+        if ptext and re.search(r"^\s*\d+ ", ptext, re.M):
+            split_profile(rec, ptext)
         sel = frames_from(text, "compute" if t.startswith("avr") else "cycles")
         if len(sel) == N:
             rec["cycles_per_frame"] = sum(sel) // N
@@ -170,6 +174,30 @@ def measure(t, s, m, need, host_streams):
     return rec
 
 
+WIRE_FN = re.compile(r"crc|rle|cobs|tx_|put_raw|^out$|plat_|codec|lz77|raw_copy")
+
+
+def split_profile(rec, ptext):
+    """AVR: per-function cycles of frames N..2N-1 (emu/avrsim -P): render
+    vs wire (CRC, RLE, COBS, packet assembly, UART writes), and the top 8."""
+    render = wire = 0
+    top = []
+    for line in ptext.splitlines():
+        f = line.split()
+        if len(f) != 3 or line.startswith("#"):
+            continue
+        cyc, name = int(f[0]), f[2]
+        if WIRE_FN.search(name):
+            wire += cyc
+        else:
+            render += cyc
+        if len(top) < 8:
+            top.append([name, cyc // N])
+    rec["cycles_render_per_frame"] = render // N
+    rec["cycles_wire_per_frame"] = wire // N
+    rec["profile_top"] = top
+
+
 def fmt(v, nd=0):
     if v is None:
         return "-"
@@ -214,8 +242,8 @@ def write_md(recs, host, elapsed):
     # headline
     L.append("## Headline")
     L.append("")
-    L.append("| target | scene | method | cycles/frame | ms | compute fps | RAM static+stack | flash | same |")
-    L.append("|---|---|---|---:|---:|---:|---:|---:|---|")
+    L.append("| target | scene | method | cycles/frame | of which render / wire | ms | compute fps | RAM static+stack | flash | same |")
+    L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---|")
     for r in recs:
         if r["scene"] in ("cube", "torus") and r["target"] in ("avr1284", "avr328", "6502", "z80"):
             if r["cycles_per_frame"] is None and r["target"] != "avr328":
@@ -224,11 +252,26 @@ def write_md(recs, host, elapsed):
             ram = None
             if r["ram_static_bytes"] is not None and r["stack_peak_bytes"] is not None:
                 ram = "%d+%d" % (r["ram_static_bytes"], r["stack_peak_bytes"])
-            L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-                r["cpu"], r["scene"], r["method"], fmt(r["cycles_per_frame"]), fmt(ms, 1),
+            split = "-"
+            if r.get("cycles_render_per_frame") is not None and r["cycles_per_frame"]:
+                split = "%s / %s" % (fmt(r["cycles_render_per_frame"]), fmt(r["cycles_wire_per_frame"]))
+            L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+                r["cpu"], r["scene"], r["method"], fmt(r["cycles_per_frame"]), split, fmt(ms, 1),
                 fmt(r["fps_compute"], 2), ram or "-", fmt(r["flash_bytes"]),
                 fmt(r["identical_to_host"]) if not r["skipped"] else "skip: " + r["skipped"][:60]))
     L.append("")
+    L.append("*render / wire*: AVR cycles per function (emu/avrsim -P), split into the renderer "
+             "and the wire encoder (CRC-16, RLE, COBS, packets, UART writes).")
+    L.append("")
+    prof = [r for r in recs if r["target"] == "avr1284" and r.get("profile_top")
+            and r["scene"] in ("cube", "torus") and r["method"] in ("cull", "zbuf16", "block")]
+    if prof:
+        L.append("## Where the AVR cycles go (ATmega1284P, cycles per frame, top functions)")
+        L.append("")
+        for r in prof:
+            L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
+                     ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
+        L.append("")
     for t in TARGETS:
         rs = [r for r in recs if r["target"] == t]
         L.append("## %s (%s)" % (CPU[t], t))

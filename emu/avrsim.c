@@ -10,6 +10,9 @@
  *     -l CYCLES    cycle limit (default 4e9); exit 124 when hit
  *     -m FILE      marker log (default: stderr)
  *     -q           no marker lines, only the summary
+ *     -P FILE      profile: cycles per function (ELF symbols) spent inside
+ *                  frames (between markers 2 and 3), written to FILE
+ *     -F N         profile only frames N and later (default 0)
  *
  * Markers: every write to GPIOR0 (0x3E) logs
  *     MARK id cycle=C delta=D wait=W
@@ -53,6 +56,53 @@ static avr_cycle_count_t last_mark, wait_since_mark, prev_cycle;
 static uint32_t wait_lo = 1, wait_hi = 0; /* [lo, hi) of plat_avr_txwait */
 static int in_frame;
 static unsigned frame_no;
+
+/* profile: function start addresses (sorted) and cycles */
+typedef struct { uint32_t addr; const char *name; unsigned long long cyc; } prof_fn;
+static prof_fn *prof;
+static int nprof;
+static unsigned prof_from;
+
+static int prof_cmp(const void *a, const void *b)
+{
+    const prof_fn *x = a, *y = b;
+    return x->addr < y->addr ? -1 : x->addr > y->addr;
+}
+
+static int prof_cmp_cyc(const void *a, const void *b)
+{
+    const prof_fn *x = a, *y = b;
+    return x->cyc < y->cyc ? 1 : x->cyc > y->cyc ? -1 : 0;
+}
+
+static void prof_init(elf_firmware_t *fw)
+{
+    uint32_t i;
+    prof = calloc(fw->symbolcount + 1, sizeof *prof);
+    for (i = 0; i < fw->symbolcount; i++)
+        if (fw->symbol[i]->addr < 0x800000u && fw->symbol[i]->symbol[0] != '.') {
+            prof[nprof].addr = fw->symbol[i]->addr;
+            prof[nprof].name = fw->symbol[i]->symbol;
+            nprof++;
+        }
+    qsort(prof, nprof, sizeof *prof, prof_cmp);
+}
+
+static void prof_add(uint32_t pc, avr_cycle_count_t c)
+{
+    int lo = 0, hi = nprof - 1, k = -1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        if (prof[mid].addr <= pc) {
+            k = mid;
+            lo = mid + 1;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    if (k >= 0)
+        prof[k].cyc += c;
+}
 
 static void quiet_logger(struct avr_t *avr, const int level, const char *fmt, va_list ap)
 {
@@ -147,10 +197,10 @@ int main(int argc, char **argv)
     uint32_t flags = 0, freq = 16000000u;
     int state, opt, use_pty = 0, linger = 2, code;
     unsigned long long maxc = 4000000000ULL;
-    const char *out = NULL, *marks = NULL;
+    const char *out = NULL, *marks = NULL, *proff = NULL;
     uint32_t a, static_end, low;
 
-    while ((opt = getopt(argc, argv, "f:o:pk:l:m:q")) != -1) {
+    while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:")) != -1) {
         switch (opt) {
         case 'f': freq = strtoul(optarg, 0, 0); break;
         case 'o': out = optarg; break;
@@ -159,12 +209,14 @@ int main(int argc, char **argv)
         case 'l': maxc = strtoull(optarg, 0, 0); break;
         case 'm': marks = optarg; break;
         case 'q': quiet = 1; break;
+        case 'P': proff = optarg; break;
+        case 'F': prof_from = (unsigned)atoi(optarg); break;
         default: goto usage;
         }
     }
     if (argc - optind != 2) {
 usage:
-        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] MCU ELF\n", argv[0]);
+        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] [-P FILE [-F N]] MCU ELF\n", argv[0]);
         return 2;
     }
     uart_fp = stdout;
@@ -192,6 +244,8 @@ usage:
     avr_load_firmware(avr, &fw);
     avr->sleep = no_sleep; /* don't throttle to wall clock */
     find_txwait(&fw);
+    if (proff)
+        prof_init(&fw);
 
     /* paint free RAM: end of .data+.bss .. RAMEND */
     static_end = RAMSTART + fw.datasize + fw.bsssize;
@@ -219,6 +273,8 @@ usage:
         state = avr_run(avr);
         if (pc >= wait_lo && pc < wait_hi)
             wait_since_mark += avr->cycle - prev_cycle;
+        else if (prof && in_frame && frame_no >= prof_from)
+            prof_add(pc, avr->cycle - prev_cycle);
         prev_cycle = avr->cycle;
     } while (state != cpu_Done && state != cpu_Crashed && avr->cycle < maxc);
     fflush(uart_fp);
@@ -237,6 +293,22 @@ usage:
             (unsigned)(fw.datasize + fw.bsssize), (unsigned)(avr->ramend + 1 - low),
             (unsigned)avr->ramend);
     fflush(mark_fp);
+    if (prof) {
+        FILE *pf = fopen(proff, "w");
+        unsigned long long tot = 0;
+        int i;
+        for (i = 0; i < nprof; i++)
+            tot += prof[i].cyc;
+        qsort(prof, nprof, sizeof *prof, prof_cmp_cyc);
+        if (pf) {
+            fprintf(pf, "# cycles inside frames %u..%u (UART wait excluded), per function\n",
+                    prof_from, frame_no ? frame_no - 1 : 0);
+            for (i = 0; i < nprof && prof[i].cyc; i++)
+                fprintf(pf, "%12llu %5.1f%% %s\n", prof[i].cyc, tot ? 100.0 * prof[i].cyc / tot : 0.0,
+                        prof[i].name);
+            fclose(pf);
+        }
+    }
     if (use_pty) {
         sleep((unsigned)linger);
         _exit(state == cpu_Done ? code : state == cpu_Crashed ? 125 : 124);

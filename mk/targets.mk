@@ -71,6 +71,7 @@ $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(XHDRS)
 $(XB)/scenes/scene_%.c: src/scene_data.c emu/scene_strip.py
 	@mkdir -p $(dir $@)
 	python3 emu/scene_strip.py $* $< > $@
+.SECONDARY: $(XSCENES:%=$(XB)/scenes/scene_%.c)
 
 # ---- compile rules per target (library, plat, unity, scene tables)
 define AVR_OBJ

@@ -132,6 +132,26 @@ def emu_ref(s, m, frames):
         return open(out, "rb").read()
 
 
+def decoder_check(t, s, m, frames):
+    """Pipe the target's stream into `rast8 stats --json -`: every frame
+    decodes, no bad packets."""
+    data, rc, _ = run_target(t, fw_path(t, s, m, frames))
+    rast8 = os.path.join(ROOT, ".venv", "bin", "rast8")
+    name = "%s %s/%s: simulator stream through rast8 stats" % (t, SCENES[s], METHODS[m])
+    if not os.path.exists(rast8):
+        return False, name + ": .venv/bin/rast8 missing"
+    r = subprocess.run([rast8, "stats", "--json", "-"], input=data, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, timeout=120)
+    try:
+        import json
+        st = json.loads(r.stdout.decode())
+    except ValueError:
+        return False, name + ": no JSON (%s)" % r.stderr.decode()[-200:]
+    ok = st.get("frames") == frames and not st.get("bad_packets") and not st.get("errors")
+    return ok, name + ": %s frames, %s bad packets, %s errors" % (
+        st.get("frames"), st.get("bad_packets"), st.get("errors"))
+
+
 def plan(t, frames):
     sizes, why = read_sizes(t)
     todo, skips = [], []
@@ -230,6 +250,12 @@ def main():
                 failed += 1
             else:
                 nskip += 1
+        # the simulator's stream through the display-side decoder (rast8 stats)
+        first = next((k for k in sorted(results) if results[k][0] == "PASS"), None)
+        if first is not None:
+            ok, msg = decoder_check(t, first[0], first[1], a.frames)
+            print("%s %s" % ("PASS" if ok else "FAIL", msg))
+            passed, failed = passed + ok, failed + (not ok)
         if t == "avr328":
             cull = results.get((0, 0), ("", ""))[0] == "PASS"
             depth = [METHODS[m] for m in range(1, len(METHODS)) if results.get((0, m), ("", ""))[0] == "PASS"]
