@@ -171,7 +171,12 @@ void r8_fb_page_run(r8_u8 *p, unsigned n, r8_u8 m, r8_u8 pat, r8_u8 ph)
         r8_u8 l2 = (r8_u8)(pat & 0x02 ? m : 0), l3 = (r8_u8)(pat & 0x01 ? m : 0);
         ph &= 3;
         while (ph && p < e) {
-            *p = (r8_u8)((*p & nm) | (ph == 1 ? l1 : ph == 2 ? l2 : l3));
+            r8_u8 v = l3;   /* an if chain: cc65 2.19 miscompiles the nested ?: here */
+            if (ph == 1)
+                v = l1;
+            else if (ph == 2)
+                v = l2;
+            *p = (r8_u8)((*p & nm) | v);
             p++;
             ph = (r8_u8)((ph + 1) & 3);
         }

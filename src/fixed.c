@@ -272,13 +272,13 @@ void r8_camera_init(r8_camera *c, r8_s16 width, r8_s16 height, r8_s16 focal,
     c->focal = focal;
     c->znear = znear;
     c->guard = 900;  /* |sx - cx| <= 900 px keeps 12.4 inside r8_s16 */
-    c->xlimit = (r8_s32)2147483647L / ((r8_s32)focal * R8_SUBPX);
+    c->xlimit = (r8_s32)2147483647L / r8_mul16(focal, R8_SUBPX);
 }
 
 /* focal * 16 * x / z, rounded; the fast path needs |x * f16| < 2^31. */
 static r8_s16 proj1(const r8_camera *c, r8_s32 x, r8_s32 z)
 {
-    r8_s32 f16 = (r8_s32)c->focal * R8_SUBPX;
+    r8_s32 f16 = r8_mul16(c->focal, R8_SUBPX);
     if (x < c->xlimit && x > -c->xlimit)
         return r8_sat16(r8_divround(x * f16, z));
     return r8_sat16(r8_muldiv(x, f16, z));

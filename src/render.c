@@ -261,7 +261,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->dropped = 0;
     /* camera and depth range from the scene's extents */
     r8_camera_init(&st->cam, cfg->width, cfg->height,
-                   (r8_s16)(((r8_s32)cfg->width * sc->focal_num) >> 6), sc->znear);
+                   (r8_s16)(r8_mul16(cfg->width, sc->focal_num) >> 6), sc->znear);
     zn = 0x7FFFFFFFL;
     zf = 1;
     for (i = 0; i < sc->nobjects; i++) {

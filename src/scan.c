@@ -45,7 +45,7 @@ static void edge_start(r8_scan *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
     dy = (r8_s32)b->y - a->y;
     if (dy <= 0)
         dy = 1;  /* only for non-convex input; keeps the arithmetic sane */
-    s0 = (r8_s32)y * R8_SUBPX + 8 - a->y;  /* subpixels from a to row y */
+    s0 = r8_mul16(y, R8_SUBPX) + 8 - a->y;  /* subpixels from a to row y */
     if (dy > 32767) {
         /* Edges over 2047 pixels tall (only reachable by direct callers;
          * the renderer's guard band keeps edges under 1800): measure in

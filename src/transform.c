@@ -64,7 +64,7 @@ void r8_tf_vertices(r8_state *st)
 {
     const r8_scene *sc = st->scene;
     const r8_camera *cam = &st->cam;
-    r8_s32 wsub = (r8_s32)st->cam.cx * 2, hsub = (r8_s32)st->cam.cy * 2;
+    r8_s32 wsub = r8_mul16(st->cam.cx, 2), hsub = r8_mul16(st->cam.cy, 2);
     r8_u8 i;
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];

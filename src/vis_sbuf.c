@@ -23,7 +23,7 @@ static r8_s32 depth_at(const r8_snode *n, r8_s16 x)
 static void cut_left(r8_snode *n, r8_s16 x)
 {
     n->d += n->dd * (x - n->x0);
-    n->s = (r8_s16)(n->s + (r8_s32)n->ds * (x - n->x0));
+    n->s = (r8_s16)(n->s + r8_mul16(n->ds, (r8_s16)(x - n->x0)));
     n->x0 = x;
 }
 
@@ -69,7 +69,7 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
     /* the new span as a node (not yet in the list) */
     t.x0 = sp->x0;
     t.x1 = sp->x1;
-    t.d = (r8_s32)sp->dl * 256;
+    t.d = r8_mul16(sp->dl, 256);
     t.dd = r8_floordiv(((r8_s32)sp->dr - sp->dl) * 256, n);
     t.s = sp->sl;
     t.ds = (r8_s16)r8_divround((r8_s32)sp->sr - sp->sl, n);
