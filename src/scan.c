@@ -207,9 +207,13 @@ void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         if (xl < xr && y >= fb->y0) {
             /* SSD1306 page: one byte per column, bit (row & 7) */
             r8_s16 by = (r8_s16)(y - fb->y0);
+            r8_u8 pat = 0xFF;     /* if chain, not nested ?: (cc65) */
+            if (level == 0)
+                pat = 0;
+            else if (level < 16)
+                pat = r8_fb_dither_row(level, y);
             r8_fb_page_run(fb->buf + (unsigned)(by >> 3) * (unsigned)w + (unsigned)xl,
-                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)),
-                           level >= 16 ? 0xFF : level == 0 ? 0 : r8_fb_dither_row(level, y),
+                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)), pat,
                            (r8_u8)(xl & 3));
         }
     }

@@ -173,7 +173,11 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
 static r8_u8 level_of(r8_s16 s)
 {
     r8_s16 l = (r8_s16)((s + 128) >> 8);
-    return (r8_u8)(l < 0 ? 0 : l > 16 ? 16 : l);
+    if (l < 0)
+        return 0;
+    if (l > 16)
+        return 16;
+    return (r8_u8)l;
 }
 
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb)

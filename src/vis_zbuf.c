@@ -30,7 +30,11 @@ static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
 static r8_u8 level_of(r8_s16 s)
 {
     r8_s16 l = (r8_s16)((s + 128) >> 8);
-    return (r8_u8)(l < 0 ? 0 : l > 16 ? 16 : l);
+    if (l < 0)
+        return 0;
+    if (l > 16)
+        return 16;
+    return (r8_u8)l;
 }
 
 void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
