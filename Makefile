@@ -25,7 +25,7 @@ ALL_TARGETS := $(LIB)
 .PHONY: all test setup clean demo bench golden lint chart fuzz
 all: all-targets
 
-$(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h) | $(BUILD)/obj
+$(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h src/*.h) | $(BUILD)/obj
 	$(CC) $(STRICT) $(CFLAGS) $(INC) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)

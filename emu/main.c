@@ -280,6 +280,45 @@ static void tcp_linger(int c, double secs)
     }
 }
 
+/* --method auto: the analyser picks the cheapest exact method for the
+ * scene and, unless --band is given, the largest band that fits the RAM
+ * budget (--ram, else 16 KB) after the encoder's own buffers. */
+static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
+{
+    static const char *const why[] = {
+        "", "one convex mesh: backface culling is exact",
+        "convex objects apart in depth: painter's is exact",
+        "concave or interpenetrating geometry: z-buffer",
+        "given by the user", "the exact method does not fit the RAM budget"
+    };
+    long budget = ram >= 0 ? ram : 16384;
+    long extra;
+    r8_analysis a;
+    app_layout lay;
+    /* leave room for the encoder: shrink the renderer's share until the
+     * whole app fits (the encoder's buffers grow with the band) */
+    for (extra = 0; ; extra += 32) {
+        r8_render_cfg rc = cfg->render;
+        rc.method = R8_VIS_AUTO;
+        if (!band_given)
+            rc.band = 0;
+        if (budget - extra <= 0 || r8_analyse(&rc, (unsigned)(budget - extra), &a)) {
+            fprintf(stderr, "%s: --method auto: nothing fits %ld bytes of RAM for scene %s\n",
+                    prog, budget, r8_scene_name(cfg->render.scene));
+            exit(3);
+        }
+        cfg->render = rc;
+        if (app_plan(cfg, &lay) || (long)lay.total <= budget)
+            break;                      /* (a bad layout is reported by the caller) */
+    }
+    if (!quiet)
+        fprintf(stderr, "%s: analyser: scene %s -> method %s (%s), band %d rows, "
+                "renderer+band %u bytes; depth range z %ld..%ld, camera coordinates "
+                "need %d bits\n", prog, r8_scene_name(cfg->render.scene),
+                r8_method_name(a.method), why[a.why < 6 ? a.why : 0], a.band, a.ram,
+                (long)a.znear, (long)a.zfar, a.coord_bits);
+}
+
 static int fmt_by_name(const char *s)
 {
     if (!strcmp(s, "page1")) return R8_FMT_PAGE1;
@@ -308,7 +347,7 @@ int main(int argc, char **argv)
     app_layout lay;
     struct host host;
     const char *out = "-", *dump = 0;
-    int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc;
+    int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc, band_given = 0;
     long tcp = -1, baud = 0, ram = -1;
     double linger = 30, gate = 2;
     unsigned char *arena;
@@ -334,7 +373,7 @@ int main(int argc, char **argv)
                 die(2, "--method: unknown method '%s' (see --help)", optarg);
             cfg.render.method = (r8_u8)v;
             break;
-        case O_BAND: cfg.render.band = (r8_s16)num("--band", optarg, 1, R8_WIRE_MAX_DIM); break;
+        case O_BAND: cfg.render.band = (r8_s16)num("--band", optarg, 1, R8_WIRE_MAX_DIM); band_given = 1; break;
         case O_FRAMES: cfg.frames = (r8_u16)num("--frames", optarg, 0, 65535); break;
         case O_FIRST: cfg.first_frame = (r8_u16)num("--first", optarg, 0, 65535); break;
         case O_W: cfg.render.width = (r8_s16)num("--width", optarg, 1, R8_WIRE_MAX_DIM); break;
@@ -366,6 +405,9 @@ int main(int argc, char **argv)
         die(2, "unexpected argument '%s' (see --help)", argv[optind]);
     if ((use_pty != 0) + (tcp >= 0) + (strcmp(out, "-") != 0) > 1)
         die(2, "%s", "choose one of --out, --pty, --tcp");
+
+    if (cfg.render.method == R8_VIS_AUTO)
+        analyse(&cfg, band_given, ram, quiet);
 
     if (!r8_render_ram(&cfg.render)) {
         fprintf(stderr, "%s: invalid configuration: the renderer does not accept "

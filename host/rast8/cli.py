@@ -99,7 +99,7 @@ def _open(args):
         return open_source(args.source, baud=args.baud, idle=args.idle)
     except Exception as e:      # noqa: BLE001 - report any open failure
         print("rast8: %s" % e, file=sys.stderr)
-        sys.exit(2)
+        sys.exit(getattr(e, "exit_code", 2))
 
 
 def _summary(st):
@@ -120,10 +120,13 @@ def cmd_decode(args):
         img.save(os.path.join(args.output, "frame_%05d.png" % fr.number))
         images.append(fr.to_image(args.gif_scale).convert("P"))
 
+    err = None
     try:
         cap.run(on_frame)
     except KeyboardInterrupt:
         pass
+    except OSError as e:        # the source failed (USB unplug, stall...): keep what came
+        err = e
     finally:
         src.close()
     gif = args.gif or os.path.join(args.output, "anim.gif")
@@ -135,6 +138,9 @@ def cmd_decode(args):
         print(json.dumps(st))
     else:
         print("decoded %s -> %s" % (_summary(st), args.output if images else "(no frames)"))
+    if err is not None:
+        print("rast8: %s" % err, file=sys.stderr)
+        return getattr(err, "exit_code", 1)
     return 0 if st["frames"] else 1
 
 
@@ -142,10 +148,13 @@ def cmd_stats(args):
     src = _open(args)
     cap = Capture(src, args.frames, progress=args.progress or (sys.stderr.isatty() and not args.json),
                   request=not args.no_request)
+    err = None
     try:
         cap.run(lambda fr: None)
     except KeyboardInterrupt:
         pass
+    except OSError as e:        # the source failed: report what came before it
+        err = e
     finally:
         src.close()
     st = cap.stats()
@@ -160,6 +169,9 @@ def cmd_stats(args):
         print("bad packets       %d" % st["bad_packets"])
         print("dropped frames    %d" % st["dropped"])
         print("incomplete frames %d" % st["incomplete"])
+    if err is not None:
+        print("rast8: %s" % err, file=sys.stderr)
+        return getattr(err, "exit_code", 1)
     return 0 if st["frames"] else 1
 
 

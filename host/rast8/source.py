@@ -92,7 +92,7 @@ def open_source(spec, baud=DEFAULT_BAUD, idle=None):
     """Open SOURCE (see the module doc)."""
     if spec.startswith("usb:"):
         from rast8 import usb
-        return usb.open_usb(spec)
+        return usb.open_usb(spec, idle=idle)
     if spec == "-":
         return FileSource(sys.stdin.buffer, "stdin")
     import serial

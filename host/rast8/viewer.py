@@ -47,6 +47,9 @@ def run_viewer(src, args):
                 pass
         try:
             cap.run(on_frame)
+        except OSError as e:    # the source failed: say so, keep the last frame up
+            state["error"] = str(e)
+            print("rast8 view: %s" % e, file=sys.stderr)
         finally:
             state["eof"] = True
 
