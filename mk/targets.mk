@@ -71,7 +71,10 @@ $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(XHDRS)
 $(XB)/scenes/scene_%.c: src/scene_data.c emu/scene_strip.py
 	@mkdir -p $(dir $@)
 	python3 emu/scene_strip.py $* $< > $@
-.SECONDARY: $(XSCENES:%=$(XB)/scenes/scene_%.c)
+# keep chained intermediates (scene tables, plat/unity/scene objects)
+.SECONDARY: $(XSCENES:%=$(XB)/scenes/scene_%.c) \
+  $(foreach t,avr328 avr1284 6502,$(XB)/$(t)/obj/unity_target.o $(XSCENES:%=$(XB)/$(t)/obj/scene_%.o)) \
+  $(XB)/z80/obj/unity_target.rel $(XSCENES:%=$(XB)/z80/obj/scene_%.rel)
 
 # ---- compile rules per target (library, plat, unity, scene tables)
 define AVR_OBJ
