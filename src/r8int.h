@@ -92,7 +92,8 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
                  const r8_face *fc, r8_poly *p);
 /* vis_painter.c */
 void r8_jeffsort(r8_state *st);
-/* vis_zbuf.c, vis_block.c, vis_sbuf.c: draw one span of polygon p */
+/* vis_zbuf.c, vis_sbuf.c: draw one span of polygon p */
+r8_u8 r8_vis_level(r8_s16 s);
 void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp);
 void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int bits16);
 void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int mask);

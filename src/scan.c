@@ -118,6 +118,28 @@ static void edge_step(const r8_scan *s, r8_edge *e)
     if (v_ > 32700) c = 2044; else { v_ = (r8_s16)(v_ + 7 + ((it).err != 0)); \
     c = (r8_s16)(v_ >= 0 ? v_ >> 4 : -((-v_ + 15) >> 4)); } } while (0)
 
+/* Start row y: move either edge on to its next vertex where it ended,
+ * then Judd's test, decided on the first row where the edges differ by a
+ * subpixel, before any pixel of the polygon is drawn.  0: a back face
+ * (the scan is over). */
+static int row_begin(r8_scan *s, r8_s16 y, int judd)
+{
+    r8_edge *l = &s->l, *r = &s->r;
+    if (y >= l->yend)
+        edge_start(s, l, l->vi, -1, y);
+    if (y >= r->yend)
+        edge_start(s, r, r->vi, 1, y);
+    if (judd && !s->front && l->x.val != r->x.val) {
+        if (l->x.val > r->x.val) {
+            s->backface = 1;
+            s->y = s->ybot;
+            return 0;
+        }
+        s->front = 1;
+    }
+    return 1;
+}
+
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
 {
     r8_edge *l = &s->l, *r = &s->r;
@@ -125,20 +147,8 @@ int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
     r8_u8 attrs = s->attrs;
     while (s->y < lim) {
         r8_s16 y = s->y, xl, xr;
-        if (y >= l->yend)
-            edge_start(s, l, l->vi, -1, y);
-        if (y >= r->yend)
-            edge_start(s, r, r->vi, 1, y);
-        /* Judd: decided on the first row where the edges differ by a
-         * subpixel, before any pixel of the polygon is drawn */
-        if (judd && !s->front && l->x.val != r->x.val) {
-            if (l->x.val > r->x.val) {
-                s->backface = 1;
-                s->y = s->ybot;
-                return 0;
-            }
-            s->front = 1;
-        }
+        if (!row_begin(s, y, judd))
+            return 0;
         COL_OF(l->x, xl);
         COL_OF(r->x, xr);
         s->y = (r8_s16)(y + 1);
@@ -184,18 +194,8 @@ void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
     }
     for (; y < lim; y++) {
         r8_s16 xl, xr;
-        if (y >= l->yend)
-            edge_start(s, l, l->vi, -1, y);
-        if (y >= r->yend)
-            edge_start(s, r, r->vi, 1, y);
-        if (judd && !s->front && l->x.val != r->x.val) {
-            if (l->x.val > r->x.val) {
-                s->backface = 1;
-                s->y = s->ybot;
-                return;
-            }
-            s->front = 1;
-        }
+        if (!row_begin(s, y, judd))
+            return;
         COL_OF(l->x, xl);
         COL_OF(r->x, xr);
         R8_INTERP_STEP(&l->x);

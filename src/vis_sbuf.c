@@ -170,15 +170,6 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
     }
 }
 
-static r8_u8 level_of(r8_s16 s)
-{
-    r8_s16 l = (r8_s16)((s + 128) >> 8);
-    if (l < 0)
-        return 0;
-    if (l > 16)
-        return 16;
-    return (r8_u8)l;
-}
 
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb)
 {
@@ -192,7 +183,7 @@ void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb)
                 r8_s16 x;
                 r8_s32 s = n->s;
                 for (x = n->x0; x < n->x1; x++) {
-                    r8_fb_dot(fb, x, y, level_of((r8_s16)s), 0);
+                    r8_fb_dot(fb, x, y, r8_vis_level((r8_s16)s), 0);
                     s += n->ds;
                 }
             } else {

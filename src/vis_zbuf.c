@@ -5,6 +5,18 @@
  * depth is >= the stored one (so the later of two equal depths wins). */
 #include "r8int.h"
 
+/* Gouraud shade (8.8) to a dither level 0..16, rounded. */
+r8_u8 r8_vis_level(r8_s16 s)
+{
+    r8_s16 l;
+    if (s < 0)
+        return 0;
+    l = (r8_s16)((s + 128) >> 8);
+    if (l > 16)
+        return 16;
+    return (r8_u8)l;
+}
+
 /* Span clipped to the frame: first pixel, end, and the interpolators
  * advanced to the first pixel. */
 static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
@@ -27,15 +39,6 @@ static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
     return 1;
 }
 
-static r8_u8 level_of(r8_s16 s)
-{
-    r8_s16 l = (r8_s16)((s + 128) >> 8);
-    if (l < 0)
-        return 0;
-    if (l > 16)
-        return 16;
-    return (r8_u8)l;
-}
 
 void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
 {
@@ -48,7 +51,7 @@ void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
     for (x = xa; x < xb; x++) {
-        r8_fb_dot(fb, x, sp->y, level_of(s.val), 0);
+        r8_fb_dot(fb, x, sp->y, r8_vis_level(s.val), 0);
         R8_INTERP_STEP(&s);
     }
 }
@@ -67,7 +70,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
         for (x = xa; x < xb; x++) {
             if ((r8_u16)d.val >= z[x]) {
                 z[x] = (r8_u16)d.val;
-                r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -79,7 +82,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
             r8_u8 d8 = (r8_u8)(d.val >> 7);
             if (d8 >= z[x]) {
                 z[x] = d8;
-                r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -132,7 +135,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
             }
             for (; x < end; x++) {
                 if (draw)
-                    r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                    r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
                 R8_INTERP_STEP(&d);
                 if (gouraud)
                     R8_INTERP_STEP(&s);
@@ -144,7 +147,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
                 r8_u16 bit = (r8_u16)(1u << (rowbits | (x & 3)));
                 if (!(m & bit) || d8 >= bz[b]) {
                     bm[b] = (r8_u16)(bm[b] | bit);
-                    r8_fb_dot(fb, x, sp->y, gouraud ? level_of(s.val) : p->shade, 0);
+                    r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
                     drawn = 1;
                 }
                 R8_INTERP_STEP(&d);
