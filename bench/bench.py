@@ -272,6 +272,7 @@ def write_md(recs, host, elapsed):
             L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
+    L.extend(ram_budget_328())
     for t in TARGETS:
         rs = [r for r in recs if r["target"] == t]
         L.append("## %s (%s)" % (CPU[t], t))
@@ -291,6 +292,39 @@ def write_md(recs, host, elapsed):
     os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
         f.write("\n".join(L) + "\n")
+
+
+def ram_budget_328():
+    """Where the 2 KB of the ATmega328P go in the cube/cull firmware."""
+    elf = idt.fw_path("avr328", 0, 0, FRAMES)
+    if os.path.exists(elf + ".toobig"):
+        elf += ".toobig"
+    if not os.path.exists(elf) or idt.is_skip(elf):
+        return []
+    r = run(["avr-nm", "-S", "--size-sort", elf])
+    syms = []
+    for line in r.stdout.decode().splitlines():
+        f = line.split()
+        if len(f) == 4 and f[2].lower() in ("b", "d") and int(f[0], 16) >= 0x800100:
+            syms.append((int(f[1], 16), f[3]))
+    syms.sort(reverse=True)
+    total = sum(n for n, _ in syms)
+    L = ["## ATmega328P: where the 2048 bytes go (cube / cull firmware)", ""]
+    rec_stack = None
+    info = run([os.path.join(ROOT, "build", "emu", "avrsim"), "-q", "-o", "/dev/null", "-m", "/dev/stdout",
+                "atmega1284p", idt.fw_path("avr1284", 0, 0, FRAMES)]).stdout.decode()
+    m = re.search(r"stack_peak=(\d+)", info)
+    if m:
+        rec_stack = int(m.group(1))
+    L.append("Static RAM %d B (the same program on the 1284P peaks at %s B of stack): %s."
+             % (total, rec_stack, ", ".join("`%s` %d" % (nm, n) for n, nm in syms[:14])))
+    L.append("`mem` is the firmware's arena (`app_ram()`: renderer work memory, one 128-byte band, "
+             "encoder scratch).  Constant tables (`sin_q14`, `grey17`, `crc_nib`, `bayer4`, the "
+             "scene) sit in SRAM because the library reads them with plain loads; in flash "
+             "(PROGMEM + `pgm_read_*`) they would free %d B."
+             % sum(n for n, nm in syms if nm in ("sin_q14", "grey17", "crc_nib", "bayer4")))
+    L.append("")
+    return L
 
 
 def git_rev():
