@@ -273,6 +273,23 @@ def write_md(recs, host, elapsed):
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
     L.extend(ram_budget_328())
+    L.extend([
+        "## Running the firmware yourself",
+        "",
+        "```",
+        "make fw                                   # every firmware image the tests use",
+        "build/emu/avrsim atmega1284p build/x/avr1284/fw/fw-1-3-4.elf | .venv/bin/rast8 stats -",
+        "build/emu/avrsim -P prof.txt -F 2 -o out.bin atmega1284p FW.elf   # cycles per function",
+        "build/emu/avrsim -p atmega1284p FW.elf    # UART on a pty (name on stderr; start with a line on stdin)",
+        "python3 emu/sim65run.py -o out.bin build/x/6502/fw/fw-0-0-4.prg",
+        "python3 emu/sz80run.py -o out.bin -m marks.txt build/x/z80/fw/fw-0-0-4.ihx",
+        "make xident-avr328                        # the 2 KB ATmega328P identity run",
+        "```",
+        "",
+        "fw-S-M-F: scene S, method M (numbers as in r8render.h), F frames.  Every stream "
+        "decodes with `rast8 decode` / `rast8 stats` (the identity tests pipe one per target "
+        "through `rast8 stats`).",
+        ""])
     for t in TARGETS:
         rs = [r for r in recs if r["target"] == t]
         L.append("## %s (%s)" % (CPU[t], t))
