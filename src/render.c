@@ -169,7 +169,6 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     /* a closed mesh shows at most about half its faces at once; polygons
      * beyond the pool are seeked to each band's first row instead */
     pl->npool = (r8_u8)((nf + 1u) / 2u < R8_SCAN_POOL ? (nf + 1u) / 2u : R8_SCAN_POOL);
-    pl->clipbuf = o; o += align_up(r8_clip_bytes());
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(sizeof(r8_svert) * (nv + pl->nclip));
     pl->out = o; o += align_up(nv);
@@ -180,15 +179,22 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->poly = o; o += align_up(sizeof(r8_poly) * nf);
     pl->idx = o; o += align_up(2u * pl->maxidx);
     pl->order = o; o += align_up(2u * nf);
+    /* One shared region for memory that is never live at the same time:
+     * the clipper's polygons (while faces are set up), the painter's
+     * bucket counts (while sorting), and the band-time memory: scan
+     * states, depth memory, S-buffer. */
+    pl->clipbuf = o;
     pl->jeff = o;
-    if (cfg->method == R8_VIS_PAINTER)
-        o += align_up(2u * R8_JEFF_BUCKETS);
     pl->pool = o; o += align_up(sizeof(r8_scan) * pl->npool);
     pl->depth = o; o += align_up(r8_vis_depth_bytes(cfg));
     pl->snode = o; o += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
     pl->shead = o;
     if (cfg->method == R8_VIS_SBUF)
         o += align_up(2u * (unsigned)cfg->band);
+    if (o < pl->clipbuf + align_up(r8_clip_bytes()))
+        o = pl->clipbuf + align_up(r8_clip_bytes());
+    if (cfg->method == R8_VIS_PAINTER && o < pl->jeff + align_up(2u * R8_JEFF_BUCKETS))
+        o = pl->jeff + align_up(2u * R8_JEFF_BUCKETS);
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
 
