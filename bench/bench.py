@@ -272,6 +272,20 @@ def write_md(recs, host, elapsed):
             L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
+    mic = micro()
+    if mic:
+        with open(os.path.join(ROOT, "build", "bench", "micro.json"), "w") as f:
+            json.dump(mic, f, indent=1)
+        L.append("## Inner loops (emu/fw_micro.c; build/bench/micro.json)")
+        L.append("")
+        L.append("| piece | what | unit | ATmega1284P cycles/unit | Z80 T-states/unit (indicative) |")
+        L.append("|---|---|---|---:|---:|")
+        for name, _, what, unit in MICRO:
+            a = [x for x in mic if x["piece"] == name and x["target"] == "avr1284"]
+            z = [x for x in mic if x["piece"] == name and x["target"] == "z80"]
+            L.append("| %s | %s | %s | %s | %s |" % (name, what, unit,
+                     a[0]["cycles_per_unit"] if a else "-", z[0]["cycles_per_unit"] if z else "-"))
+        L.append("")
     L.extend(ram_budget_328())
     L.extend([
         "## Running the firmware yourself",
@@ -309,6 +323,45 @@ def write_md(recs, host, elapsed):
     os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
     with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
         f.write("\n".join(L) + "\n")
+
+
+MICRO = [("span", 10, "r8_fb_span_dither, PAGE1, 120-px rows", "pixel"),
+         ("fill", 12, "r8_scan_fill of a 2405-px triangle (edges + spans)", "pixel"),
+         ("edges", 14, "r8_scan_next, depth + shade attributes", "row (both edges)"),
+         ("vert", 16, "r8_mat_apply + 3 r8_asr14 + r8_project", "vertex"),
+         ("crc", 18, "r8_crc16_update", "byte"),
+         ("rle", 20, "r8_rle_encode", "byte")]
+
+
+def micro():
+    """Inner-loop costs from emu/fw_micro.c on the 1284P (exact) and the
+    Z80 (indicative): cycles per pixel / row / vertex / byte."""
+    res = []
+    for t in ("avr1284", "z80"):
+        path = os.path.join(idt.XB, t, "micro." + idt.EXT[t])
+        if not os.path.exists(path) or idt.is_skip(path):
+            continue
+        with tempfile.TemporaryDirectory() as td:
+            out, info = os.path.join(td, "o.txt"), os.path.join(td, "i.txt")
+            if t.startswith("avr"):
+                cmd = [os.path.join(ROOT, "build", "emu", "avrsim"), "-m", info, "-o", out,
+                       idt.MCU[t], path]
+            else:
+                cmd = [sys.executable, os.path.join(ROOT, "emu", "sz80run.py"), "-m", info,
+                       "-o", out, path]
+            run(cmd, timeout=300)
+            text = open(info).read() if os.path.exists(info) else ""
+            units = open(out).read().split() if os.path.exists(out) else []
+        delta = {}
+        for m in re.finditer(r"MARK (\d+) \S+ delta=(\d+)(?: wait=(\d+))?", text):
+            delta[int(m.group(1))] = int(m.group(2))
+        counts = [int(u.split("=")[1]) for u in units if "=" in u]
+        for k, (name, mk, what, unit) in enumerate(MICRO):
+            if mk + 1 in delta and k < len(counts) and counts[k]:
+                res.append({"target": t, "piece": name, "what": what, "unit": unit,
+                            "cycles": delta[mk + 1], "units": counts[k],
+                            "cycles_per_unit": round(delta[mk + 1] / float(counts[k]), 1)})
+    return res
 
 
 def ram_budget_328():
@@ -356,6 +409,7 @@ def main():
         {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in TARGETS})
     if idt.make(ready, keep_going=False):
         sys.exit("bench: cannot build the runners / sizes")
+    idt.make(["build/x/avr1284/micro.elf", "build/x/z80/micro.ihx"])
     plans = {t: idt.plan(t, FRAMES) for t in TARGETS}
     files = []
     for t in TARGETS:

@@ -146,6 +146,9 @@ $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) emu/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(
 	$(XENV) bash emu/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
 	  -- $(FW_DEFS) $$$$(bash emu/fwdefs.sh $$* $(XSIZES_$(1)))
 
+$(XB)/$(1)/micro.$(EXT_$(1)): emu/fw_micro.c $$(XDEPS_$(1))
+	$(XENV) bash emu/xbuild.sh $(1) $$@ $$<
+
 $(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh emu/xbuild.sh
 	@mkdir -p $$(dir $$@)
 	@bash tests/targets/wrap.sh $$< > $$(basename $$@).wrap.c
