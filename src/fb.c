@@ -110,6 +110,11 @@ static const r8_u8 bayer4[16] = {
 
 /* Byte pattern (MSB = leftmost, x = 0 mod 4 at bits 7 and 3) of shade
  * level s on frame row y. */
+const r8_u8 *r8_fb_dither_thresholds(r8_s16 y)
+{
+    return bayer4 + ((y & 3) << 2);
+}
+
 r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y)
 {
     const r8_u8 *t = bayer4 + ((y & 3) << 2);

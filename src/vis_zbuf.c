@@ -17,6 +17,43 @@ r8_u8 r8_vis_level(r8_s16 s)
     return (r8_u8)l;
 }
 
+/* One row's pixel writer: in SSD1306 page layout the byte and bit are
+ * worked out once per span and the dither threshold is a table lookup;
+ * other layouts go through r8_fb_dot. */
+typedef struct pixw {
+    r8_fb *fb;
+    r8_u8 *row;          /* page layout: the row's first column byte, else 0 */
+    r8_u8 m, nm;
+    const r8_u8 *thr;    /* the row's 4 dither thresholds */
+    r8_s16 y;
+} pixw;
+
+static void pixw_init(pixw *w, r8_fb *fb, r8_s16 y)
+{
+    w->fb = fb;
+    w->y = y;
+    w->row = 0;
+    if (fb->format == R8_FMT_PAGE1) {
+        r8_s16 by = (r8_s16)(y - fb->y0);
+        w->row = fb->buf + (unsigned)(by >> 3) * (unsigned)fb->width;
+        w->m = (r8_u8)(1u << (by & 7));
+        w->nm = (r8_u8)~w->m;
+        w->thr = r8_fb_dither_thresholds(y);
+    }
+}
+
+static void pixw_put(const pixw *w, r8_s16 x, r8_u8 level)
+{
+    if (w->row) {
+        if (level > w->thr[x & 3])
+            w->row[x] |= w->m;
+        else
+            w->row[x] &= w->nm;
+    } else {
+        r8_fb_dot(w->fb, x, w->y, level, 0);
+    }
+}
+
 /* Span clipped to the frame: first pixel, end, and the interpolators
  * advanced to the first pixel. */
 static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
@@ -44,14 +81,16 @@ void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
+    pixw w;
     if (!(st->attrs & R8_ATTR_S)) {
         r8_fb_span_dither(fb, sp->y, sp->x0, sp->x1, p->shade, 0);
         return;
     }
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
+    pixw_init(&w, fb, sp->y);
     for (x = xa; x < xb; x++) {
-        r8_fb_dot(fb, x, sp->y, r8_vis_level(s.val), 0);
+        pixw_put(&w, x, r8_vis_level(s.val));
         R8_INTERP_STEP(&s);
     }
 }
@@ -60,17 +99,19 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
+    pixw w;
     unsigned row;
     int gouraud = (st->attrs & R8_ATTR_S) != 0;
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
+    pixw_init(&w, fb, sp->y);
     row = (unsigned)(sp->y - fb->y0) * (unsigned)fb->width;
     if (bits16) {
         r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
         for (x = xa; x < xb; x++) {
             if ((r8_u16)d.val >= z[x]) {
                 z[x] = (r8_u16)d.val;
-                r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
+                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -82,7 +123,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
             r8_u8 d8 = (r8_u8)(d.val >> 7);
             if (d8 >= z[x]) {
                 z[x] = d8;
-                r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
+                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -109,6 +150,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
+    pixw w;
     r8_u16 bw = (r8_u16)((fb->width + 3) >> 2);
     r8_u16 brow = (r8_u16)(((sp->y - fb->y0) >> 2) * bw);
     r8_u16 nblocks = (r8_u16)(bw * (r8_u16)(fb->rows >> 2));
@@ -120,6 +162,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
     int gouraud = (st->attrs & R8_ATTR_S) != 0;
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
+    pixw_init(&w, fb, sp->y);
     x = xa;
     while (x < xb) {
         r8_s16 end = (r8_s16)((x | 3) + 1);
@@ -135,7 +178,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
             }
             for (; x < end; x++) {
                 if (draw)
-                    r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
+                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
                 R8_INTERP_STEP(&d);
                 if (gouraud)
                     R8_INTERP_STEP(&s);
@@ -147,7 +190,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
                 r8_u16 bit = (r8_u16)(1u << (rowbits | (x & 3)));
                 if (!(m & bit) || d8 >= bz[b]) {
                     bm[b] = (r8_u16)(bm[b] | bit);
-                    r8_fb_dot(fb, x, sp->y, gouraud ? r8_vis_level(s.val) : p->shade, 0);
+                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
                     drawn = 1;
                 }
                 R8_INTERP_STEP(&d);
