@@ -193,7 +193,7 @@ xident-%:
 fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
-TEST_STEPS += xtest-avr xtest-6502 xident-avr1284 xident-6502 xident-z80
+TEST_STEPS += xtest-avr xtest-6502 xident-avr328 xident-avr1284 xident-6502 xident-z80
 
 # ---- benchmark
 bench: $(SETUP)

@@ -33,6 +33,7 @@ MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
 SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
 METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"]
 AVR328_OVERHEAD = 320  # rough statics + stack besides the arena, pre-filter only
+MARGIN_328 = 64        # the mandatory 328P cube must leave at least this much SRAM free
 
 
 def make(targets, keep_going=True):
@@ -234,7 +235,10 @@ def main():
                     return ("FAIL", "%s: equals the host fw build but not build/rast8-emu (%d vs %d bytes)"
                             % (name, len(data), len(emu)))
                 tag += " and rast8-emu"
-            return ("PASS", "%s: %d bytes identical to %s (%s)" % (name, len(data), tag, extra))
+            res = ("PASS", "%s: %d bytes identical to %s (%s)" % (name, len(data), tag, extra))
+            if t in RAM and "stack_peak" in d and "ram_static" in size:
+                res += (RAM[t] - int(size["ram_static"]) - d["stack_peak"],)
+            return res
 
         with cf.ThreadPoolExecutor(2) as ex:
             for job, res in zip(todo, ex.map(one, todo)):
@@ -242,7 +246,7 @@ def main():
         for s, m, why in skips:
             results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], METHODS[m], why))
         for key in sorted(results):
-            st, msg = results[key]
+            st, msg = results[key][:2]
             print("%s %s" % (st, msg))
             if st == "PASS":
                 passed += 1
@@ -257,11 +261,19 @@ def main():
             print("%s %s" % ("PASS" if ok else "FAIL", msg))
             passed, failed = passed + ok, failed + (not ok)
         if t == "avr328":
-            cull = results.get((0, 0), ("", ""))[0] == "PASS"
-            depth = [METHODS[m] for m in range(1, len(METHODS)) if results.get((0, m), ("", ""))[0] == "PASS"]
+            def fits(m):
+                r = results.get((0, m), ("", ""))
+                return r[0] == "PASS" and len(r) > 2 and r[2] >= MARGIN_328
+            def free(m):
+                r = results.get((0, m), ("", ""))
+                return "%d B free" % r[2] if len(r) > 2 else "-"
+            cull = fits(0)
+            depth = ["%s (%s)" % (METHODS[m], free(m)) for m in range(1, len(METHODS)) if fits(m)]
             ok = cull and depth
-            print("%s mandatory: ATmega328P 128x64 cube with cull %s and with depth methods [%s]"
-                  % ("PASS" if ok else "FAIL", "passes" if cull else "FAILS", ", ".join(depth)))
+            print("%s mandatory: ATmega328P 128x64 1bpp cube in 2048 B SRAM with >= %d B free: "
+                  "cull %s (%s), depth methods [%s]"
+                  % ("PASS" if ok else "FAIL", MARGIN_328, "passes" if cull else "FAILS", free(0),
+                     ", ".join(depth)))
             if ok:
                 passed += 1
             else:
