@@ -135,9 +135,11 @@ def measure(t, s, m, need, host_streams):
         if mm:
             rec["stack_peak_bytes"] = int(mm.group(1))
         rec["identical_to_host"] = (r.returncode == 0 and data == ref4)
-        if t == "avr328" and rec["stack_peak_bytes"] is not None and rec["ram_static_bytes"]:
+        if t in idt.RAM and rec["stack_peak_bytes"] is not None and rec["ram_static_bytes"]:
             tot = rec["stack_peak_bytes"] + rec["ram_static_bytes"]
             rec["ram_total_bytes"] = tot
+            rec["ram_free_bytes"] = idt.RAM[t] - tot
+        if t == "avr328" and rec["stack_peak_bytes"] is not None and rec["ram_static_bytes"]:
             if tot >= 2048:
                 rec["skipped"] = "RAM: statics %d + stack %d >= 2048 B" % (rec["ram_static_bytes"],
                                                                           rec["stack_peak_bytes"])
@@ -252,6 +254,8 @@ def write_md(recs, host, elapsed):
             ram = None
             if r["ram_static_bytes"] is not None and r["stack_peak_bytes"] is not None:
                 ram = "%d+%d" % (r["ram_static_bytes"], r["stack_peak_bytes"])
+                if r.get("ram_free_bytes") is not None and r["target"] == "avr328" and not r["skipped"]:
+                    ram += " (%d free)" % r["ram_free_bytes"]
             split = "-"
             if r.get("cycles_render_per_frame") is not None and r["cycles_per_frame"]:
                 split = "%s / %s" % (fmt(r["cycles_render_per_frame"]), fmt(r["cycles_wire_per_frame"]))
