@@ -413,16 +413,18 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     /* no depth test and one level per face: the fused scan-and-fill loop */
     int fast = (r->cfg.method == R8_VIS_CULL || r->cfg.method == R8_VIS_PAINTER) &&
                !(st->attrs & R8_ATTR_S);
-    unsigned i;
     r8_u16 k;
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
-    for (i = 0; i < st->depth_bytes; i++)
-        st->depth[i] = 0;
-    if (r->cfg.method == R8_VIS_BLOCK)   /* owner ids: none */
-        for (i = st->depth_bytes / 2u; i < st->depth_bytes; i++)
-            st->depth[i] = 0xFF;
+    {
+        r8_u8 *z = st->depth, *ze = z + st->depth_bytes;
+        while (z < ze)
+            *z++ = 0;
+        if (r->cfg.method == R8_VIS_BLOCK)   /* owner ids: none */
+            for (z = st->depth + st->depth_bytes / 2u; z < ze; z++)
+                *z = 0xFF;
+    }
     for (k = 0; k < st->npoly; k++) {
         r8_poly *p = &st->poly[st->order[k]];
         r8_scan tmp, *sc;

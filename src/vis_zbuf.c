@@ -106,7 +106,22 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
         return;
     pixw_init(&w, fb, sp->y);
     row = (unsigned)(sp->y - fb->y0) * (unsigned)fb->width;
-    if (bits16) {
+    if (bits16 && w.row && !gouraud) {
+        /* the common case, written out: 16-bit depth, one level, pages */
+        r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
+        r8_u8 *b = w.row, m = w.m, nm = w.nm, lv = p->shade;
+        const r8_u8 *t = w.thr;
+        for (x = xa; x < xb; x++) {
+            if ((r8_u16)d.val >= z[x]) {
+                z[x] = (r8_u16)d.val;
+                if (lv > t[x & 3])
+                    b[x] |= m;
+                else
+                    b[x] &= nm;
+            }
+            R8_INTERP_STEP(&d);
+        }
+    } else if (bits16) {
         r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
         for (x = xa; x < xb; x++) {
             if ((r8_u16)d.val >= z[x]) {
