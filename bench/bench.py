@@ -107,6 +107,11 @@ def measure(t, s, m, need, host_streams):
     rec["ram_static_bytes"] = sz.get("ram_static")
     rec["flash_bytes"] = sz.get("flash")
     ref2, ref4 = host_streams
+    if t in idt.RAM and rec["ram_static_bytes"] is not None and \
+            idt.RAM[t] - rec["ram_static_bytes"] < idt.STACK_MIN:
+        rec["skipped"] = "RAM: statics %d B leave %d B for the stack" % (
+            rec["ram_static_bytes"], idt.RAM[t] - rec["ram_static_bytes"])
+        return rec
     if t.startswith("avr") or t == "z80":
         with tempfile.TemporaryDirectory() as td:
             out, info = os.path.join(td, "o.bin"), os.path.join(td, "i.txt")

@@ -34,6 +34,8 @@ SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
 METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"]
 AVR328_OVERHEAD = 320  # rough statics + stack besides the arena, pre-filter only
 MARGIN_328 = 64        # the mandatory 328P cube must leave at least this much SRAM free
+STACK_MIN = 200        # AVR: fewer free bytes than this for the stack: does not fit, not run
+STACK_SUSPECT = 600    # AVR: a crash with fewer free bytes than this is a stack overflow
 
 
 def make(targets, keep_going=True):
@@ -203,11 +205,18 @@ def main():
             reason = is_skip(path)
             if reason:
                 return ("SKIP", "%s: %s" % (name, reason))
-            data, rc, d = run_target(t, path)
-            ref = host_ref(s, m, a.frames)
             size = {}
             if os.path.exists(path + ".size"):
                 size = dict(kv.split("=") for kv in open(path + ".size").read().split())
+            left = RAM[t] - int(size["ram_static"]) if t in RAM and "ram_static" in size else None
+            if left is not None and left < STACK_MIN:
+                return ("SKIP", "%s: RAM: statics %s B leave %d B of the %d B SRAM for the stack "
+                        "(measured peaks are ~300-420 B)" % (name, size["ram_static"], left, RAM[t]))
+            data, rc, d = run_target(t, path)
+            ref = host_ref(s, m, a.frames)
+            if rc != 0 and left is not None and left < STACK_SUSPECT and "stack_peak" not in d:
+                return ("SKIP", "%s: RAM: the run crashed (exit %d) with statics %s B leaving %d B "
+                        "for the stack: stack overflow" % (name, rc, size["ram_static"], left))
             extra = "arena %d B" % need
             if "ram_static" in size:
                 extra += ", static %s B" % size["ram_static"]
