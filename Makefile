@@ -51,6 +51,8 @@ all-targets: $(ALL_TARGETS)
 # Every step logs to build/logs/<step>.log; the summary adds up the
 # "N passed, N failed" lines (and pytest's) and fails if any failed.
 test: $(SETUP)
+	@$(PY) -c "import os, sys, rast8; sys.exit(os.path.realpath(rast8.__file__).startswith(os.path.realpath('host')) == 0)" \
+	  2>/dev/null || bash scripts/setup.sh   # the venv's rast8 must be this checkout's
 	@rm -rf $(BUILD)/logs && mkdir -p $(BUILD)/logs
 	@$(MAKE) --no-print-directory -k $(TEST_STEPS); rc=$$?; \
 	  bash scripts/summarize.sh $(BUILD)/logs; src=$$?; \

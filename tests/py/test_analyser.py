@@ -35,7 +35,7 @@ def test_auto_picks_the_cheapest_exact_method(emu, tmp_path, scene):
 
 def test_auto_band_fits_the_ram_budget(emu, tmp_path):
     sizes = {}
-    for ram in (1700, 2400, 8000):
+    for ram in (1400, 2400, 8000):
         r = subprocess.run([emu, "--scene", "cube", "--method", "auto", "--ram", str(ram),
                             "--frames", "1", "--out", str(tmp_path / "c.bin")],
                            capture_output=True, text=True)
@@ -44,8 +44,8 @@ def test_auto_band_fits_the_ram_budget(emu, tmp_path):
         used = int(re.search(r"RAM (\d+) of (\d+) bytes", r.stderr).group(1))
         assert band % 8 == 0 and used <= ram
         sizes[ram] = band
-    assert sizes[1700] <= sizes[2400] <= sizes[8000]
-    assert sizes[1700] == 8 and sizes[8000] == 64
+    assert sizes[1400] <= sizes[2400] <= sizes[8000]
+    assert sizes[1400] == 8 and sizes[8000] == 64
 
 
 def test_auto_says_when_nothing_fits(emu, tmp_path):
