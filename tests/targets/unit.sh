@@ -13,6 +13,7 @@ cd "$(dirname "$0")/../.."
 tgt=$1; shift
 # build the test programs here, so build errors land in this step's log
 # (serialised with the other steps' builds)
+mkdir -p build/x
 env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL flock build/x/.lock \
   make -s --no-print-directory -j2 -k build/emu/avrsim "$@" 2>&1 | grep -v "^SKIP"
 mkdir -p build/x
