@@ -184,7 +184,7 @@ xtest-6502:
 	@bash scripts/run-step.sh xunit-6502 bash tests/targets/unit.sh 6502 $(XT_6502)
 xtest-z80:
 	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
-XTEST_TIMEOUT ?= 30
+XTEST_TIMEOUT ?= 300
 
 # Bit identity: every scene x method that fits, per target, vs the host.
 xident-%:
@@ -193,7 +193,7 @@ xident-%:
 fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
-TEST_STEPS += xtest-avr xtest-6502 xident-avr328 xident-avr1284 xident-6502 xident-z80
+TEST_STEPS += xtest-avr xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80
 
 # ---- benchmark
 bench: $(SETUP)

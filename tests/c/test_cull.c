@@ -45,6 +45,7 @@ static void test_culls_agree_on_random_triangles(void)
     static r8_svert sv[3];
     static const r8_u16 idx[3] = {0, 1, 2};
     r8_camera cam;
+    r8_vec3l c;   /* function scope: SDCC 4.2 overlays a block-scope struct on cam */
     int n, checked = 0, fronts = 0;
     r8_camera_init(&cam, 128, 64, 100, 16);
     for (n = 0; n < 600; n++) {
@@ -54,7 +55,6 @@ static void test_culls_agree_on_random_triangles(void)
         r8_span sp;
         int judd_front = 0, nf;
         for (k = 0; k < 3; k++) {
-            r8_vec3l c;
             v[k].x = rnd(-90, 90);
             v[k].y = rnd(-50, 50);
             v[k].z = rnd(120, 300);

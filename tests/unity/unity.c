@@ -46,7 +46,10 @@ static void fail_head(int line)
     UNITY_OUTPUT_CHAR(':');
     unity_print_long(line);
     UNITY_OUTPUT_CHAR(':');
-    unity_print(u_name ? u_name : "?");
+    if (u_name)           /* no ?: here: cc65 2.19 rejects it */
+        unity_print(u_name);
+    else
+        unity_print("?");
     unity_print(":FAIL: ");
 }
 
