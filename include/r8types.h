@@ -1,6 +1,6 @@
 /* r8types.h - the one place rast8 picks its integer types.
  *
- * Built on <limits.h> only (no <stdint.h>): the library must compile with
+ * Built on <limits.h> only (not the C99 fixed-width header): the library must compile with
  * gcc/clang on a 64-bit host (int 32, long 64), avr-gcc, cc65 and sdcc
  * (int 16, long 32, plain char unsigned on cc65 and sdcc).
  * Never do arithmetic on plain char; use r8_u8 / r8_s8.

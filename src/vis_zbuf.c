@@ -77,15 +77,13 @@ static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
 }
 
 
+/* No depth test, Gouraud shading (cull only and painter's). */
 void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
     pixw w;
-    if (!(st->attrs & R8_ATTR_S)) {
-        r8_fb_span_dither(fb, sp->y, sp->x0, sp->x1, p->shade, 0);
-        return;
-    }
+    (void)p;   /* flat and Lambert spans go through r8_scan_fill */
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
     pixw_init(&w, fb, sp->y);
