@@ -10,7 +10,7 @@ CC      := gcc
 endif
 STRICT  := -std=c89 -pedantic -Wall -Wextra -Werror
 CFLAGS  ?= -O2 -g
-INC     := -Iinclude
+INC     := -Iinclude -Iscenes
 VENV    := .venv
 PY      := $(VENV)/bin/python
 SETUP   := $(VENV)/.rast8-setup
@@ -18,9 +18,15 @@ SETUP   := $(VENV)/.rast8-setup
 LIB_SRC := $(sort $(wildcard src/*.c))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/obj/%.o)
 LIB     := $(BUILD)/librast8.a
+# The built-in demo scenes (scenes/*.c, generated): not library code;
+# programs that use them link this archive before the library.
+SCENE_SRC := $(sort $(wildcard scenes/*.c))
+SCENE_OBJ := $(SCENE_SRC:scenes/%.c=$(BUILD)/obj/scenes/%.o)
+SCENELIB  := $(BUILD)/librast8scenes.a
+LIBS      := $(SCENELIB) $(LIB)
 
 TEST_STEPS :=
-ALL_TARGETS := $(LIB)
+ALL_TARGETS := $(LIB) $(SCENELIB)
 
 .PHONY: all test setup clean demo bench golden lint chart fuzz
 all: all-targets
@@ -29,6 +35,14 @@ $(BUILD)/obj/%.o: src/%.c $(wildcard include/*.h src/*.h) | $(BUILD)/obj
 	$(CC) $(STRICT) $(CFLAGS) $(INC) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/obj/scenes/%.o: scenes/%.c scenes/demo.h $(wildcard include/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(STRICT) $(CFLAGS) $(INC) -c $< -o $@
+
+$(SCENELIB): $(SCENE_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 

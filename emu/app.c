@@ -7,6 +7,7 @@
 static r8_tx tx;
 static r8_render ren;
 static r8_fb band_fb;
+static r8_demo_run run;
 
 /* Default IDX8 palette: 17 grey levels for shade indices 0..16. */
 static const r8_u8 grey17[17 * 3] = {
@@ -18,6 +19,7 @@ static const r8_u8 grey17[17 * 3] = {
 
 void app_defaults(app_cfg *cfg)
 {
+    cfg->scene = R8_DEMO_CUBE;
     r8_render_defaults(&cfg->render);
     cfg->frames = 64;
     cfg->first_frame = 0;
@@ -48,13 +50,25 @@ static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
     }
 }
 
+r8_demo_run *app_demo(const app_cfg *cfg)
+{
+    if (r8_demo_setup(&run, r8_demo_get(cfg->scene), cfg->render.width))
+        return 0;
+    return &run;
+}
+
 int app_plan(const app_cfg *cfg, app_layout *lay)
 {
     r8_tx_cfg t;
+    r8_render_cfg rc;
     unsigned max = 0u - 1u;
+    if (!app_demo(cfg))
+        return -1;
+    rc = cfg->render;
+    rc.scene = &run.scene;
     tx_cfg_from(cfg, &t);
     lay->work = 0;
-    lay->work_size = r8_render_ram(&cfg->render); /* 0: cfg rejected */
+    lay->work_size = r8_render_ram(&rc); /* 0: cfg rejected */
     lay->band_size = r8_tx_band_bytes(&t);
     lay->scratch_size = r8_tx_scratch(&t);
     if (!lay->work_size || !lay->band_size || !lay->scratch_size ||
@@ -86,6 +100,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
     app_layout lay;
     r8_tx_cfg t;
+    r8_render_cfg rc;
     r8_u16 i, no;
     r8_s16 y;
     if (app_plan(cfg, &lay))
@@ -93,7 +108,9 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     if (mem_size < lay.total)
         return APP_E_RAM;
     tx_cfg_from(cfg, &t);
-    if (r8_render_init(&ren, &cfg->render, mem + lay.work, lay.work_size) ||
+    rc = cfg->render;
+    rc.scene = &run.scene;
+    if (r8_render_init(&ren, &rc, mem + lay.work, lay.work_size) ||
         r8_fb_init(&band_fb, mem + lay.band, t.format, t.width, t.height, 0, t.band) ||
         r8_tx_init(&tx, &t, mem + lay.scratch, lay.scratch_size, put, 0))
         return APP_E_CFG;
@@ -102,7 +119,8 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     for (i = 0; !cfg->frames || i < cfg->frames; i++) {
         no = (r8_u16)(cfg->first_frame + i);
         plat_mark(PLAT_MARK_FRAME_BEGIN);
-        r8_render_frame(&ren, no);
+        r8_demo_pose(&run, no);
+        r8_render_frame(&ren, &run.cam);
         r8_tx_frame_begin(&tx, no);
         for (y = 0; y < t.height; y = (r8_s16)(y + t.band)) {
             r8_fb_set_band(&band_fb, y);

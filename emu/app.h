@@ -18,8 +18,9 @@
  * byte the display sends (a REQUEST packet asks for a full frame).
  *
  * Markers: PLAT_MARK_START once after setup, PLAT_MARK_FRAME_BEGIN
- * before r8_render_frame, PLAT_MARK_FRAME_END after the frame's last
- * band is sent, PLAT_MARK_DONE before app_run returns.
+ * before the frame's poses and r8_render_frame, PLAT_MARK_FRAME_END
+ * after the frame's last band is sent, PLAT_MARK_DONE before app_run
+ * returns.
  */
 #ifndef APP_H
 #define APP_H
@@ -29,9 +30,12 @@
 #include "r8render.h"
 #include "r8codec.h"
 #include "r8wire.h"
+#include "demo.h"
 
 typedef struct app_cfg {
-    r8_render_cfg render;   /* scene, method, shading, format, size, band */
+    r8_u8 scene;            /* R8_DEMO_*: the built-in scene to spin */
+    r8_render_cfg render;   /* method, shading, format, size, band (the app
+                               sets render.scene to its demo's scene) */
     r8_u16 frames;          /* frames to send; 0 = forever */
     r8_u16 first_frame;     /* number of the first frame */
     r8_u8 codec;            /* R8_CODEC_RLE (default), _LZ77, _RAW */
@@ -51,9 +55,13 @@ typedef struct app_cfg {
 #define APP_E_CFG 1     /* invalid configuration */
 #define APP_E_RAM 2     /* arena smaller than app_ram(cfg) */
 
-/* Defaults: r8_render_defaults (cube, PAGE1 128x64, band 8), 64 frames,
- * RLE, full frame every 32, dirty bands on. */
+/* Defaults: the cube, r8_render_defaults (PAGE1 128x64, band 8), 64
+ * frames, RLE, full frame every 32, dirty bands on. */
 void app_defaults(app_cfg *cfg);
+
+/* The demo cfg spins, set up at frame 0: objects, scene, camera (0 if
+ * cfg->scene is unknown or not linked in this build). */
+r8_demo_run *app_demo(const app_cfg *cfg);
 
 /* Arena layout: offsets and sizes of the three parts. */
 typedef struct app_layout {

@@ -1,6 +1,6 @@
 /* fw_app.c - the demo firmware's main on every target: emu/app.c's loop
  * over a static arena sized for this scene and method on this target.
- *   FW_SCENE, FW_METHOD  R8_SCENE_*, R8_VIS_*               (default 0, 0)
+ *   FW_SCENE, FW_METHOD  R8_DEMO_*, R8_VIS_*               (default 0, 0)
  *   FW_FRAMES            frames to stream                   (default 4)
  *   FW_RAM               app_ram(cfg) measured on the target by
  *                        fw_sizes.c (mk/targets.mk passes it in)
@@ -31,7 +31,8 @@ int main(int argc, char **argv)
     unsigned need;
     plat_init();
     app_defaults(&cfg);
-    cfg.render.scene = (r8_u8)(argc > 1 ? atoi(argv[1]) : FW_SCENE);
+    cfg.render.clip = 0;   /* as the target builds: no clipper (fw_trim.c) */
+    cfg.scene = (r8_u8)(argc > 1 ? atoi(argv[1]) : FW_SCENE);
     cfg.render.method = (r8_u8)(argc > 2 ? atoi(argv[2]) : FW_METHOD);
     cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
     need = app_ram(&cfg);
@@ -51,7 +52,8 @@ int main(void)
 {
     plat_init();
     app_defaults(&cfg);
-    cfg.render.scene = FW_SCENE;
+    cfg.render.clip = 0;   /* built without the clipper (fw_trim.c) */
+    cfg.scene = FW_SCENE;
     cfg.render.method = FW_METHOD;
     cfg.frames = FW_FRAMES;
     plat_exit(app_run(&cfg, mem, sizeof mem));

@@ -4,9 +4,9 @@
  * between consecutive markers.  The stream gets one line per piece with
  * the unit count it covers, so cycles / units gives the per-unit cost:
  *   span   r8_fb_span_dither, PAGE1, 120-px spans x 64 rows   (pixels)
- *   fill   r8_scan_fill of a 100x56-px triangle, PAGE1 band    (pixels)
+ *   fill   r8_scanx_fill of a 100x56-px triangle, PAGE1 band   (pixels)
  *   edges  r8_scan_next over a 56-row triangle                 (rows)
- *   vert   r8_mat_apply + r8_project, 64 vertices              (vertices)
+ *   vert   r8_mat_apply16 + r8_project, 64 vertices            (vertices)
  *   crc    r8_crc16_update over 1024 bytes                     (bytes)
  *   rle    r8_rle_encode of a 1024-byte rendered-like frame    (bytes)
  */
@@ -24,7 +24,7 @@ static r8_scan sc;
 static r8_span sp;
 static r8_svert sv[3];
 static const r8_u16 idx[3] = {0, 1, 2};
-static r8_camera cam;
+static r8_proj cam;
 static r8_mat3 m;
 static r8_vec3 v;
 static r8_vec3l vl;
@@ -72,7 +72,7 @@ int main(void)
     r8_fb_clear(&fb, 0);
     r8_scan_begin(&sc, sv, idx, 3, 0, 0);
     plat_mark(12);
-    r8_scan_fill(&sc, 64, 1, &fb, 7);
+    r8_scanx_fill(&sc.c, 64, 1, &fb, 7);
     plat_mark(13);
     r8_fb_clear(&fb, 0);
     put_u("fill px=", (unsigned long)r8_fill_poly(&fb, sv, idx, 3, 1));
@@ -85,7 +85,7 @@ int main(void)
     plat_mark(15);
     put_u("edges rows=", (unsigned long)rows);
 
-    r8_camera_init(&cam, 128, 64, 100, 16);
+    r8_proj_init(&cam, 128, 64, 100, 16L << R8_CFRAC);
     r8_mat_rotate(&m, 10, 20, 30);
     plat_mark(16);
     for (i = 0; i < 64; i++) {
@@ -93,10 +93,8 @@ int main(void)
         v.x = (r8_s16)(i - 32);
         v.y = (r8_s16)(20 - i);
         v.z = (r8_s16)(i * 2 - 60);
-        r8_mat_apply(&m, &v, &vl);
-        vl.x = r8_asr14(vl.x);
-        vl.y = r8_asr14(vl.y);
-        vl.z = r8_asr14(vl.z) + 220;
+        r8_mat_apply16(&m, &v, &vl);
+        vl.z += 220L << R8_CFRAC;
         r8_project(&cam, &vl, &sx, &sy);
         sink = (r8_u16)(sx + sy);
     }

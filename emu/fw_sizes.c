@@ -26,7 +26,9 @@ static void put_u(unsigned v)
 }
 
 #ifndef FW_HAVE_APP
+#include "demo.h"
 static r8_render_cfg cfg;
+static r8_demo_run run;
 #endif
 
 int main(void)
@@ -34,10 +36,10 @@ int main(void)
     r8_u8 s, m;
     plat_init();
 #ifdef FW_SCENE
-    /* linked with one scene's table (emu/scene_strip.py): that scene only */
+    /* linked with one scene (emu/scene_strip.py): that scene only */
     for (s = FW_SCENE; s == FW_SCENE; s++)
 #else
-    for (s = 0; s < R8_SCENE_COUNT; s++)
+    for (s = 0; s < R8_DEMO_COUNT; s++)
 #endif
         for (m = 0; m < R8_VIS_COUNT; m++) {
             put_u(s);
@@ -46,12 +48,14 @@ int main(void)
             plat_putc(' ');
 #ifdef FW_HAVE_APP
             app_defaults(&acfg);
-            acfg.render.scene = s;
+            acfg.render.clip = 0;   /* as fw_app.c */
+            acfg.scene = s;
             acfg.render.method = m;
             put_u(app_ram(&acfg));
 #else
             r8_render_defaults(&cfg);
-            cfg.scene = s;
+            cfg.scene = &run.scene;
+            r8_demo_setup(&run, r8_demo_get(s), cfg.width);
             cfg.method = m;
             put_u(r8_render_ram(&cfg) + R8_FB_PAGE1_BYTES(128, 8));
 #endif

@@ -5,8 +5,9 @@
  *   FW_TRIM_LZ77  the firmware streams with RLE (app_defaults), so the
  *                 LZ77 codec (src/lz77.c) is never called: stubs return
  *                 R8_E_ARG ("codec not built in").
- *   FW_TRIM_SBUF  the method is not R8_VIS_SBUF, and src/render.c calls
- *                 the S-buffer (src/vis_sbuf.c) only for that method.
+ *   FW_RENDER     src/render.c itself, built with this firmware's
+ *                 R8_NO_* switches (docs/benchmarks.md: the flash each
+ *                 part costs).
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -26,14 +27,11 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     return R8_E_ARG;
 }
 #endif
-#ifdef FW_TRIM_SBUF
-#include "r8int.h"
-void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
-{
-    (void)st; (void)fb; (void)p; (void)sp;
-}
-void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb)
-{
-    (void)st; (void)fb;
-}
+#ifdef FW_RENDER
+/* The renderer compiled into the firmware with its switches (fwdefs.sh:
+ * -DR8_NO_PAINTER, -DR8_NO_ZBUF, ... for every method this firmware does
+ * not use): the archive's render.o is then not linked, nor are the
+ * visibility methods, clipper or run-time normals it would pull in. */
+#include "render.c"
+#include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

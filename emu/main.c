@@ -49,8 +49,8 @@ static void usage(FILE *f)
 "firmware config:\n"
 "  --scene NAME      scene (default cube):",
             prog, R8_WIRE_VERSION);
-    for (i = 0; i < R8_SCENE_COUNT; i++)
-        fprintf(f, " %s", r8_scene_name((r8_u8)i));
+    for (i = 0; i < R8_DEMO_COUNT; i++)
+        fprintf(f, " %s", r8_demo_name((r8_u8)i));
     fprintf(f, "\n  --method NAME     visibility method (default cull): auto");
     for (i = 0; i < R8_VIS_COUNT; i++)
         fprintf(f, " %s", r8_method_name((r8_u8)i));
@@ -299,14 +299,19 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
      * whole app fits (the encoder's buffers grow with the band) */
     for (extra = 0; ; extra += 32) {
         r8_render_cfg rc = cfg->render;
+        r8_demo_run *run = app_demo(cfg);
         rc.method = R8_VIS_AUTO;
         if (!band_given)
             rc.band = 0;
-        if (budget - extra <= 0 || r8_analyse(&rc, (unsigned)(budget - extra), &a)) {
+        if (run)
+            rc.scene = &run->scene;
+        if (budget - extra <= 0 || !run ||
+            r8_analyse(&rc, &run->cam, 0, (unsigned)(budget - extra), &a)) {
             fprintf(stderr, "%s: --method auto: nothing fits %ld bytes of RAM for scene %s\n",
-                    prog, budget, r8_scene_name(cfg->render.scene));
+                    prog, budget, r8_demo_name(cfg->scene));
             exit(3);
         }
+        rc.scene = 0;
         cfg->render = rc;
         if (app_plan(cfg, &lay) || (long)lay.total <= budget)
             break;                      /* (a bad layout is reported by the caller) */
@@ -314,7 +319,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
     if (!quiet)
         fprintf(stderr, "%s: analyser: scene %s -> method %s (%s), band %d rows, "
                 "renderer+band %u bytes; depth range z %ld..%ld, camera coordinates "
-                "need %d bits\n", prog, r8_scene_name(cfg->render.scene),
+                "need %d bits\n", prog, r8_demo_name(cfg->scene),
                 r8_method_name(a.method), why[a.why < 6 ? a.why : 0], a.band, a.ram,
                 (long)a.znear, (long)a.zfar, a.coord_bits);
 }
@@ -364,9 +369,9 @@ int main(int argc, char **argv)
         case O_BAUD: baud = num("--baud", optarg, 0, 100000000L); break;
         case O_RAM: ram = num("--ram", optarg, 1, 1L << 30); break;
         case O_SCENE:
-            if ((v = r8_scene_by_name(optarg)) < 0)
+            if ((v = r8_demo_by_name(optarg)) < 0)
                 die(2, "--scene: unknown scene '%s' (see --help)", optarg);
-            cfg.render.scene = (r8_u8)v;
+            cfg.scene = (r8_u8)v;
             break;
         case O_METHOD:
             if ((v = r8_method_by_name(optarg)) < 0)
@@ -409,10 +414,12 @@ int main(int argc, char **argv)
     if (cfg.render.method == R8_VIS_AUTO)
         analyse(&cfg, band_given, ram, quiet);
 
+    if (app_demo(&cfg))
+        cfg.render.scene = &app_demo(&cfg)->scene;
     if (!r8_render_ram(&cfg.render)) {
         fprintf(stderr, "%s: invalid configuration: the renderer does not accept "
                 "scene %s, method %s, %dx%d, format %d, band %d\n", prog,
-                r8_scene_name(cfg.render.scene), r8_method_name(cfg.render.method),
+                r8_demo_name(cfg.scene), r8_method_name(cfg.render.method),
                 cfg.render.width, cfg.render.height, cfg.render.format, cfg.render.band);
         return 2;
     }

@@ -68,7 +68,7 @@ void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
  * MSB = pixel x % 8 == 0, period 4. */
 r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y);
 /* The 4 dither thresholds of frame row y: level s lights pixel x iff
- * s > t[x & 3]. */
+ * s > t[x & 3].  The table is R8_FLASH data: read it with R8_RDU8. */
 const r8_u8 *r8_fb_dither_thresholds(r8_s16 y);
 
 /* Page-layout run: n column bytes from p, bit mask m, 4-periodic

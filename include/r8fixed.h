@@ -7,7 +7,8 @@
  *   unit normals,
  *   light vector  Q1.14 in r8_s16
  *   model coords  r8_s16 integer units
- *   camera coords r8_s32 integer units (rotation can grow |v| by sqrt 3)
+ *   camera coords r8_s32 with R8_CFRAC (4) fraction bits: 16 = one model
+ *                 unit (rotation can grow |v| by sqrt 3)
  *   screen coords r8_s16 12.4: 4 subpixel bits (16 = one pixel); pixel
  *                 centres sit at 16*c + 8
  *   depth         r8_s16 0..32767, affine in 1/z (so linear in screen
@@ -75,22 +76,42 @@ void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az);
 void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c);
 /* out = m * v (v integer units, out 32-bit, rounded). */
 void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out);
+/* out = m * v in camera units (v integer units, out << R8_CFRAC, rounded). */
+void r8_mat_apply16(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out);
 /* out = transpose(m) * v for a Q1.14 v (the inverse rotation), Q1.14. */
 void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out);
 
-/* Camera: perspective projection to 12.4 screen coordinates. */
-typedef struct r8_camera {
+/* Camera-space fraction bits: camera coordinates are model units * 16. */
+#define R8_CFRAC 4
+#define R8_CSCALE 16   /* 1 << R8_CFRAC: multiply signed values by it */
+
+/* Perspective projection to 12.4 screen coordinates (the renderer's
+ * internal view of a camera; the application's camera is r8_camera in
+ * r8render.h). */
+typedef struct r8_proj {
     r8_s16 cx, cy;   /* screen centre, 12.4 */
     r8_s16 focal;    /* focal length in pixels, 1..2047 */
-    r8_s32 znear;    /* near plane, camera units, > 0 */
+    r8_s32 znear;    /* near plane, camera units (<< R8_CFRAC), > 0 */
     r8_s16 guard;    /* guard band half-width in pixels (|sx-cx| <= guard) */
-    r8_s32 xlimit;   /* |x| below this projects with one native division */
-} r8_camera;
+    r8_s16 fn;       /* 16 * focal normalised to [2^14, 2^15) ... */
+    r8_u8 fsh;       /* ... by this left shift */
+} r8_proj;
 
-void r8_camera_init(r8_camera *c, r8_s16 width, r8_s16 height, r8_s16 focal,
-                    r8_s32 znear);
-/* Project v (z >= znear, inside the guard band) to 12.4 screen coords:
- * sx = cx + round(16 * focal * x / z). */
-void r8_project(const r8_camera *c, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy);
+void r8_proj_init(r8_proj *p, r8_s16 width, r8_s16 height, r8_s16 focal,
+                  r8_s32 znear);
+/* Project camera-space v (28.4, z >= znear) to 12.4 screen coordinates:
+ * sx = cx + 16 * focal * x / z (rounded, relative error below 2^-14,
+ * no division: a 129-entry reciprocal table in flash and three 16x16
+ * products).  Returns 0, or 1 (sx, sy unset) when v lies outside the
+ * guard band. */
+int r8_project(const r8_proj *p, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy);
+/* The same with the reciprocal of v->z already taken (r8_recip). */
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy);
+/* 2^31 / z to about 16 bits: returns m in [2^15, 2^16) and *e with
+ * 1/z ~= m * 2^(*e - 31), for z >= 1. */
+r8_u16 r8_recip(r8_s32 z, r8_s8 *e);
+/* c = transpose(a). */
+void r8_mat_transpose(const r8_mat3 *a, r8_mat3 *c);
 
 #endif

@@ -56,24 +56,38 @@ typedef struct r8_svert {
 #define R8_ATTR_D 1
 #define R8_ATTR_S 2
 
+/* One edge of a polygon being scanned.  x.val is the column of the
+ * first pixel centre at or right of the edge on the current row, stepped
+ * exactly from row to row (an exact DDA in pixel columns: no rounding
+ * per row, no division per row). */
 typedef struct r8_edge {
-    r8_interp x, d, s;
+    r8_interp x;
     r8_s16 yend;  /* first row this edge does not cover */
     r8_u8 vi;     /* polygon position of the edge's lower vertex */
 } r8_edge;
 
-/* Resumable scan conversion of one convex polygon, top to bottom: a
- * polygon can be scanned band by band without re-walking its edges. */
-typedef struct r8_scan {
-    const r8_svert *v;
-    const r8_u16 *idx;  /* polygon: v[idx[0]] .. v[idx[n-1]], clockwise */
+/* Resumable scan conversion of one convex polygon, top to bottom, edges
+ * only (no attributes): a polygon can be scanned band by band without
+ * re-walking its edges.  Vertex k of the polygon is v[idx[k] << vsh]
+ * (x, 12.4) and the r8_s16 after it (y); with vsh = 2, depth and shade
+ * follow at +2 and +3 (an r8_svert array). */
+typedef struct r8_scanx {
+    const r8_s16 *v;
+    const r8_u16 *idx;  /* polygon: clockwise on screen for a front face */
     r8_u8 n;
-    r8_u8 attrs;        /* R8_ATTR_* to interpolate */
+    r8_u8 vsh;          /* log2 of r8_s16 per vertex: 1 or 2 */
     r8_u8 backface;     /* set when Judd's test found left right of right */
     r8_u8 front;        /* set when Judd's test found a front face */
     r8_s16 y;           /* next row */
     r8_s16 ybot;        /* first row below the polygon */
     r8_edge l, r;
+} r8_scanx;
+
+/* The same with depth and shade interpolated along the edges. */
+typedef struct r8_scan {
+    r8_scanx c;
+    r8_u8 attrs;        /* R8_ATTR_* to interpolate */
+    r8_interp ld, ls, rd, rs;
 } r8_scan;
 
 /* One span: pixels [x0, x1) of row y, with attributes at the left and
@@ -83,22 +97,26 @@ typedef struct r8_span {
     r8_s16 dl, dr, sl, sr;
 } r8_span;
 
-/* Start scanning a polygon of n (3..255) vertices at row ystart (rows
- * above it are skipped without being walked).  Returns the number of
- * rows left to scan (0: nothing to draw). */
+/* Start scanning a polygon of n (3..255) vertices of v at row ystart
+ * (rows above it are skipped).  Returns the number of rows left to
+ * scan (0: nothing to draw). */
 r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
                      r8_u8 n, r8_u8 attrs, r8_s16 ystart);
 /* Next non-empty span on a row < ylimit; returns 0 when none is left
  * before ylimit (the scan can resume later with a larger ylimit).
  * With judd != 0 a row whose left edge lies right of its right edge
- * marks the polygon as a back face (s->backface) and ends it. */
+ * marks the polygon as a back face (s->c.backface) and ends it: back
+ * faces draw nothing, front faces exactly what judd == 0 draws. */
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out);
 
+/* Edges only, over vertices of 2 << vsh bytes (x, y first). */
+r8_s16 r8_scanx_begin(r8_scanx *s, const r8_s16 *v, r8_u8 vsh,
+                      const r8_u16 *idx, r8_u8 n, r8_s16 ystart);
 /* Scan rows < ylimit and fill every span with dither level `level` (no
  * depth test): the same pixels as r8_scan_next + r8_fb_span_dither, in
  * one loop (the fast path for cull-only and painter's with flat or
  * Lambert shading).  fb's band must cover the rows scanned. */
-void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
 
 /* Row of the first pixel centre at or below subpixel y: ceil((y-8)/16). */
 r8_s16 r8_row_of(r8_s16 y);

@@ -1,10 +1,15 @@
-/* r8scene.h - the scene model: meshes with shared vertices (indexed
- * faces), per-face colour, and objects placing a mesh with a transform.
+/* r8scene.h - what the renderer draws: meshes (flash data), objects that
+ * place a mesh with a pose, and the scene the application owns.
  *
- * Camera: at the origin looking down +z, x right, y down (camera space =
- * world space).  Front faces list their vertices clockwise as seen from
- * outside (on screen, y down).  A face has 3 or 4 vertices and must be
- * planar and convex.
+ * World and camera space: x right, y down, z forward (a camera with no
+ * rotation looks down +z).  Front faces list their vertices clockwise as
+ * seen from outside (on screen, y down).  A face has 3 or 4 vertices and
+ * must be planar and convex (the scene converter splits other faces).
+ *
+ * Memory: a mesh's arrays are constant data declared R8_FLASH (r8flash.h)
+ * and read through R8_RD*, so on AVR they cost flash, not SRAM.  The
+ * r8_mesh, r8_object and r8_scene structs themselves are small and live
+ * in RAM; the application changes poses between frames.
  */
 #ifndef R8SCENE_H
 #define R8SCENE_H
@@ -21,32 +26,56 @@ typedef struct r8_face {
 } r8_face;
 
 typedef struct r8_mesh {
-    const r8_s16 *verts;   /* x, y, z per vertex, model units */
-    const r8_face *faces;
-    r8_u16 nverts;         /* at most 255 (face indices are bytes) */
+    const r8_s16 *verts;    /* R8_FLASH: x, y, z per vertex, model units */
+    const r8_face *faces;   /* R8_FLASH */
+    const r8_s16 *normals;  /* R8_FLASH: outward unit face normals, Q1.14,
+                               x, y, z per face; 0: r8_render_init computes
+                               them into work memory (r8_render_ram counts
+                               it) */
+    r8_u16 nverts;          /* at most 255 (face indices are bytes) */
     r8_u16 nfaces;
-    r8_u8 convex;          /* closed and convex: backface cull is exact */
-    r8_s16 radius;         /* bounding sphere about the model origin */
+    r8_u8 convex;           /* closed and convex: backface cull is exact */
+    r8_s16 radius;          /* bounding sphere about the model origin */
 } r8_mesh;
+
+/* r8_pose.flags */
+#define R8_POSE_HIDDEN 1    /* not drawn this frame */
+#define R8_POSE_MATRIX 2    /* m is the rotation (else ax, ay, az) */
+#define R8_POSE_COLOUR 4    /* colour replaces every face's own */
+
+/* Where an object is: model space -> world space is rotation, then
+ * translation by (x, y, z).  The rotation is Rx(ax) Ry(ay) Rz(az)
+ * (angles in 256 steps per turn: spun about its own z, then y, then x),
+ * or, when flags has R8_POSE_MATRIX, the caller's Q1.14 matrix *m. */
+typedef struct r8_pose {
+    r8_s16 x, y, z;         /* position, world units */
+    r8_u8 ax, ay, az;       /* rotation angles */
+    r8_u8 flags;            /* R8_POSE_* */
+    r8_u8 colour;           /* level 0..16 with R8_POSE_COLOUR */
+    const r8_mat3 *m;       /* rotation with R8_POSE_MATRIX (caller's) */
+} r8_pose;
 
 typedef struct r8_object {
     const r8_mesh *mesh;
-    r8_s16 x, y, z;            /* position in camera space */
-    r8_u8 ax, ay, az;          /* angles at frame 0 (256 per turn) */
-    r8_s8 sx, sy, sz;          /* angle step per frame */
+    r8_pose pose;
 } r8_object;
 
+/* The scene: the application's objects and the light.  Poses are read
+ * at every r8_render_frame; the object list itself (count, meshes) is
+ * fixed after r8_render_init. */
 typedef struct r8_scene {
-    const char *name;
-    const r8_object *objects;
+    r8_object *objects;
     r8_u8 nobjects;
-    r8_s16 focal_num;          /* focal length = width * focal_num / 64 px */
-    r8_s16 znear;              /* near plane */
-    r8_s16 ambient;            /* Q1.14 ambient light for Lambert/Gouraud */
-    r8_vec3 light;             /* unit vector towards the light, Q1.14 */
+    r8_s16 ambient;         /* Q1.14 ambient light for Lambert/Gouraud */
+    r8_vec3 light;          /* unit vector towards the light, world space, Q1.14 */
 } r8_scene;
 
-/* The built-in scenes (R8_SCENE_* in r8render.h); 0 if out of range. */
-const r8_scene *r8_scene_get(r8_u8 id);
+/* A pose at the origin with no rotation, visible, own colours. */
+void r8_pose_identity(r8_pose *p);
+
+/* Outward unit face normals (Q1.14) of mesh m into out[3 * m->nfaces]:
+ * what the scene converter stores in r8_mesh.normals, for meshes built
+ * at run time. */
+void r8_mesh_normals(const r8_mesh *m, r8_s16 *out);
 
 #endif

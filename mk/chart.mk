@@ -12,11 +12,11 @@ R8PROBE := $(BUILD)/r8probe
 R8FILL  := $(BUILD)/r8fill
 ALL_TARGETS += $(R8PROBE) $(R8FILL)
 
-$(R8PROBE): tests/tools/r8probe.c $(LIB) $(wildcard include/*.h src/*.h)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+$(R8PROBE): tests/tools/r8probe.c $(LIBS) $(wildcard include/*.h src/*.h)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIBS) -o $@
 
 $(R8FILL): tests/tools/r8fill.c $(LIB) $(wildcard include/*.h)
-	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIBS) -o $@
 
 # tests/py/test_reference.py runs in mk/wire.mk's py-wire step (pytest on
 # tests/py) and needs the two tools.

@@ -14,20 +14,20 @@ TEST_DEPS := tests/unity/unity.c tests/unity/unity.h $(wildcard tests/c/*.h)
 
 ALL_TARGETS += $(TEST_BIN)
 
-$(BUILD)/tests/%: tests/c/%.c $(LIB) $(TEST_DEPS) $(wildcard src/*.h) | $(BUILD)/tests
-	$(CC) $(STRICT) $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB) -o $@
+$(BUILD)/tests/%: tests/c/%.c $(LIBS) $(TEST_DEPS) $(wildcard src/*.h) | $(BUILD)/tests
+	$(CC) $(STRICT) $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIBS) -o $@
 
-$(BUILD)/tests/%: tests/host/%.c $(LIB) $(TEST_DEPS) | $(BUILD)/tests
-	$(CC) -std=c99 -pedantic -Wall -Wextra -Werror $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB) -o $@
+$(BUILD)/tests/%: tests/host/%.c $(LIBS) $(TEST_DEPS) | $(BUILD)/tests
+	$(CC) -std=c99 -pedantic -Wall -Wextra -Werror $(CFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIBS) -o $@
 
 # Sanitizer build: library sources compiled in, not the release archive.
 $(BUILD)/asan/%: tests/c/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h src/*.h)
 	@mkdir -p $(dir $@)
 	clang $(STRICT) -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) -o $@
 
-$(BUILD)/asan/%: tests/host/%.c $(LIB_SRC) $(TEST_DEPS) $(wildcard include/*.h src/*.h)
+$(BUILD)/asan/%: tests/host/%.c $(LIB_SRC) $(SCENE_SRC) $(TEST_DEPS) $(wildcard include/*.h src/*.h scenes/*.h)
 	@mkdir -p $(dir $@)
-	clang -std=c99 -pedantic -Wall -Wextra -Werror -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) -o $@
+	clang -std=c99 -pedantic -Wall -Wextra -Werror -O1 -g $(SANFLAGS) $(TEST_INC) $< tests/unity/unity.c $(LIB_SRC) $(SCENE_SRC) -o $@
 
 .PHONY: test-unit test-asan lint test-lint test-strict test-cross
 test-unit: $(TEST_BIN)
@@ -57,8 +57,8 @@ TEST_STEPS += test-lint test-strict test-cross test-unit test-asan
 # r8dump: render built-in scenes on the host to raw bytes or PGM.
 R8DUMP := $(BUILD)/r8dump
 ALL_TARGETS += $(R8DUMP)
-$(R8DUMP): tests/tools/r8dump.c $(LIB) $(wildcard include/*.h)
-	$(CC) -std=c99 -O2 -Wall -Wextra -Werror $(INC) $< $(LIB) -o $@
+$(R8DUMP): tests/tools/r8dump.c $(LIBS) $(wildcard include/*.h)
+	$(CC) -std=c99 -O2 -Wall -Wextra -Werror $(INC) $< $(LIBS) -o $@
 
 # Golden frames: compared byte for byte; only `make golden` rewrites them.
 .PHONY: test-golden
@@ -70,7 +70,7 @@ test-golden: $(R8DUMP)
 
 TEST_STEPS += test-golden
 
-# Regenerate src/scene_data.c from host/rast8/scene.py and its .r8s files.
+# Regenerate scenes/*.c from host/rast8/scene.py and its .r8s files.
 .PHONY: scenes
 scenes: $(SETUP)
-	$(PY) -m rast8.scene c src/scene_data.c
+	$(PY) -m rast8.scene c scenes

@@ -24,7 +24,7 @@ XB       := $(BUILD)/x
 AVRSIM   := $(BUILD)/emu/avrsim
 FWHOST   := $(BUILD)/emu/fw-host
 XTARGETS := avr328 avr1284 6502 z80
-XHDRS    := $(wildcard include/*.h src/*.h) emu/plat.h $(wildcard emu/app.h)
+XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) emu/plat.h $(wildcard emu/app.h)
 XSCENES  := 0 1 2 3 4 5 6
 
 # The library as the targets see it: src/*.c plus emu/app.c.  The
@@ -63,14 +63,14 @@ $(AVRSIM): emu/avrsim.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
 
-$(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(XHDRS)
+$(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
-	$(CC) $(STRICT) -O2 -g $(INC) -Iemu -DFW_HOST $(FW_DEFS) -o $@ $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC)
+	$(CC) $(STRICT) -O2 -g $(INC) -Iemu -DFW_HOST $(FW_DEFS) -o $@ $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC)
 
 # ---- one scene's table (target independent)
-$(XB)/scenes/scene_%.c: src/scene_data.c emu/scene_strip.py
+$(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) emu/scene_strip.py
 	@mkdir -p $(dir $@)
-	python3 emu/scene_strip.py $* $< > $@
+	python3 emu/scene_strip.py $* > $@
 # keep chained intermediates (scene tables, plat/unity/scene objects)
 .SECONDARY: $(XSCENES:%=$(XB)/scenes/scene_%.c) \
   $(foreach t,avr328 avr1284 6502,$(XB)/$(t)/obj/unity_target.o $(XSCENES:%=$(XB)/$(t)/obj/scene_%.o)) \

@@ -11,8 +11,8 @@ EMU_HDR    := emu/app.h emu/plat.h emu/plat_host.h $(wildcard include/*.h)
 
 ALL_TARGETS += $(EMU) $(CODEC_TOOL)
 
-$(EMU): $(EMU_SRC) $(EMU_HDR) $(LIB)
-	$(CC) $(EMU_CFLAGS) $(INC) -Iemu $(EMU_SRC) $(LIB) -o $@
+$(EMU): $(EMU_SRC) $(EMU_HDR) $(LIBS)
+	$(CC) $(EMU_CFLAGS) $(INC) -Iemu $(EMU_SRC) $(LIBS) -o $@
 
 $(CODEC_TOOL): emu/codec_host.c $(wildcard include/*.h) $(LIB)
 	$(CC) $(EMU_CFLAGS) $(INC) emu/codec_host.c $(LIB) -o $@

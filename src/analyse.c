@@ -1,65 +1,97 @@
 /* analyse.c - model no more than a scene needs.  The analyser looks at a
- * scene's meshes and objects and picks the cheapest visibility method
- * that is exact for it:
+ * scene's meshes and objects, and at where the camera can be, and picks
+ * the cheapest visibility method that is exact for it:
  *   one convex mesh                      -> cull only (no depth memory)
  *   convex objects apart in depth, whose
- *   painter's buckets cannot interleave  -> painter's (jeffsort)
+ *   painter's buckets cannot interleave
+ *   from any allowed camera position     -> painter's (depth buckets)
  *   anything else (concave meshes,
- *   interpenetration, overlap in depth)  -> 16-bit z-buffer
- * then the largest band height that fits the RAM budget, and reports the
- * depth range and coordinate width that set the fixed-point scale. */
+ *   interpenetration, overlap in depth,
+ *   a camera that may turn anywhere)     -> 16-bit z-buffer
+ * then the largest band height (and scan-state pool) that fits the RAM
+ * budget, and reports the depth range and coordinate width that set the
+ * fixed-point scale.  Objects are taken at their current positions; they
+ * may turn about them (their bounding spheres do not move). */
 #include "r8int.h"
 
-/* The same depth mapping as r8_render_init, for a z range. */
-static void depth_consts(const r8_scene *sc, r8_s32 *zn, r8_s32 *zf, r8_s32 *c1, r8_s32 *c2)
+/* Camera-space z of world point p (world units) seen from a camera at q
+ * with world -> camera rotation c (row 3 only). */
+static r8_s32 cam_z(const r8_mat3 *c, const r8_object *ob, const r8_s16 *q)
 {
-    r8_u8 i;
-    *zn = 0x7FFFFFFFL;
-    *zf = 1;
-    for (i = 0; i < sc->nobjects; i++) {
-        const r8_object *ob = &sc->objects[i];
-        r8_s32 a = (r8_s32)ob->z - ob->mesh->radius, b = (r8_s32)ob->z + ob->mesh->radius;
-        if (a < *zn) *zn = a;
-        if (b > *zf) *zf = b;
+    r8_s32 s = 0, d;
+    r8_u8 k;
+    for (k = 0; k < 3; k++) {
+        d = (r8_s32)(&ob->pose.x)[k] - q[k];
+        d *= c->m[6 + k];
+        s += d;
     }
-    if (*zn < sc->znear)
-        *zn = sc->znear;
-    if (*zf <= *zn)
-        *zf = *zn + 1;
-    *c2 = r8_muldiv(32767L, *zn, *zf - *zn);
-    *c1 = r8_muldiv(*c2, *zf, 1);
+    return r8_asr32(s + 8192, 14);
 }
 
-static r8_s32 bucket(r8_s32 c1, r8_s32 c2, r8_s32 z)
+static void cam_rot(const r8_camera *cam, r8_mat3 *c)
 {
-    r8_s32 d;
-    if (z < 1)
-        z = 1;
-    d = c1 / z - c2;
-    if (d < 0) d = 0;
-    if (d > 32767) d = 32767;
-    return d >> 9;
+    if ((cam->flags & R8_CAM_MATRIX) && cam->m) {
+        *c = *cam->m;
+    } else {
+        r8_mat3 ry, rx, rz, a, t;
+        r8_mat_rotate(&ry, 0, cam->yaw, 0);
+        r8_mat_rotate(&rx, cam->pitch, 0, 0);
+        r8_mat_rotate(&rz, 0, 0, cam->roll);
+        r8_mat_mul(&rx, &rz, &a);
+        r8_mat_mul(&ry, &a, &t);
+        r8_mat_transpose(&t, c);
+    }
 }
 
-/* Painter's is exact when every object is convex and, taken in depth
- * order, each object's farthest point lands in a nearer bucket than the
- * next object's nearest point. */
-static int sortable(const r8_scene *sc, r8_s32 c1, r8_s32 c2)
+/* Corner k (0..7) of the camera box, or the camera itself. */
+static void corner(const r8_camera *cam, const r8_bound *b, r8_u8 k, r8_s16 *q)
 {
-    r8_u8 i, j;
+    if (!b || b->kind != R8_BOUND_BOX) {
+        q[0] = cam->x;
+        q[1] = cam->y;
+        q[2] = cam->z;
+        return;
+    }
+    q[0] = (k & 1) ? b->hi[0] : b->lo[0];
+    q[1] = (k & 2) ? b->hi[1] : b->lo[1];
+    q[2] = (k & 4) ? b->hi[2] : b->lo[2];
+}
+
+/* Painter's is exact when every object is convex and, for every camera
+ * position allowed, each pair of objects keeps one order with the
+ * nearer one's farthest point at least a whole bucket nearer than the
+ * other's nearest point (gaps are linear in the camera position: the
+ * box's corners bound them). */
+static int sortable(const r8_scene *sc, const r8_camera *cam, const r8_bound *b,
+                    const r8_mat3 *c, r8_s32 bucket)
+{
+    r8_u8 i, j, k, nk = (b && b->kind == R8_BOUND_BOX) ? 8 : 1;
+    if (b && b->kind == R8_BOUND_ANY)
+        return 0;
     for (i = 0; i < sc->nobjects; i++)
         if (!sc->objects[i].mesh->convex)
             return 0;
     for (i = 0; i < sc->nobjects; i++)
-        for (j = 0; j < sc->nobjects; j++) {
-            const r8_object *a = &sc->objects[i], *b = &sc->objects[j];
-            r8_s32 afar, bnear;
-            if (i == j || a->z > b->z)
-                continue;                 /* a is the nearer one */
-            afar = (r8_s32)a->z + a->mesh->radius;
-            bnear = (r8_s32)b->z - b->mesh->radius;
-            if (afar >= bnear || bucket(c1, c2, afar) <= bucket(c1, c2, bnear))
-                return 0;
+        for (j = (r8_u8)(i + 1); j < sc->nobjects; j++) {
+            const r8_object *a = &sc->objects[i], *o = &sc->objects[j];
+            int order = 0;
+            for (k = 0; k < nk; k++) {
+                r8_s16 q[3];
+                r8_s32 za, zb;
+                int now;
+                corner(cam, b, k, q);
+                za = cam_z(c, a, q);
+                zb = cam_z(c, o, q);
+                if (za + a->mesh->radius + bucket <= zb - o->mesh->radius)
+                    now = 1;            /* a in front of o */
+                else if (zb + o->mesh->radius + bucket <= za - a->mesh->radius)
+                    now = 2;
+                else
+                    return 0;
+                if (order && now != order)
+                    return 0;
+                order = now;
+            }
         }
     return 1;
 }
@@ -70,57 +102,86 @@ static unsigned need(r8_render_cfg *cfg)
     return r ? r + r8_fb_bytes(cfg->format, cfg->width, cfg->band) : 0;
 }
 
-/* Largest band that fits: the whole frame, else the largest multiple of
- * the method's row unit.  Returns 0 if none. */
+/* Largest band that fits (whole frame first, then smaller multiples of
+ * the method's row unit), each with the full pool, then with none.
+ * Returns 0 if none. */
 static r8_s16 fit_band(r8_render_cfg *cfg, unsigned budget)
 {
     r8_s16 unit = 1, h;
+    r8_u8 pool = cfg->pool, p;
     if (cfg->format == R8_FMT_PAGE1)
         unit = 8;
     else if (cfg->method == R8_VIS_BLOCK || cfg->method == R8_VIS_BLOCKMASK)
         unit = 4;
-    for (h = (r8_s16)(cfg->height - cfg->height % unit); h >= unit; h = (r8_s16)(h - unit)) {
-        unsigned n;
-        cfg->band = h;
-        n = need(cfg);
-        if (n && n <= budget)
-            return h;
+    for (p = 0; p < 2; p++) {
+        cfg->pool = p ? 0 : pool;
+        for (h = (r8_s16)(cfg->height - cfg->height % unit); h >= unit; h = (r8_s16)(h - unit)) {
+            unsigned n;
+            cfg->band = h;
+            n = need(cfg);
+            if (n && n <= budget)
+                return h;
+        }
     }
+    cfg->pool = pool;
     return 0;
 }
 
-int r8_analyse(r8_render_cfg *cfg, unsigned budget, r8_analysis *a)
+int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
+               unsigned budget, r8_analysis *a)
 {
     static const r8_u8 fallback[] = {
         R8_VIS_Z16, R8_VIS_SBUF, R8_VIS_Z8, R8_VIS_BLOCKMASK, R8_VIS_BLOCK
     };
-    const r8_scene *sc = r8_render_scene(cfg);
-    r8_s32 zn, zf, c1, c2, m = 0;
+    const r8_scene *sc = cfg->scene;
+    r8_mat3 c;
+    r8_s32 zn = 0x7FFFFFFFL, zf = 1, m = 0, bucket;
     r8_s16 given = cfg->band;
-    r8_u8 i, exact_method;
-    if (!sc)
+    r8_u8 i, k, exact_method, nk = (bound && bound->kind == R8_BOUND_BOX) ? 8 : 1;
+    if (!sc || !cam || sc->nobjects == 0)
         return -1;
-    depth_consts(sc, &zn, &zf, &c1, &c2);
-    a->znear = zn;
-    a->zfar = zf;
+    cam_rot(cam, &c);
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];
-        r8_s32 e = ob->mesh->radius;
-        e += ob->x < 0 ? -(r8_s32)ob->x : ob->x;
-        e += ob->y < 0 ? -(r8_s32)ob->y : ob->y;
-        e += ob->z < 0 ? -(r8_s32)ob->z : ob->z;
-        if (e > m)
-            m = e;
+        r8_s32 r = ob->mesh->radius;
+        for (k = 0; k < nk; k++) {
+            r8_s16 q[3];
+            r8_s32 z, e = r;
+            r8_u8 j;
+            corner(cam, bound, k, q);
+            for (j = 0; j < 3; j++) {
+                r8_s32 d = (r8_s32)(&ob->pose.x)[j] - q[j];
+                e += d < 0 ? -d : d;
+            }
+            if (bound && bound->kind == R8_BOUND_ANY)
+                z = -e + r;              /* any direction: centre depth +-e */
+            else
+                z = cam_z(&c, ob, q);
+            if (z - r < zn) zn = z - r;
+            if (bound && bound->kind == R8_BOUND_ANY)
+                z = e - r;
+            if (z + r > zf) zf = z + r;
+            if (e > m)
+                m = e;
+        }
     }
+    if (zn < cam->znear)
+        zn = cam->znear;
+    if (zf <= zn)
+        zf = zn + 1;
+    a->znear = zn;
+    a->zfar = zf;
     a->coord_bits = 1;
     while (m > 0) {
         a->coord_bits++;
         m >>= 1;
     }
+    /* one painter's bucket in world units over that depth range */
+    bucket = (zf - zn + R8_JEFF_BUCKETS - 1) / R8_JEFF_BUCKETS + 1;
     if (sc->nobjects == 1 && sc->objects[0].mesh->convex) {
         exact_method = R8_VIS_CULL;
         a->why = R8_WHY_CONVEX;
-    } else if (sortable(sc, c1, c2)) {
+    } else if (sortable(sc, cam, bound, &c, bucket)) {
         exact_method = R8_VIS_PAINTER;
         a->why = R8_WHY_SORTABLE;
     } else {
@@ -137,8 +198,15 @@ int r8_analyse(r8_render_cfg *cfg, unsigned budget, r8_analysis *a)
         unsigned n;
         cfg->band = given;
         n = need(cfg);
-        if (!n || n > budget)
-            given = 0;
+        if (!n || n > budget) {
+            r8_u8 pool = cfg->pool;
+            cfg->pool = 0;
+            n = need(cfg);
+            if (!n || n > budget) {
+                cfg->pool = pool;
+                given = 0;
+            }
+        }
     }
     if (given <= 0 && !fit_band(cfg, budget)) {
         if (a->why == R8_WHY_USER)
@@ -154,6 +222,7 @@ int r8_analyse(r8_render_cfg *cfg, unsigned budget, r8_analysis *a)
     }
     a->method = cfg->method;
     a->band = cfg->band;
+    a->pool = cfg->pool;
     a->ram = need(cfg);
     a->exact = cfg->method == exact_method || cfg->method == R8_VIS_Z16 ||
                (exact_method == R8_VIS_CULL && cfg->method != R8_VIS_BLOCK) ||

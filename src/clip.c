@@ -4,20 +4,25 @@
  * edges: inside points are kept, an edge that crosses the plane adds its
  * intersection.  Clipping to the screen itself is left to the scan
  * converter and the span fill (cheaper per span than per polygon here);
- * the guard band only keeps projected coordinates inside 12.4. */
+ * the guard band only keeps projected coordinates inside 12.4.  Kept
+ * original vertices reuse their screen vertex; only intersections are
+ * projected and appended to the vertex array. */
 #include "r8int.h"
 
+#define NO_SRC 0xFFFFu
+
 typedef struct clipv {
-    r8_s32 x, y, z;
-    r8_s16 s;
+    r8_s32 x, y, z;     /* camera space, << R8_CFRAC >> the polygon's shift */
+    r8_s16 s;           /* Gouraud shade */
+    r8_u16 src;         /* screen vertex it came from, or NO_SRC */
 } clipv;
 
-static r8_s32 plane_dist(const r8_camera *cam, r8_u8 plane, const clipv *v)
+static r8_s32 plane_dist(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv *v)
 {
     r8_s32 gz = v->z * cam->guard;
     switch (plane) {
     case 0:
-        return v->z - cam->znear;
+        return v->z - zn;
     case 1:
         return gz + v->x * cam->focal;
     case 2:
@@ -30,13 +35,13 @@ static r8_s32 plane_dist(const r8_camera *cam, r8_u8 plane, const clipv *v)
 }
 
 /* One Sutherland-Hodgman pass; returns the output vertex count. */
-static r8_u8 clip_pass(const r8_camera *cam, r8_u8 plane, const clipv *in,
+static r8_u8 clip_pass(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv *in,
                        r8_u8 n, clipv *out)
 {
     r8_u8 i, m = 0;
     for (i = 0; i < n; i++) {
         const clipv *a = &in[i], *b = &in[i + 1 == n ? 0 : i + 1];
-        r8_s32 da = plane_dist(cam, plane, a), db = plane_dist(cam, plane, b);
+        r8_s32 da = plane_dist(cam, zn, plane, a), db = plane_dist(cam, zn, plane, b);
         if (da >= 0)
             out[m++] = *a;
         if ((da >= 0) != (db >= 0)) {
@@ -47,8 +52,9 @@ static r8_u8 clip_pass(const r8_camera *cam, r8_u8 plane, const clipv *in,
             c->y = a->y + r8_muldiv(b->y - a->y, da, den);
             c->z = a->z + r8_muldiv(b->z - a->z, da, den);
             c->s = (r8_s16)(a->s + r8_muldiv((r8_s32)b->s - a->s, da, den));
-            if (c->z < cam->znear)
-                c->z = cam->znear;
+            c->src = NO_SRC;
+            if (c->z < zn)
+                c->z = zn;
         }
     }
     return m;
@@ -59,50 +65,97 @@ unsigned r8_clip_bytes(void)
     return 2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(clipv);
 }
 
-int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
-                 const r8_face *fc, r8_poly *p)
+static r8_s32 absmax(r8_s32 m, r8_s32 v)
+{
+    if (v < 0)
+        v = -v;
+    return v > m ? v : m;
+}
+
+int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
+                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp)
 {
     clipv *a = (clipv *)st->clipbuf, *b = a + R8_MAX_CLIP_POLY;  /* work memory, not stack */
     clipv *in = a, *out = b, *t;
-    r8_u8 n = fc->n, i, plane;
+    r8_u8 i, plane, sh = 0;
+    r8_s32 big = 0, zn = st->zn16;
     const r8_mesh *me = ob->mesh;
+    r8_proj wide;
+    unsigned stride = 1u << st->vsh;
     for (i = 0; i < n; i++) {
-        const r8_s16 *mv = me->verts + fc->v[i] * 3;
+        r8_u16 g = (r8_u16)(o->vbase + vi[i]);
+        const r8_s16 *mv = me->verts + 3u * vi[i];
+        const r8_s16 *sv = st->sv + (unsigned)g * stride;
         r8_vec3 v;
         r8_vec3l c;
-        v.x = mv[0];
-        v.y = mv[1];
-        v.z = mv[2];
-        r8_mat_apply(&o->m, &v, &c);
-        a[i].x = c.x + ob->x;
-        a[i].y = c.y + ob->y;
-        a[i].z = c.z + ob->z;
-        a[i].s = st->sv[o->vbase + fc->v[i]].s;
+        v.x = R8_RDS16(mv);
+        v.y = R8_RDS16(mv + 1);
+        v.z = R8_RDS16(mv + 2);
+        r8_mat_apply16(&o->m, &v, &c);
+        a[i].x = c.x + o->t.x;
+        a[i].y = c.y + o->t.y;
+        a[i].z = c.z + o->t.z;
+        a[i].s = st->vsh == 2 ? sv[3] : 0;
+        a[i].src = sv[0] == R8_VX_CLIP ? NO_SRC : g;
+        big = absmax(absmax(absmax(big, a[i].x), a[i].y), a[i].z);
+    }
+    /* plane distances are z * guard +- x * focal: keep |coord| < 2^19 */
+    while (big >= (1L << 19)) {
+        big >>= 1;
+        sh++;
+    }
+    if (sh) {
+        for (i = 0; i < n; i++) {
+            a[i].x = r8_asr32(a[i].x, sh);
+            a[i].y = r8_asr32(a[i].y, sh);
+            a[i].z = r8_asr32(a[i].z, sh);
+        }
+        zn = r8_asr32(zn, sh);
+        if (zn < 1)
+            zn = 1;
     }
     for (plane = 0; plane < 5 && n >= 3; plane++) {
-        n = clip_pass(&st->cam, plane, in, n, out);
+        n = clip_pass(&st->cam, zn, plane, in, n, out);
         t = in;
         in = out;
         out = t;
     }
     if (n < 3)
         return 0;
-    if (st->nsv + n > st->nverts + st->nclip || st->nidx + n > st->maxidx) {
-        st->dropped++;
-        return 0;
-    }
-    p->idx = st->nidx;
-    p->n = n;
+    wide = st->cam;
+    wide.guard = 1400;   /* intersections lie on the 900 px planes */
     for (i = 0; i < n; i++) {
-        r8_svert *s = &st->sv[st->nsv];
         r8_vec3l c;
+        r8_s16 *s;
         c.x = in[i].x;
         c.y = in[i].y;
-        c.z = in[i].z;
-        r8_project(&st->cam, &c, &s->x, &s->y);
-        s->d = r8_tf_depth(st, c.z);
-        s->s = in[i].s;
-        st->idx[st->nidx++] = st->nsv++;
+        c.z = (r8_s32)((r8_u32)in[i].z << sh);
+        if (in[i].src != NO_SRC) {
+            cp->idx[i] = in[i].src;
+            continue;
+        }
+        if (st->sv_used >= st->sv_cap) {
+            st->dropped++;
+            return 0;
+        }
+        s = st->sv + (unsigned)st->sv_used * stride;
+        c.x = (r8_s32)((r8_u32)c.x << sh);
+        c.y = (r8_s32)((r8_u32)c.y << sh);
+        {
+            r8_s8 e;
+            r8_u16 m = r8_recip(c.z, &e);
+            if (r8_project_recip(&wide, &c, m, e, &s[0], &s[1]))
+                return 0;            /* cannot happen for a clipped point */
+            if (st->vsh == 2) {
+                s[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
+                s[3] = in[i].s;
+            }
+            if (st->vkey)
+                st->vkey[st->sv_used] = (r8_u8)(r8_tf_depth(st, m, e) >> 7);
+        }
+        cp->idx[i] = st->sv_used++;
     }
+    cp->n = n;
+    cp->level = r8_face_level(st, o, ob, f);
     return 1;
 }

@@ -1,79 +1,83 @@
-/* cull.c - backface culling before projection, from the face normal
- * (the seed's first method).  The second method, Judd's, lives in the
- * scan converter (scan.c).  Normals are computed once at init from the
- * model's edges: n = (v2 - v0) x (v1 - v0), which points outwards for
- * faces listed clockwise as seen from outside (screen y down), scaled to
- * unit length. */
+/* cull.c - face normals, backface culling before projection (the seed's
+ * first method: the sign of the face normal against the view vector) and
+ * the per-face shade.  The second cull, Judd's, lives in the scan
+ * converter (scan.c).  Normals come with the mesh (flash, from the scene
+ * converter) or are computed once at init from the model's edges:
+ * n = (v2 - v0) x (v1 - v0), which points outwards for faces listed
+ * clockwise as seen from outside (screen y down), scaled to unit length. */
 #include "r8int.h"
 
-void r8_cull_normals(r8_state *st)
+void r8_pose_identity(r8_pose *p)
 {
-    const r8_scene *sc = st->scene;
-    r8_u8 i;
-    for (i = 0; i < sc->nobjects; i++) {
-        const r8_mesh *me = sc->objects[i].mesh;
-        const r8_objx *o = &st->obj[i];
-        r8_u16 f;
-        for (f = 0; f < me->nfaces; f++) {
-            const r8_face *fc = &me->faces[f];
-            const r8_s16 *a = me->verts + fc->v[0] * 3;
-            const r8_s16 *b = me->verts + fc->v[1] * 3;
-            const r8_s16 *c = me->verts + fc->v[2] * 3;
-            r8_vec3 e1, e2;
-            r8_vec3l n;
-            r8_s32 d[6];
-            r8_u8 j, big = 1;
-            /* edges of coordinates up to +/-32767 need 17 bits: halve both
-             * until every component fits 16 (same scale: same direction) */
-            for (j = 0; j < 3; j++) {
-                d[j] = (r8_s32)b[j] - a[j];
-                d[3 + j] = (r8_s32)c[j] - a[j];
-            }
-            while (big) {
-                big = 0;
+    p->x = p->y = p->z = 0;
+    p->ax = p->ay = p->az = 0;
+    p->flags = 0;
+    p->colour = 16;
+    p->m = 0;
+}
+
+void r8_mesh_normals(const r8_mesh *me, r8_s16 *out)
+{
+    r8_u16 f;
+    for (f = 0; f < me->nfaces; f++) {
+        const r8_face *fc = &me->faces[f];
+        const r8_s16 *a = me->verts + R8_RDU8(&fc->v[0]) * 3;
+        const r8_s16 *b = me->verts + R8_RDU8(&fc->v[1]) * 3;
+        const r8_s16 *c = me->verts + R8_RDU8(&fc->v[2]) * 3;
+        r8_vec3 e1, e2, nn;
+        r8_vec3l n;
+        r8_s32 d[6];
+        r8_u8 j, big = 1;
+        /* edges of coordinates up to +/-32767 need 17 bits: halve both
+         * until every component fits 16 (same scale: same direction) */
+        for (j = 0; j < 3; j++) {
+            d[j] = (r8_s32)R8_RDS16(&b[j]) - R8_RDS16(&a[j]);
+            d[3 + j] = (r8_s32)R8_RDS16(&c[j]) - R8_RDS16(&a[j]);
+        }
+        while (big) {
+            big = 0;
+            for (j = 0; j < 6; j++)
+                if (d[j] > 32767 || d[j] < -32767)
+                    big = 1;
+            if (big)
                 for (j = 0; j < 6; j++)
-                    if (d[j] > 32767 || d[j] < -32767)
-                        big = 1;
-                if (big)
-                    for (j = 0; j < 6; j++)
-                        d[j] = r8_asr32(d[j], 1);
-            }
-            e1.x = (r8_s16)d[0]; e1.y = (r8_s16)d[1]; e1.z = (r8_s16)d[2];
-            e2.x = (r8_s16)d[3]; e2.y = (r8_s16)d[4]; e2.z = (r8_s16)d[5];
-            r8_cross3(&e2, &e1, &n);  /* outward: faces are clockwise from outside */
-            r8_normalize(&n, &st->fnorm[o->fbase + f]);
+                    d[j] = r8_asr32(d[j], 1);
         }
-        if (st->vnorm) {
-            /* vertex normals: sum of the unit normals of the faces around */
-            r8_u16 k;
-            for (k = 0; k < me->nverts; k++) {
-                r8_vec3l sum;
-                sum.x = sum.y = sum.z = 0;
-                for (f = 0; f < me->nfaces; f++) {
-                    const r8_face *fc = &me->faces[f];
-                    r8_u8 j;
-                    for (j = 0; j < fc->n; j++)
-                        if (fc->v[j] == k) {
-                            sum.x += st->fnorm[o->fbase + f].x;
-                            sum.y += st->fnorm[o->fbase + f].y;
-                            sum.z += st->fnorm[o->fbase + f].z;
-                        }
-                }
-                r8_normalize(&sum, &st->vnorm[o->vbase + k]);
-            }
-        }
+        e1.x = (r8_s16)d[0]; e1.y = (r8_s16)d[1]; e1.z = (r8_s16)d[2];
+        e2.x = (r8_s16)d[3]; e2.y = (r8_s16)d[4]; e2.z = (r8_s16)d[5];
+        r8_cross3(&e2, &e1, &n);  /* outward: faces are clockwise from outside */
+        r8_normalize(&n, &nn);
+        out[3u * f] = nn.x;
+        out[3u * f + 1] = nn.y;
+        out[3u * f + 2] = nn.z;
     }
 }
 
-/* Front iff n . (eye - v0) > 0 in model space.  eye - v0 is scaled down
- * by a power of two to 15 bits so the dot product fits 32 bits. */
-int r8_cull_front(const r8_state *st, const r8_objx *o, const r8_mesh *me, r8_u16 f)
+static void normal_of(const r8_objx *o, r8_u16 f, r8_vec3 *n)
+{
+    const r8_s16 *p = o->normals + 3u * f;
+    if (o->nflash) {
+        n->x = R8_RDS16(p);
+        n->y = R8_RDS16(p + 1);
+        n->z = R8_RDS16(p + 2);
+    } else {
+        n->x = p[0];
+        n->y = p[1];
+        n->z = p[2];
+    }
+}
+
+/* Front iff n . (eye - v0) > 0 in model space (eye in 1/16 units).
+ * eye - v0 is scaled down by a power of two to 15 bits so the dot
+ * product fits 32 bits. */
+int r8_cull_front(const r8_objx *o, const r8_mesh *me, r8_u16 f)
 {
     const r8_face *fc = &me->faces[f];
-    const r8_s16 *a = me->verts + fc->v[0] * 3;
-    const r8_vec3 *n = &st->fnorm[o->fbase + f];
-    r8_s32 dx = o->eye.x - a[0], dy = o->eye.y - a[1], dz = o->eye.z - a[2];
-    r8_vec3 d;
+    const r8_s16 *a = me->verts + R8_RDU8(&fc->v[0]) * 3;
+    r8_s32 dx = o->eye.x - (r8_s32)R8_RDS16(a) * R8_CSCALE;
+    r8_s32 dy = o->eye.y - (r8_s32)R8_RDS16(a + 1) * R8_CSCALE;
+    r8_s32 dz = o->eye.z - (r8_s32)R8_RDS16(a + 2) * R8_CSCALE;
+    r8_vec3 d, n;
     while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 ||
            dz > 32767 || dz < -32767) {
         dx = r8_asr32(dx, 1);
@@ -83,5 +87,20 @@ int r8_cull_front(const r8_state *st, const r8_objx *o, const r8_mesh *me, r8_u1
     d.x = (r8_s16)dx;
     d.y = (r8_s16)dy;
     d.z = (r8_s16)dz;
-    return r8_dot3(n, &d) > 0;
+    normal_of(o, f, &n);
+    return r8_dot3(&n, &d) > 0;
+}
+
+/* Dither level 0..16 of face f of object ob: its colour (or the pose's),
+ * lit by the light for Lambert. */
+r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f)
+{
+    r8_u8 colour = R8_RDU8(&ob->mesh->faces[f].colour);
+    r8_vec3 n;
+    if (ob->pose.flags & R8_POSE_COLOUR)
+        colour = ob->pose.colour;
+    if (st->shading != R8_SHADE_LAMBERT)
+        return colour;
+    normal_of(o, f, &n);
+    return (r8_u8)((r8_tf_shade(st, &n, &o->light, colour) + 128) >> 8);
 }

@@ -1,6 +1,7 @@
 /* fb.c - framebuffer bands: clear, pixel, span fill, dithered spans.
  * Layouts are described in r8fb.h. */
 #include "r8fb.h"
+#include "r8flash.h"
 
 unsigned r8_fb_bytes(r8_u8 format, r8_s16 width, r8_s16 rows)
 {
@@ -101,29 +102,45 @@ r8_u8 r8_fb_get(const r8_fb *fb, r8_s16 x, r8_s16 y)
 
 /* Ordered 4x4 dither thresholds: level s lights pixel (x,y) iff
  * s > bayer[y&3][x&3].  Level 0 is black, 16 is white. */
-static const r8_u8 bayer4[16] = {
+static const r8_u8 bayer4[16] R8_FLASH = {
     0, 8, 2, 10,
     12, 4, 14, 6,
     3, 11, 1, 9,
     15, 7, 13, 5
 };
 
-/* Byte pattern (MSB = leftmost, x = 0 mod 4 at bits 7 and 3) of shade
- * level s on frame row y. */
+/* The row's 4 thresholds (flash: read with R8_RDU8). */
 const r8_u8 *r8_fb_dither_thresholds(r8_s16 y)
 {
     return bayer4 + ((y & 3) << 2);
 }
 
+/* dither_rows[4 s + (y & 3)]: the pattern of level s on row y */
+static const r8_u8 dither_rows[17 * 4] R8_FLASH = {
+    0x00, 0x00, 0x00, 0x00,
+    0x88, 0x00, 0x00, 0x00,
+    0x88, 0x00, 0x22, 0x00,
+    0xAA, 0x00, 0x22, 0x00,
+    0xAA, 0x00, 0xAA, 0x00,
+    0xAA, 0x44, 0xAA, 0x00,
+    0xAA, 0x44, 0xAA, 0x11,
+    0xAA, 0x55, 0xAA, 0x11,
+    0xAA, 0x55, 0xAA, 0x55,
+    0xEE, 0x55, 0xAA, 0x55,
+    0xEE, 0x55, 0xBB, 0x55,
+    0xFF, 0x55, 0xBB, 0x55,
+    0xFF, 0x55, 0xFF, 0x55,
+    0xFF, 0xDD, 0xFF, 0x55,
+    0xFF, 0xDD, 0xFF, 0x77,
+    0xFF, 0xFF, 0xFF, 0x77,
+    0xFF, 0xFF, 0xFF, 0xFF
+};
+
 r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y)
 {
-    const r8_u8 *t = bayer4 + ((y & 3) << 2);
-    r8_u8 p = 0;
-    if (s > t[0]) p |= 0x88;
-    if (s > t[1]) p |= 0x44;
-    if (s > t[2]) p |= 0x22;
-    if (s > t[3]) p |= 0x11;
-    return p;
+    if (s > 16)
+        s = 16;
+    return R8_RDU8(&dither_rows[((unsigned)s << 2) | (unsigned)(y & 3)]);
 }
 
 /* Clip [x0,x1) on row y to frame and band; returns 0 if nothing left. */
@@ -255,5 +272,5 @@ void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base)
     if (fb->format == R8_FMT_IDX8)
         r8_fb_pixel(fb, x, y, (r8_u8)(base + s));
     else
-        r8_fb_pixel(fb, x, y, (r8_u8)(s > bayer4[((y & 3) << 2) | (x & 3)]));
+        r8_fb_pixel(fb, x, y, (r8_u8)(s > R8_RDU8(&bayer4[((y & 3) << 2) | (x & 3)])));
 }

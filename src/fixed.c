@@ -1,6 +1,7 @@
 /* fixed.c - fixed-point helpers, trig table, vectors, matrices and the
  * perspective projection.  See r8fixed.h for the formats. */
 #include "r8fixed.h"
+#include "r8flash.h"
 
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b)
 {
@@ -20,9 +21,18 @@ r8_s32 r8_asr14(r8_s32 v)
 
 r8_s32 r8_asr32(r8_s32 v, r8_u8 n)
 {
-    if (v >= 0)
-        return v >> n;
-    return ~((~v) >> n); /* floor for negatives, without a signed shift */
+    /* floor for negatives without a signed shift (~v = -v - 1 >= 0);
+     * whole bytes first, so a variable shift is at most 7 single steps
+     * on 8-bit CPUs */
+    r8_u32 u = v >= 0 ? (r8_u32)v : ~(r8_u32)v;
+    if (n > 31)
+        n = 31;
+    if (n & 16)
+        u >>= 16;
+    if (n & 8)
+        u >>= 8;
+    u >>= (n & 7);
+    return v >= 0 ? (r8_s32)u : (r8_s32)~u;
 }
 
 r8_s16 r8_sat16(r8_s32 v)
@@ -138,7 +148,7 @@ r8_u16 r8_isqrt32(r8_u32 v)
 }
 
 /* round(16384 * sin(i * 2 pi / 256)), i = 0..64 */
-static const r8_s16 sin_q14[65] = {
+static const r8_s16 sin_q14[65] R8_FLASH = {
     0, 402, 804, 1205, 1606, 2006, 2404, 2801,
     3196, 3590, 3981, 4370, 4756, 5139, 5520, 5897,
     6270, 6639, 7005, 7366, 7723, 8076, 8423, 8765,
@@ -155,13 +165,13 @@ r8_s16 r8_sin(r8_u8 a)
     r8_u8 q = (r8_u8)(a & 0x3F);
     switch (a >> 6) {
     case 0:
-        return sin_q14[q];
+        return R8_RDS16(&sin_q14[q]);
     case 1:
-        return sin_q14[64 - q];
+        return R8_RDS16(&sin_q14[64 - q]);
     case 2:
-        return (r8_s16)-sin_q14[q];
+        return (r8_s16)-R8_RDS16(&sin_q14[q]);
     default:
-        return (r8_s16)-sin_q14[64 - q];
+        return (r8_s16)-R8_RDS16(&sin_q14[64 - q]);
     }
 }
 
@@ -264,28 +274,140 @@ void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out)
                                r8_mul16(m->m[8], v->z) + 8192));
 }
 
-void r8_camera_init(r8_camera *c, r8_s16 width, r8_s16 height, r8_s16 focal,
-                    r8_s32 znear)
+void r8_mat_apply16(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
 {
-    c->cx = (r8_s16)(width * 8);  /* width/2 pixels in 12.4 */
-    c->cy = (r8_s16)(height * 8);
-    c->focal = focal;
-    c->znear = znear;
-    c->guard = 900;  /* |sx - cx| <= 900 px keeps 12.4 inside r8_s16 */
-    c->xlimit = (r8_s32)2147483647L / r8_mul16(focal, R8_SUBPX);
+    /* Q1.14 * integer units, kept to 1/16 unit: (sum + 2^9) >> 10 */
+    out->x = r8_asr32(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[1], v->y) +
+                      r8_mul16(m->m[2], v->z) + 512, 10);
+    out->y = r8_asr32(r8_mul16(m->m[3], v->x) + r8_mul16(m->m[4], v->y) +
+                      r8_mul16(m->m[5], v->z) + 512, 10);
+    out->z = r8_asr32(r8_mul16(m->m[6], v->x) + r8_mul16(m->m[7], v->y) +
+                      r8_mul16(m->m[8], v->z) + 512, 10);
 }
 
-/* focal * 16 * x / z, rounded; the fast path needs |x * f16| < 2^31. */
-static r8_s16 proj1(const r8_camera *c, r8_s32 x, r8_s32 z)
+void r8_mat_transpose(const r8_mat3 *a, r8_mat3 *c)
 {
-    r8_s32 f16 = r8_mul16(c->focal, R8_SUBPX);
-    if (x < c->xlimit && x > -c->xlimit)
-        return r8_sat16(r8_divround(x * f16, z));
-    return r8_sat16(r8_muldiv(x, f16, z));
+    r8_u8 i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            c->m[i * 3 + j] = a->m[j * 3 + i];
 }
 
-void r8_project(const r8_camera *c, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy)
+/* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16 bits) */
+static const r8_u16 rec_tab[129] R8_FLASH = {
+    65535u, 65028u, 64528u, 64035u, 63550u, 63072u, 62602u, 62138u, 61681u, 61231u,
+    60787u, 60350u, 59919u, 59494u, 59075u, 58662u, 58254u, 57852u, 57456u, 57065u,
+    56680u, 56299u, 55924u, 55554u, 55188u, 54828u, 54471u, 54120u, 53773u, 53431u,
+    53092u, 52759u, 52429u, 52103u, 51782u, 51464u, 51150u, 50840u, 50534u, 50231u,
+    49932u, 49637u, 49345u, 49056u, 48771u, 48489u, 48210u, 47935u, 47663u, 47393u,
+    47127u, 46864u, 46603u, 46346u, 46091u, 45839u, 45590u, 45344u, 45100u, 44859u,
+    44620u, 44384u, 44151u, 43919u, 43691u, 43464u, 43240u, 43019u, 42799u, 42582u,
+    42367u, 42154u, 41943u, 41734u, 41528u, 41323u, 41121u, 40920u, 40721u, 40525u,
+    40330u, 40137u, 39946u, 39756u, 39569u, 39383u, 39199u, 39017u, 38836u, 38657u,
+    38480u, 38304u, 38130u, 37958u, 37787u, 37617u, 37449u, 37283u, 37118u, 36954u,
+    36792u, 36631u, 36472u, 36314u, 36158u, 36003u, 35849u, 35696u, 35545u, 35395u,
+    35246u, 35099u, 34953u, 34808u, 34664u, 34521u, 34380u, 34239u, 34100u, 33962u,
+    33825u, 33689u, 33554u, 33421u, 33288u, 33157u, 33026u, 32897u, 32768u
+};
+
+r8_u16 r8_recip(r8_s32 z, r8_s8 *e)
 {
-    *sx = r8_sat16((r8_s32)c->cx + proj1(c, v->x, v->z));
-    *sy = r8_sat16((r8_s32)c->cy + proj1(c, v->y, v->z));
+    r8_u32 u = (r8_u32)(z > 0 ? z : 1);
+    r8_s8 s = 0;
+    r8_u16 zn, t0, t1;
+    r8_u8 i;
+    /* normalise to [2^15, 2^16): whole bytes first */
+    if (u >= 0x10000UL) {
+        while (u >= 0x1000000UL) {
+            u >>= 8;
+            s = (r8_s8)(s - 8);
+        }
+        while (u >= 0x10000UL) {
+            u >>= 1;
+            s--;
+        }
+    } else {
+        if (u < 0x80UL) {
+            u <<= 8;
+            s = 8;
+        }
+        while (u < 0x8000UL) {
+            u <<= 1;
+            s++;
+        }
+    }
+    zn = (r8_u16)u;
+    i = (r8_u8)((zn >> 8) & 0x7Fu);
+    t0 = R8_RDU16(&rec_tab[i]);
+    t1 = R8_RDU16(&rec_tab[i + 1]);
+    *e = s;
+    /* linear interpolation on 7 fraction bits: (t0 - t1) < 512 */
+    return (r8_u16)(t0 - (r8_u16)(((r8_u16)(t0 - t1) * (r8_u16)((zn & 0xFFu) >> 1) + 64u) >> 7));
+}
+
+void r8_proj_init(r8_proj *p, r8_s16 width, r8_s16 height, r8_s16 focal,
+                  r8_s32 znear)
+{
+    r8_s16 f = (r8_s16)(focal * R8_SUBPX);
+    p->cx = (r8_s16)(width * 8);  /* width/2 pixels in 12.4 */
+    p->cy = (r8_s16)(height * 8);
+    p->focal = focal;
+    p->znear = znear;
+    p->guard = 900;  /* |sx - cx| <= 900 px keeps 12.4 inside r8_s16 */
+    p->fsh = 0;
+    while (f < 0x4000) {
+        f = (r8_s16)(f << 1);
+        p->fsh++;
+    }
+    p->fn = f;
+}
+
+/* round(c * kk * 2^-sh) for one coordinate c; 1 if beyond `lim`. */
+static int proj1(r8_s32 c, r8_s16 kk, int sh, r8_s16 lim, r8_s16 *q)
+{
+    r8_s32 v;
+    while (c >= 32768L || c < -32768L) {
+        c = r8_asr32(c, 1);
+        sh--;
+    }
+    if (c == 0) {
+        *q = 0;
+        return 0;
+    }
+    if (sh <= 0)
+        return 1;               /* |q| >= 2^14: far outside any guard band */
+    v = r8_mul16((r8_s16)c, kk);
+    v = r8_asr32(v + ((r8_s32)1 << (sh - 1)), (r8_u8)sh);
+    if (v > lim || v < -lim)
+        return 1;
+    *q = (r8_s16)v;
+    return 0;
+}
+
+int r8_project(const r8_proj *p, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy)
+{
+    r8_s8 e;
+    r8_u16 m = r8_recip(v->z, &e);
+    return r8_project_recip(p, v, m, e, sx, sy);
+}
+
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy)
+{
+    r8_u32 k = (r8_u32)m * (r8_u16)p->fn;   /* [2^29, 2^31) */
+    r8_s16 kk, qx, qy, lim = (r8_s16)(p->guard * R8_SUBPX);
+    int sh = 31 + p->fsh - e;
+    /* 16 * focal / z = kk * 2^-sh with kk in [2^14, 2^15) */
+    if (k >= 0x40000000UL) {
+        kk = (r8_s16)(k >> 16);
+        sh -= 16;
+    } else {
+        kk = (r8_s16)(k >> 15);
+        sh -= 15;
+    }
+    if (proj1(v->x, kk, sh, lim, &qx) || proj1(v->y, kk, sh, lim, &qy))
+        return 1;
+    *sx = (r8_s16)(p->cx + qx);
+    *sy = (r8_s16)(p->cy + qy);
+    return 0;
 }

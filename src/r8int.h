@@ -7,37 +7,71 @@
 #include "r8scene.h"
 #include "r8raster.h"
 #include "r8fixed.h"
+#include "r8flash.h"
 
-#define R8_CLIP_VERTS 48    /* at most this many vertices made by clipping per frame */
-#define R8_MAX_CLIP_POLY (R8_MAX_FACE_VERTS + 5)
-#define R8_SCAN_POOL 24     /* persistent scan states (more: seeked per band) */
+#define R8_MAX_CLIP_POLY (R8_MAX_FACE_VERTS + 5)  /* 5 planes add <= 5 */
+#define R8_POOL_MAX 24      /* persistent scan states at most */
 #define R8_JEFF_BUCKETS 64  /* painter's depth buckets */
 #define R8_NO_SLOT 0xFF
 
-/* outcodes */
-#define R8_OUT_LEFT 1
-#define R8_OUT_RIGHT 2
-#define R8_OUT_TOP 4
-#define R8_OUT_BOTTOM 8
-#define R8_OUT_NEAR 16
-#define R8_OUT_GUARD 32
+/* A face id: mesh faces of all objects first (object i's face f is
+ * fbase_i + f), then the clipper's polygons.  The link type is 16 bits;
+ * -DR8_SMALL_SCENE makes it 8 bits (at most 254 faces and clipped
+ * polygons per scene: the 2 KB parts). */
+#ifdef R8_SMALL_SCENE
+typedef r8_u8 r8_fid;
+#define R8_FID_END 0xFFu
+#else
+typedef r8_u16 r8_fid;
+#define R8_FID_END 0xFFFFu
+#endif
+
+/* Screen vertex array: 2 r8_s16 (x, y in 12.4) per vertex, or 4 (x, y,
+ * depth, shade) for the depth methods and Gouraud.  x == R8_VX_CLIP
+ * marks a vertex behind the near plane or outside the guard band: its
+ * faces go through the clipper. */
+#define R8_VX_CLIP (-32767 - 1)
 
 typedef struct r8_objx {
-    r8_mat3 m;          /* this frame's rotation */
+    r8_mat3 m;          /* model -> camera rotation this frame */
+    r8_vec3l t;         /* model origin in camera space (<< R8_CFRAC) */
+    r8_vec3l eye;       /* camera in model space (<< R8_CFRAC) */
     r8_vec3 light;      /* light direction in model space, Q1.14 */
-    r8_vec3l eye;       /* camera position in model space */
+    const r8_s16 *normals;  /* face normals: the mesh's (flash) or work memory */
+    r8_u8 nflash;       /* normals are R8_FLASH data */
+    r8_u8 hidden;
     r8_u16 vbase;       /* first screen vertex of this object */
-    r8_u16 fbase;       /* first face normal of this object */
+    r8_u16 fbase;       /* first face id of this object */
 } r8_objx;
 
-typedef struct r8_poly {
-    r8_u16 idx;         /* first index in the index pool */
-    r8_u8 n;            /* vertex count */
-    r8_u8 shade;        /* flat/Lambert level 0..16 */
-    r8_u8 key;          /* painter's depth bucket: 0 = far */
-    r8_u8 slot;         /* persistent scan state, or R8_NO_SLOT */
-    r8_s16 ytop, ybot;  /* rows [ytop, ybot) */
-} r8_poly;
+/* A polygon made by the clipper: its vertices (some appended to the
+ * vertex array) and its shade level. */
+typedef struct r8_cpoly {
+    r8_u16 idx[R8_MAX_CLIP_POLY];
+    r8_u8 n;
+    r8_u8 level;
+} r8_cpoly;
+
+/* A face being scanned: its vertex list and level, then the scan state
+ * (edges only on the fast path, edges and attributes otherwise). */
+typedef struct r8_actx {
+    r8_u16 idx[R8_MAX_CLIP_POLY];
+    r8_u8 level;
+    r8_u8 used;         /* a pool entry in use */
+    r8_scanx c;
+} r8_actx;
+typedef struct r8_act {
+    r8_u16 idx[R8_MAX_CLIP_POLY];
+    r8_u8 level;
+    r8_u8 used;
+    r8_scan s;
+} r8_act;
+/* the fields both entry kinds share, at the same place */
+typedef struct r8_acthead {
+    r8_u16 idx[R8_MAX_CLIP_POLY];
+    r8_u8 level;
+    r8_u8 used;
+} r8_acthead;
 
 /* S-buffer span node */
 typedef struct r8_snode {
@@ -51,53 +85,72 @@ typedef struct r8_snode {
 
 typedef struct r8_state {
     const r8_scene *scene;
-    r8_camera cam;
-    r8_s32 dc1, dc2;    /* depth = dc1 / z - dc2 */
-    r8_u16 nverts, nfaces, maxidx, nclip;
+    r8_proj cam;
+    r8_s16 width, height;
+    r8_u16 nverts, nfaces;
     r8_u8 attrs;        /* R8_ATTR_* the method and shading need */
-    r8_u8 need_depth;   /* vertex depth needed (all but cull only) */
-    void *clipbuf;      /* r8_clip_bytes(): the clipper's two polygons */
+    r8_u8 vsh;          /* log2 of r8_s16 per screen vertex: 1 or 2 */
+    r8_u8 fast;         /* cull/painter, flat/Lambert: the fused fill */
+    r8_u8 judd;
+    r8_u8 method, shading;
+    r8_s16 bsh;         /* log2 band height, or -1 (not a power of two) */
+    r8_u16 nbands;
     r8_objx *obj;
-    r8_svert *sv;       /* nverts + nclip */
-    r8_u8 *out;         /* nverts outcodes */
-    r8_vec3 *fnorm;     /* nfaces model-space unit normals */
-    r8_vec3 *vnorm;     /* nverts vertex normals (Gouraud only) */
-    r8_poly *poly;      /* nfaces */
-    r8_u16 *idx;        /* maxidx */
-    r8_u16 *order;      /* nfaces: drawing order */
-    r8_u16 *jeff;       /* R8_JEFF_BUCKETS counts (painter) */
-    r8_scan *pool;      /* R8_SCAN_POOL (or fewer) */
+    r8_s16 *sv;         /* screen vertices (nverts + clip vertices) */
+    r8_u8 *vkey;        /* painter's: depth >> 7 per screen vertex */
+    r8_s16 *vnorm;      /* Gouraud: unit vertex normals, 3 per vertex */
+    r8_fid *next;       /* draw-order links, per face id */
+    r8_fid *heads;      /* buckets: per band, or painter's depth (frame
+                           time only) */
+    r8_u16 nheads;
+    r8_fid first;       /* painter's: the draw list; else the faces that
+                           go on from the band above */
+    r8_u8 *slot;        /* pool slot per face id (0 when there is no pool) */
+    r8_u8 *pool;        /* pool entries (r8_actx or r8_act) */
+    r8_u8 *tmp;         /* one entry for faces without a slot */
+    unsigned esize;     /* bytes per entry */
     r8_u8 npool;
+    r8_u8 pool_used;
+    r8_cpoly *cpoly;    /* clipper polygons */
+    r8_u8 nclip, nclipped;
+    r8_u16 sv_used;     /* vertices in sv, clip vertices included */
+    r8_u16 sv_cap;
+    void *clipbuf;      /* the clipper's two polygons (frame time only) */
+    /* depth mapping: depth = ((W - wf) * gh + 2^15) >> 16 with W = zn/z
+     * in Q20 (zn = camera znear, zf = zfar) */
+    r8_s16 znm;         /* camera znear (<< R8_CFRAC) normalised ... */
+    r8_s8 zne;          /* ... znear = znm * 2^zne */
+    r8_u32 wf, gh;
+    r8_s32 zn16, zf16;  /* znear, zfar << R8_CFRAC */
     r8_u8 *depth;       /* the method's depth memory for one band */
     unsigned depth_bytes;
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
-    r8_u16 npoly, nsv, nidx;
-    /* counters for the last frame (stability reports) */
-    r8_u16 dropped;     /* faces dropped: clip or span pool exhausted */
+    r8_u16 npoly;       /* faces set up this frame */
+    r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 } r8_state;
 
 /* transform.c */
-void r8_tf_objects(r8_state *st, r8_u16 frame);
+void r8_tf_frame(r8_state *st, const r8_camera *cam);
 void r8_tf_vertices(r8_state *st);
-r8_s16 r8_tf_depth(const r8_state *st, r8_s32 z);
+r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e);
 r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light, r8_u8 colour);
+void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g);
 /* cull.c */
-void r8_cull_normals(r8_state *st);
-int r8_cull_front(const r8_state *st, const r8_objx *o, const r8_mesh *me, r8_u16 f);
+void r8_cull_normals(const r8_mesh *me, r8_s16 *out);
+int r8_cull_front(const r8_objx *o, const r8_mesh *me, r8_u16 f);
+r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f);
 /* clip.c */
 unsigned r8_clip_bytes(void);
-int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob,
-                 const r8_face *fc, r8_poly *p);
-/* vis_painter.c */
-void r8_jeffsort(r8_state *st);
-/* vis_zbuf.c, vis_sbuf.c: draw one span of polygon p */
+int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
+                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp);
+/* vis_zbuf.c, vis_sbuf.c: draw one span of a face at `level` */
 r8_u8 r8_vis_level(r8_s16 s);
-void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp);
-void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int bits16);
-void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int mask);
-void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp);
+void r8_vis_plain(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
+void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bits16);
+void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span *sp, int mask);
+void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);
 unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg);
 r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg);

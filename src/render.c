@@ -1,17 +1,39 @@
-/* render.c - the frame renderer: per frame, transform every vertex once,
- * cull, clip and set up the visible polygons (and sort them for the
- * painter's); per band, clear the band and its depth memory, then scan
- * every polygon's rows inside the band through the chosen visibility
- * method.  Scan states persist between bands (a pool of R8_SCAN_POOL),
- * so edges are never walked again from the top; a polygon without a
- * pooled state is seeked straight to the band's first row, which gives
- * the same spans.  All memory is the caller's `work`. */
+/* render.c - the frame renderer.
+ *
+ * Per frame (r8_render_frame): transform every vertex once; then every
+ * face: cull, trivial reject, clip if it needs it, and put it in a
+ * bucket - by the band its first row falls in (cull only, depth
+ * methods), or by depth (painter's, far to near: the seed's jeffsort as
+ * linked buckets, chained into one draw list).  Every bucket lists its
+ * faces in scene order.
+ *
+ * Per band (r8_render_band): clear the band and its depth memory, then
+ * draw its faces: a face is scanned from where it left off (its scan
+ * state kept in a small pool between bands) or, without a pooled state,
+ * seeked to the band's first row (the same spans: scan.c).  Painter's
+ * walks the draw list, skipping faces that start lower down and dropping
+ * finished ones.  The other methods merge, in scene order, the faces
+ * that go on from the band above with the band's own bucket: a band
+ * touches only the faces that cross it, in the order a whole-frame
+ * renderer would draw them.
+ *
+ * Memory is the caller's `work`; it grows with the vertices and faces of
+ * the scene (2 bytes per vertex for x and y, 1-2 per face for the list
+ * link) and with the scan states kept (cfg.pool), not with the faces on
+ * screen. */
 #include <stddef.h>
 #include "r8int.h"
 
+/* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
+ * built when every method and shading that needs depth or shade along
+ * the spans is left out. */
+#if defined(R8_NO_ZBUF) && defined(R8_NO_BLOCK) && defined(R8_NO_SBUF) && defined(R8_NO_GOURAUD)
+#define R8_FAST_ONLY 1
+#endif
+
 void r8_render_defaults(r8_render_cfg *cfg)
 {
-    cfg->scene = R8_SCENE_CUBE;
+    cfg->scene = 0;
     cfg->method = R8_VIS_CULL;
     cfg->shading = R8_SHADE_LAMBERT;
     cfg->cull = R8_CULL_NORMAL;
@@ -19,17 +41,10 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->width = 128;
     cfg->height = 64;
     cfg->band = 8;
-    cfg->custom = 0;
+    cfg->clip = 8;
+    cfg->pool = R8_POOL_AUTO;
 }
 
-const r8_scene *r8_render_scene(const r8_render_cfg *cfg)
-{
-    return cfg->custom ? cfg->custom : r8_scene_get(cfg->scene);
-}
-
-static const char *const scene_names[R8_SCENE_COUNT] = {
-    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate"
-};
 static const char *const method_names[R8_VIS_COUNT] = {
     "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"
 };
@@ -43,25 +58,11 @@ static int streq(const char *a, const char *b)
     return *a == *b;
 }
 
-const char *r8_scene_name(r8_u8 scene)
-{
-    return scene < R8_SCENE_COUNT ? scene_names[scene] : 0;
-}
-
 const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
     return method < R8_VIS_COUNT ? method_names[method] : 0;
-}
-
-int r8_scene_by_name(const char *name)
-{
-    int i;
-    for (i = 0; i < R8_SCENE_COUNT; i++)
-        if (streq(name, scene_names[i]))
-            return i;
-    return -1;
 }
 
 int r8_method_by_name(const char *name)
@@ -75,6 +76,63 @@ int r8_method_by_name(const char *name)
     return -1;
 }
 
+void r8_camera_defaults(r8_camera *c, r8_s16 width)
+{
+    c->x = c->y = c->z = 0;
+    c->yaw = c->pitch = c->roll = 0;
+    c->flags = 0;
+    c->m = 0;
+    c->focal = width;
+    c->znear = 16;
+    c->zfar = 4096;
+}
+
+r8_s16 r8_camera_fov(r8_s16 width, r8_u8 fov)
+{
+    /* (width / 2) / tan(fov / 2) */
+    r8_u8 h = (r8_u8)(fov >> 1);
+    r8_s16 s = r8_sin(h), c = r8_cos(h);
+    r8_s32 f;
+    if (s < 1)
+        s = 1;
+    f = r8_divround(r8_mul16(width, c) / 2, s);
+    if (f < 1)
+        f = 1;
+    if (f > 2047)
+        f = 2047;
+    return (r8_s16)f;
+}
+
+/* ---- which methods this build carries ---- */
+
+static int method_built(r8_u8 m)
+{
+    switch (m) {
+    case R8_VIS_CULL:
+        return 1;
+#ifndef R8_NO_PAINTER
+    case R8_VIS_PAINTER:
+        return 1;
+#endif
+#ifndef R8_NO_ZBUF
+    case R8_VIS_Z8:
+    case R8_VIS_Z16:
+        return 1;
+#endif
+#ifndef R8_NO_BLOCK
+    case R8_VIS_BLOCK:
+    case R8_VIS_BLOCKMASK:
+        return 1;
+#endif
+#ifndef R8_NO_SBUF
+    case R8_VIS_SBUF:
+        return 1;
+#endif
+    default:
+        return 0;
+    }
+}
+
 /* ---- memory plan ---- */
 
 #define ALIGN_TO (sizeof(r8_s32) > sizeof(void *) ? sizeof(r8_s32) : sizeof(void *))
@@ -85,18 +143,31 @@ static unsigned align_up(unsigned n)
 }
 
 typedef struct plan {
-    unsigned clipbuf, obj, sv, out, fnorm, vnorm, poly, idx, order, jeff, pool, depth, snode, shead, total;
-    r8_u16 nverts, nfaces, maxidx, nclip;
-    r8_u8 npool;
+    unsigned obj, sv, vkey, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
+        pool, tmp, depth, snode, shead, total;
+    r8_u16 nverts, nfaces, nbands, nheads, sv_cap;
+    unsigned esize;
+    r8_u8 vsh, npool, fast;
 } plan;
 
 static int cfg_valid(const r8_render_cfg *cfg)
 {
-    const r8_scene *sc = r8_render_scene(cfg);
-    if (!sc || sc->nobjects == 0 || cfg->method >= R8_VIS_COUNT ||
+    const r8_scene *sc = cfg->scene;
+    r8_u32 nf = 0;
+    r8_u8 i;
+    if (!sc || sc->nobjects == 0 || !sc->objects || !method_built(cfg->method) ||
         cfg->shading > R8_SHADE_GOURAUD || cfg->cull > R8_CULL_JUDD ||
         cfg->format > R8_FMT_IDX8)
         return 0;
+#ifdef R8_NO_GOURAUD
+    if (cfg->shading == R8_SHADE_GOURAUD)
+        return 0;
+#endif
+#ifdef R8_NO_RT_NORMALS
+    for (i = 0; i < sc->nobjects; i++)
+        if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
+            return 0;     /* this build takes meshes with their normals only */
+#endif
     if (cfg->width < 8 || cfg->width > 1024 || cfg->height < 8 || cfg->height > 1024)
         return 0;
     if (cfg->band < 1 || cfg->band > cfg->height)
@@ -106,7 +177,13 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if ((cfg->method == R8_VIS_BLOCK || cfg->method == R8_VIS_BLOCKMASK) &&
         ((cfg->band & 3) || (cfg->height & 3)))
         return 0;
-    if (cfg->method == R8_VIS_SBUF && cfg->width > 1024)
+    for (i = 0; i < sc->nobjects; i++) {
+        const r8_mesh *me = sc->objects[i].mesh;
+        if (!me || !me->verts || !me->faces || me->nverts > 255)
+            return 0;
+        nf += me->nfaces;
+    }
+    if (nf + cfg->clip >= (r8_u32)R8_FID_END)
         return 0;
     return 1;
 }
@@ -133,7 +210,7 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
 {
     /* per row: one span per face that can cross it plus a split, at most
      * 32; indices are 16-bit */
-    const r8_scene *sc = r8_render_scene(cfg);
+    const r8_scene *sc = cfg->scene;
     unsigned per = 2, n;
     r8_u8 i;
     if (cfg->method != R8_VIS_SBUF || !sc)
@@ -146,55 +223,86 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
     return (r8_u16)(n > 0xFFF0u ? 0xFFF0u : n);
 }
 
+/* Is mesh i's normal table shared with an earlier object's? */
+static int mesh_seen(const r8_scene *sc, r8_u8 i)
+{
+    r8_u8 j;
+    for (j = 0; j < i; j++)
+        if (sc->objects[j].mesh == sc->objects[i].mesh)
+            return 1;
+    return 0;
+}
+
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
 {
-    const r8_scene *sc = r8_render_scene(cfg);
+    const r8_scene *sc = cfg->scene;
     r8_u8 i;
-    unsigned nv = 0, nf = 0, ni = 0, o = 0;
+    unsigned nv = 0, nf = 0, o = 0, nn = 0, nid, frame_t, band_t;
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
-        r8_u16 f;
         nv += me->nverts;
         nf += me->nfaces;
-        for (f = 0; f < me->nfaces; f++)
-            ni += me->faces[f].n;
+        if (!me->normals && !mesh_seen(sc, i))
+            nn += me->nfaces;
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    /* clipping adds at most 5 vertices per face; the pool is sized for a
-     * few faces at a time, and a face that finds it full is dropped and
-     * counted (st->dropped) */
-    pl->nclip = (r8_u16)(3u * nf + 6u < R8_CLIP_VERTS ? 3u * nf + 6u : R8_CLIP_VERTS);
-    pl->maxidx = (r8_u16)(ni + pl->nclip);
-    /* a closed mesh shows at most about half its faces at once; polygons
-     * beyond the pool are seeked to each band's first row instead */
-    pl->npool = (r8_u8)((nf + 1u) / 2u < R8_SCAN_POOL ? (nf + 1u) / 2u : R8_SCAN_POOL);
+    pl->vsh = (r8_u8)(cfg->method >= R8_VIS_Z8 || cfg->shading == R8_SHADE_GOURAUD ? 2 : 1);
+    pl->fast = (r8_u8)(pl->vsh == 1);
+    pl->nbands = (r8_u16)(((unsigned)cfg->height + (unsigned)cfg->band - 1u) / (unsigned)cfg->band);
+    pl->nheads = cfg->method == R8_VIS_PAINTER ? R8_JEFF_BUCKETS : pl->nbands;
+    /* a clipped polygon adds at most 5 intersections */
+    pl->sv_cap = (r8_u16)(nv + 5u * cfg->clip);
+    nid = nf + cfg->clip;
+    pl->npool = cfg->pool;
+    if (pl->npool > (nf + 1u) / 2u)
+        pl->npool = (r8_u8)((nf + 1u) / 2u);
+    if (pl->npool > R8_POOL_MAX)
+        pl->npool = R8_POOL_MAX;
+    pl->esize = align_up(pl->fast ? sizeof(r8_actx) : sizeof(r8_act));
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
-    pl->sv = o; o += align_up(sizeof(r8_svert) * (nv + pl->nclip));
-    pl->out = o; o += align_up(nv);
-    pl->fnorm = o; o += align_up(sizeof(r8_vec3) * nf);
+    pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
+    pl->vkey = o;
+    if (cfg->method == R8_VIS_PAINTER)
+        o += align_up(pl->sv_cap);
     pl->vnorm = o;
     if (cfg->shading == R8_SHADE_GOURAUD)
-        o += align_up(sizeof(r8_vec3) * nv);
-    pl->poly = o; o += align_up(sizeof(r8_poly) * nf);
-    pl->idx = o; o += align_up(2u * pl->maxidx);
-    pl->order = o; o += align_up(2u * nf);
-    /* One shared region for memory that is never live at the same time:
-     * the clipper's polygons (while faces are set up), the painter's
-     * bucket counts (while sorting), and the band-time memory: scan
-     * states, depth memory, S-buffer. */
+        o += align_up(6u * nv);
+    pl->norms = o; o += align_up(6u * nn);
+    pl->next = o; o += align_up(sizeof(r8_fid) * nid);
+    pl->heads = o;                  /* band buckets live through the frame */
+    if (cfg->method != R8_VIS_PAINTER)
+        o += align_up(sizeof(r8_fid) * pl->nbands);
+    pl->slot = o;
+    if (pl->npool)
+        o += align_up(nid);
+    pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
+    /* One region for memory that is never live at the same time: the
+     * sort buckets and the clipper's polygons (while the frame is set
+     * up), then the scan states, depth memory and S-buffer (while bands
+     * are drawn). */
+    pl->region = o;
     pl->clipbuf = o;
-    pl->jeff = o;
-    pl->pool = o; o += align_up(sizeof(r8_scan) * pl->npool);
-    pl->depth = o; o += align_up(r8_vis_depth_bytes(cfg));
-    pl->snode = o; o += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
-    pl->shead = o;
+    frame_t = 0;
+#ifndef R8_NO_CLIP
+    if (cfg->clip)
+        frame_t = align_up(r8_clip_bytes());
+#endif
+    if (cfg->method == R8_VIS_PAINTER) {
+        /* depth buckets: only while the frame is set up */
+        pl->heads = o;
+        pl->clipbuf = o + align_up(sizeof(r8_fid) * pl->nheads);
+        frame_t += align_up(sizeof(r8_fid) * pl->nheads);
+    }
+    pl->tmp = o;
+    pl->pool = o + pl->esize;
+    pl->depth = pl->pool + pl->esize * pl->npool;
+    pl->snode = pl->depth + align_up(r8_vis_depth_bytes(cfg));
+    pl->shead = pl->snode + align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
+    band_t = pl->shead - o;
     if (cfg->method == R8_VIS_SBUF)
-        o += align_up(2u * (unsigned)cfg->band);
-    if (o < pl->clipbuf + align_up(r8_clip_bytes()))
-        o = pl->clipbuf + align_up(r8_clip_bytes());
-    if (cfg->method == R8_VIS_PAINTER && o < pl->jeff + align_up(2u * R8_JEFF_BUCKETS))
-        o = pl->jeff + align_up(2u * R8_JEFF_BUCKETS);
+        band_t += align_up(2u * (unsigned)cfg->band);
+    o += frame_t > band_t ? frame_t : band_t;
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
 
@@ -207,6 +315,43 @@ unsigned r8_render_ram(const r8_render_cfg *cfg)
     return pl.total;
 }
 
+#ifndef R8_NO_GOURAUD
+/* Gouraud vertex normals: the normalised sum of the unit normals of the
+ * faces around each vertex. */
+static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
+{
+    r8_u16 k, f;
+    for (k = 0; k < me->nverts; k++) {
+        r8_vec3l sum;
+        r8_vec3 n;
+        r8_s16 *out = st->vnorm + 3u * (o->vbase + k);
+        sum.x = sum.y = sum.z = 0;
+        for (f = 0; f < me->nfaces; f++) {
+            const r8_face *fc = &me->faces[f];
+            r8_u8 j, nv = R8_RDU8(&fc->n);
+            for (j = 0; j < nv; j++)
+                if (R8_RDU8(&fc->v[j]) == k) {
+                    const r8_s16 *p = o->normals + 3u * f;
+                    if (o->nflash) {
+                        sum.x += R8_RDS16(p);
+                        sum.y += R8_RDS16(p + 1);
+                        sum.z += R8_RDS16(p + 2);
+                    } else {
+                        sum.x += p[0];
+                        sum.y += p[1];
+                        sum.z += p[2];
+                    }
+                }
+        }
+        r8_normalize(&sum, &n);
+        out[0] = n.x;
+        out[1] = n.y;
+        out[2] = n.z;
+    }
+}
+
+#endif
+
 int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
                    unsigned work_size)
 {
@@ -214,7 +359,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r8_state *st;
     r8_u8 *base;
     const r8_scene *sc;
-    r8_s32 zn, zf;
+#ifndef R8_NO_RT_NORMALS
+    r8_s16 *norms;
+#endif
     r8_u8 i;
     r8_u16 vb = 0, fb = 0, k;
     if (!cfg_valid(cfg))
@@ -229,191 +376,389 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->cfg = *cfg;
     r->work = work;
     r->work_size = work_size;
-    r->frame = 0;
     r->state = st;
-    sc = r8_render_scene(cfg);
+    sc = cfg->scene;
     st->scene = sc;
+    st->width = cfg->width;
+    st->height = cfg->height;
     st->nverts = pl.nverts;
     st->nfaces = pl.nfaces;
-    st->maxidx = pl.maxidx;
-    st->nclip = pl.nclip;
-    st->npool = pl.npool;
-    st->clipbuf = base + pl.clipbuf;
+    st->vsh = pl.vsh;
+    st->fast = pl.fast;
+    st->judd = (r8_u8)(cfg->cull == R8_CULL_JUDD);
+    st->method = cfg->method;
+    st->shading = cfg->shading;
+    st->nbands = pl.nbands;
+    st->nheads = pl.nheads;
+    st->bsh = -1;
+    for (k = 0; k < 11; k++)
+        if (cfg->band == (1 << k))
+            st->bsh = (r8_s16)k;
     st->obj = (r8_objx *)(void *)(base + pl.obj);
-    st->sv = (r8_svert *)(void *)(base + pl.sv);
-    st->out = base + pl.out;
-    st->fnorm = (r8_vec3 *)(void *)(base + pl.fnorm);
-    st->vnorm = cfg->shading == R8_SHADE_GOURAUD ? (r8_vec3 *)(void *)(base + pl.vnorm) : 0;
-    st->poly = (r8_poly *)(void *)(base + pl.poly);
-    st->idx = (r8_u16 *)(void *)(base + pl.idx);
-    st->order = (r8_u16 *)(void *)(base + pl.order);
-    st->jeff = (r8_u16 *)(void *)(base + pl.jeff);
-    st->pool = (r8_scan *)(void *)(base + pl.pool);
+    st->sv = (r8_s16 *)(void *)(base + pl.sv);
+    st->sv_cap = pl.sv_cap;
+    st->vkey = cfg->method == R8_VIS_PAINTER ? base + pl.vkey : 0;
+    st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
+    st->next = (r8_fid *)(void *)(base + pl.next);
+    st->slot = pl.npool ? base + pl.slot : 0;
+    st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
+    st->nclip = cfg->clip;
+    st->heads = (r8_fid *)(void *)(base + pl.heads);
+    st->clipbuf = base + pl.clipbuf;
+    st->tmp = base + pl.tmp;
+    st->pool = base + pl.pool;
+    st->esize = pl.esize;
+    st->npool = pl.npool;
     st->depth = base + pl.depth;
     st->depth_bytes = r8_vis_depth_bytes(cfg);
     st->snode = (r8_snode *)(void *)(base + pl.snode);
     st->nsnode = r8_vis_sbuf_nodes(cfg);
     st->shead = (r8_u16 *)(void *)(base + pl.shead);
-    st->sused = 0;
-    for (k = 0; k < (r8_u16)cfg->band && cfg->method == R8_VIS_SBUF; k++)
-        st->shead[k] = 0xFFFF;
     st->attrs = 0;
-    st->need_depth = cfg->method != R8_VIS_CULL;   /* painter's keys use it too */
     if (cfg->method >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;
     if (cfg->shading == R8_SHADE_GOURAUD)
         st->attrs |= R8_ATTR_S;
+    st->first = (r8_fid)R8_FID_END;
     st->npoly = 0;
     st->dropped = 0;
-    /* camera and depth range from the scene's extents */
-    r8_camera_init(&st->cam, cfg->width, cfg->height,
-                   (r8_s16)(r8_mul16(cfg->width, sc->focal_num) >> 6), sc->znear);
-    zn = 0x7FFFFFFFL;
-    zf = 1;
+    st->nclipped = 0;
+    st->pool_used = 0;
+    st->cam.cx = (r8_s16)(cfg->width * 8);
+    st->cam.cy = (r8_s16)(cfg->height * 8);
+#ifndef R8_NO_RT_NORMALS
+    norms = (r8_s16 *)(void *)(base + pl.norms);
+#endif
     for (i = 0; i < sc->nobjects; i++) {
-        const r8_object *ob = &sc->objects[i];
-        r8_s32 a = (r8_s32)ob->z - ob->mesh->radius, b = (r8_s32)ob->z + ob->mesh->radius;
-        if (a < zn) zn = a;
-        if (b > zf) zf = b;
-        st->obj[i].vbase = vb;
-        st->obj[i].fbase = fb;
-        vb = (r8_u16)(vb + ob->mesh->nverts);
-        fb = (r8_u16)(fb + ob->mesh->nfaces);
+        const r8_mesh *me = sc->objects[i].mesh;
+        r8_objx *o = &st->obj[i];
+        o->vbase = vb;
+        o->fbase = fb;
+        vb = (r8_u16)(vb + me->nverts);
+        fb = (r8_u16)(fb + me->nfaces);
+        o->hidden = 1;      /* until the first r8_render_frame */
+        if (me->normals) {
+            o->normals = me->normals;
+            o->nflash = R8_HAVE_PROGMEM;
+        } else {
+            r8_u8 j;
+            o->nflash = 0;
+            o->normals = 0;
+            for (j = 0; j < i; j++)
+                if (sc->objects[j].mesh == me)
+                    o->normals = st->obj[j].normals;
+#ifndef R8_NO_RT_NORMALS
+            if (!o->normals) {
+                r8_mesh_normals(me, norms);
+                o->normals = norms;
+                norms += 3u * me->nfaces;
+            }
+#endif
+        }
+#ifndef R8_NO_GOURAUD
+        if (cfg->shading == R8_SHADE_GOURAUD)
+            vertex_normals(st, me, o);
+#endif
     }
-    if (zn < sc->znear)
-        zn = sc->znear;
-    if (zf <= zn)
-        zf = zn + 1;
-    /* depth = 32767 * (1/z - 1/zf) / (1/zn - 1/zf) = dc1 / z - dc2 */
-    st->dc1 = r8_muldiv(r8_muldiv(32767L, zn, zf - zn), zf, 1);
-    st->dc2 = r8_muldiv(32767L, zn, zf - zn);
-    r8_cull_normals(st);
+    for (k = 0; k < st->nheads; k++)
+        st->heads[k] = (r8_fid)R8_FID_END;
     return 0;
+}
+
+void r8_render_stats_get(const r8_render *r, r8_render_stats *s)
+{
+    const r8_state *st = (const r8_state *)r->state;
+    s->faces = st->npoly;
+    s->clipped = st->nclipped;
+    s->dropped = st->dropped;
 }
 
 /* ---- per frame ---- */
 
-static r8_u8 row_range(const r8_state *st, const r8_poly *p, r8_s16 *top, r8_s16 *bot)
+#define ENTRY(st, k) ((st)->pool + (unsigned)(k) * (st)->esize)
+
+static r8_u16 band_of(const r8_state *st, r8_s16 y, r8_s16 band)
 {
-    r8_s16 ymin = 32767, ymax = -32767 - 1;
+    if (y < 0)
+        return 0;
+    if (st->bsh >= 0)
+        return (r8_u16)((r8_u16)y >> st->bsh);
+    return (r8_u16)((r8_u16)y / (r8_u16)band);
+}
+
+/* Rows [*top, *bot) and columns of the polygon over vertex list idx;
+ * 0 if no pixel centre of the frame can be inside. */
+static int face_rows(const r8_state *st, const r8_u16 *idx, r8_u8 n, r8_s16 *top, r8_s16 *bot)
+{
+    r8_s16 ymin = 32767, ymax = -32767 - 1, xmin = 32767, xmax = -32767 - 1;
     r8_u8 i;
-    for (i = 0; i < p->n; i++) {
-        r8_s16 y = st->sv[st->idx[p->idx + i]].y;
-        if (y < ymin) ymin = y;
-        if (y > ymax) ymax = y;
+    for (i = 0; i < n; i++) {
+        const r8_s16 *v = st->sv + ((unsigned)idx[i] << st->vsh);
+        if (v[0] < xmin) xmin = v[0];
+        if (v[0] > xmax) xmax = v[0];
+        if (v[1] < ymin) ymin = v[1];
+        if (v[1] > ymax) ymax = v[1];
     }
     *top = r8_row_of(ymin);
     *bot = r8_row_of(ymax);
-    return *top < *bot;
+    return *top < *bot && *bot > 0 && *top < st->height &&
+           r8_row_of(xmax) > 0 && r8_row_of(xmin) < st->width;
 }
 
-void r8_render_frame(r8_render *r, r8_u16 frame)
+/* ceil(65536 / n), n = 3..9: the mean of n depth keys by a product */
+static const r8_u16 recip_n[7] R8_FLASH = { 21846, 16384, 13108, 10923, 9363, 8192, 7282 };
+
+/* Painter's key of polygon idx[0..n): the mean of its vertices' depth
+ * (affine in 1/z, 8 bits) over 4, 0 = far .. 63 = near. */
+static r8_u8 depth_key(const r8_state *st, const r8_u16 *idx, r8_u8 n)
+{
+    r8_u16 sum = 0;
+    r8_u8 i;
+    for (i = 0; i < n; i++)
+        sum = (r8_u16)(sum + st->vkey[idx[i]]);
+    return (r8_u8)(((r8_u32)sum * R8_RDU16(&recip_n[n - 3]) >> 16) >> 2);
+}
+
+void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
+    int painter = st->method == R8_VIS_PAINTER;
+    r8_u16 k;
     r8_u8 i;
-    r->frame = frame;
+    r8_fid cur;
     st->npoly = 0;
-    st->nsv = st->nverts;
-    st->nidx = 0;
+    st->sv_used = st->nverts;
+    st->nclipped = 0;
     st->dropped = 0;
-    r8_tf_objects(st, frame);
+    st->pool_used = 0;
+    r8_tf_frame(st, cam);
     r8_tf_vertices(st);
-    for (i = 0; i < sc->nobjects; i++) {
+    for (k = 0; k < st->nheads; k++)
+        st->heads[k] = (r8_fid)R8_FID_END;
+    /* faces last to first, each put at the front of its bucket: every
+     * bucket then lists its faces in scene order */
+    for (i = sc->nobjects; i-- > 0;) {
         const r8_object *ob = &sc->objects[i];
         const r8_mesh *me = ob->mesh;
         const r8_objx *o = &st->obj[i];
         r8_u16 f;
-        for (f = 0; f < me->nfaces; f++) {
+        if (o->hidden)
+            continue;
+        for (f = me->nfaces; f-- > 0;) {
             const r8_face *fc = &me->faces[f];
-            r8_poly *p = &st->poly[st->npoly];
-            r8_u8 oand = 0xFF, oor = 0, k;
-            r8_s32 dsum = 0;
-            for (k = 0; k < fc->n; k++) {
-                r8_u8 c = st->out[o->vbase + fc->v[k]];
-                oand &= c;
-                oor |= c;
+            r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
+            r8_u16 gi[R8_MAX_FACE_VERTS];
+            const r8_u16 *list = gi;
+            r8_s16 top, bot;
+            r8_fid id;
+            r8_u16 key;
+            if (n < 3 || n > R8_MAX_FACE_VERTS)
+                continue;
+            if (r->cfg.cull == R8_CULL_NORMAL && !r8_cull_front(o, me, f))
+                continue;
+            for (j = 0; j < n; j++) {
+                vi[j] = R8_RDU8(&fc->v[j]);
+                gi[j] = (r8_u16)(o->vbase + vi[j]);
+                if (st->sv[(unsigned)gi[j] << st->vsh] == R8_VX_CLIP)
+                    clip = 1;
             }
-            if (oand & (r8_u8)~R8_OUT_GUARD) /* all outside one side (the guard
-                                                 flag is any side: clip instead) */
+            if (clip) {
+#ifdef R8_NO_CLIP
+                st->dropped++;     /* this build has no clipper */
                 continue;
-            if (r->cfg.cull == R8_CULL_NORMAL && !r8_cull_front(st, o, me, f))
-                continue;
-            if (oor & (R8_OUT_NEAR | R8_OUT_GUARD)) {
-                if (!r8_clip_face(st, o, ob, fc, p))
-                    continue;
-            } else {
-                if (st->nidx + fc->n > st->maxidx) {
+#else
+                r8_cpoly *cp;
+                if (st->nclipped >= st->nclip) {
                     st->dropped++;
                     continue;
                 }
-                p->idx = st->nidx;
-                p->n = fc->n;
-                for (k = 0; k < fc->n; k++)
-                    st->idx[st->nidx++] = (r8_u16)(o->vbase + fc->v[k]);
+                cp = &st->cpoly[st->nclipped];
+                if (!r8_clip_face(st, o, ob, f, vi, n, cp))
+                    continue;
+                list = cp->idx;
+                n = cp->n;
+                id = (r8_fid)(st->nfaces + st->nclipped);
+#endif
+            } else {
+                id = (r8_fid)(o->fbase + f);
             }
-            if (!row_range(st, p, &p->ytop, &p->ybot)) {
-                st->nidx = p->idx;   /* no pixel centre inside: drop it */
+            if (!face_rows(st, list, n, &top, &bot))
                 continue;
+            if (clip)
+                st->nclipped++;
+            if (painter) {
+                key = depth_key(st, list, n);
+            } else {
+                key = band_of(st, top, r->cfg.band);
             }
-            if (r->cfg.method == R8_VIS_PAINTER) {
-                for (k = 0; k < p->n; k++)
-                    dsum += st->sv[st->idx[p->idx + k]].d;
-                /* mean depth >> 9: 0..63, 0 = far (16-bit division) */
-                p->key = (r8_u8)((r8_u16)(dsum >> 4) / p->n >> 5);
-            }
-            if (r->cfg.shading == R8_SHADE_FLAT)
-                p->shade = fc->colour;
-            else
-                p->shade = (r8_u8)((r8_tf_shade(st, &st->fnorm[o->fbase + f], &o->light,
-                                                fc->colour) + 128) >> 8);
-            p->slot = R8_NO_SLOT;
+            st->next[id] = st->heads[key];
+            st->heads[key] = id;
+            if (st->slot)
+                st->slot[id] = R8_NO_SLOT;
             st->npoly++;
         }
     }
-    if (r->cfg.method == R8_VIS_PAINTER) {
-        r8_jeffsort(st);
-    } else {
-        r8_u16 k;
-        for (k = 0; k < st->npoly; k++)
-            st->order[k] = k;
+    /* painter's: chain the buckets, far to near, into the draw list;
+     * band buckets stay apart (r8_render_band merges them) */
+    cur = (r8_fid)R8_FID_END;
+    for (k = st->nheads; painter && k-- > 0;) {
+        r8_fid h = st->heads[k];
+        if (h != (r8_fid)R8_FID_END) {
+            r8_fid t = h;
+            while (st->next[t] != (r8_fid)R8_FID_END)
+                t = st->next[t];
+            st->next[t] = cur;
+            cur = h;
+        }
     }
-    for (i = 0; i < st->npool; i++)
-        st->pool[i].n = 0;              /* n == 0: free slot */
+    st->first = cur;
+    /* the pool shares memory with the buckets and the clipper: all free */
+    for (k = 0; k < st->npool; k++)
+        ((r8_acthead *)(void *)ENTRY(st, k))->used = 0;
 }
 
-static void draw_span(r8_state *st, r8_render *r, r8_fb *fb, const r8_poly *p, const r8_span *sp)
+/* ---- per band ---- */
+
+/* The vertex list and level of face id g into idx / *level; returns n. */
+static r8_u8 face_setup(const r8_state *st, r8_fid g, r8_u16 *idx, r8_u8 *level)
 {
-    switch (r->cfg.method) {
+    const r8_scene *sc = st->scene;
+    r8_u8 i = 0, n, j;
+    if (g >= st->nfaces) {
+        const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
+        for (j = 0; j < cp->n; j++)
+            idx[j] = cp->idx[j];
+        *level = cp->level;
+        return cp->n;
+    }
+    while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
+        i++;
+    {
+        const r8_objx *o = &st->obj[i];
+        const r8_object *ob = &sc->objects[i];
+        r8_u16 f = (r8_u16)(g - o->fbase);
+        const r8_face *fc = &ob->mesh->faces[f];
+        n = R8_RDU8(&fc->n);
+        for (j = 0; j < n; j++)
+            idx[j] = (r8_u16)(o->vbase + R8_RDU8(&fc->v[j]));
+        *level = r8_face_level(st, o, ob, f);
+    }
+    return n;
+}
+
+#ifndef R8_FAST_ONLY
+static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_span *sp)
+{
+    switch (st->method) {
+#ifndef R8_NO_ZBUF
     case R8_VIS_Z8:
-        r8_vis_zbuf(st, fb, p, sp, 0);
+        r8_vis_zbuf(st, fb, level, sp, 0);
         break;
     case R8_VIS_Z16:
-        r8_vis_zbuf(st, fb, p, sp, 1);
+        r8_vis_zbuf(st, fb, level, sp, 1);
         break;
+#endif
+#ifndef R8_NO_BLOCK
     case R8_VIS_BLOCK:
-        r8_vis_block(st, fb, p, sp, 0);
+        r8_vis_block(st, fb, level, (r8_u8)(g % 255u), sp, 0);
         break;
     case R8_VIS_BLOCKMASK:
-        r8_vis_block(st, fb, p, sp, 1);
+        r8_vis_block(st, fb, level, (r8_u8)(g % 255u), sp, 1);
         break;
+#endif
+#ifndef R8_NO_SBUF
     case R8_VIS_SBUF:
-        r8_vis_sbuf_insert(st, fb, p, sp);
+        r8_vis_sbuf_insert(st, fb, level, sp);
         break;
+#endif
     default:
-        r8_vis_plain(st, fb, p, sp);
+        r8_vis_plain(st, fb, level, sp);
     }
+    (void)g;
+}
+#endif
+
+/* Draw face g's rows in [y0, y1).  Returns 1 when the face is finished
+ * (or a back face), 0 when it goes on below y1, 2 when it starts below. */
+static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
+{
+    r8_u8 *e;
+    r8_u8 k = st->slot ? st->slot[g] : R8_NO_SLOT;
+    r8_scanx *c;
+    int done;
+    if (k != R8_NO_SLOT) {
+        e = ENTRY(st, k);
+    } else {
+        r8_u16 *idx = (r8_u16 *)(void *)st->tmp;   /* entries start with idx[] */
+        r8_u8 n, level;
+        r8_s16 top, bot;
+        n = face_setup(st, g, idx, &level);
+        face_rows(st, idx, n, &top, &bot);
+        if (top >= y1)
+            return 2;
+        if (bot <= y0)
+            return 1;
+        e = st->tmp;
+        if (bot > y1 && st->pool_used < st->npool) {
+            /* it goes on below this band: keep its state */
+            r8_u8 j;
+            for (k = 0; k < st->npool; k++)
+                if (!((r8_acthead *)(void *)ENTRY(st, k))->used)
+                    break;
+            e = ENTRY(st, k);
+            for (j = 0; j < n; j++)
+                ((r8_u16 *)(void *)e)[j] = idx[j];
+            st->slot[g] = k;
+            st->pool_used++;
+        }
+#ifndef R8_FAST_ONLY
+        if (!st->fast) {
+            r8_act *a = (r8_act *)(void *)e;
+            a->level = level;
+            if (!r8_scan_begin(&a->s, (const r8_svert *)(const void *)st->sv, a->idx, n,
+                               st->attrs, y0))
+                a->s.c.ybot = a->s.c.y;
+        } else
+#endif
+        {
+            r8_actx *a = (r8_actx *)(void *)e;
+            a->level = level;
+            if (!r8_scanx_begin(&a->c, st->sv, st->vsh, a->idx, n, y0))
+                a->c.ybot = a->c.y;
+        }
+        ((r8_acthead *)(void *)e)->used = 1;
+    }
+#ifndef R8_FAST_ONLY
+    if (!st->fast) {
+        r8_act *a = (r8_act *)(void *)e;
+        r8_span sp;
+        c = &a->s.c;
+        while (r8_scan_next(&a->s, y1, st->judd, &sp))
+            draw_span(st, fb, a->level, g, &sp);
+    } else
+#endif
+    {
+        r8_actx *a = (r8_actx *)(void *)e;
+        c = &a->c;
+        r8_scanx_fill(c, y1, st->judd, fb, a->level);
+    }
+    done = c->y >= c->ybot || c->backface;
+    if (done || k == R8_NO_SLOT) {
+        ((r8_acthead *)(void *)e)->used = 0;
+        if (k != R8_NO_SLOT) {
+            st->slot[g] = R8_NO_SLOT;
+            st->pool_used--;
+        }
+    }
+    return done;
 }
 
 void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
-    int judd = r->cfg.cull == R8_CULL_JUDD;
-    /* no depth test and one level per face: the fused scan-and-fill loop */
-    int fast = (r->cfg.method == R8_VIS_CULL || r->cfg.method == R8_VIS_PAINTER) &&
-               !(st->attrs & R8_ATTR_S);
-    r8_u16 k;
+    r8_fid *link = &st->first, g;
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
@@ -421,47 +766,47 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         r8_u8 *z = st->depth, *ze = z + st->depth_bytes;
         while (z < ze)
             *z++ = 0;
-        if (r->cfg.method == R8_VIS_BLOCK)   /* owner ids: none */
+        if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
             for (z = st->depth + st->depth_bytes / 2u; z < ze; z++)
                 *z = 0xFF;
     }
-    for (k = 0; k < st->npoly; k++) {
-        r8_poly *p = &st->poly[st->order[k]];
-        r8_scan tmp, *sc;
-        r8_span sp;
-        if (p->ybot <= y0 || p->ytop >= y1)
-            continue;
-        if (p->slot != R8_NO_SLOT) {
-            sc = &st->pool[p->slot];
-        } else {
-            r8_u8 j;
-            sc = &tmp;
-            for (j = 0; j < st->npool; j++)
-                if (st->pool[j].n == 0) {
-                    sc = &st->pool[j];
-                    p->slot = j;
-                    break;
-                }
-            if (!r8_scan_begin(sc, st->sv, st->idx + p->idx, p->n, st->attrs, y0)) {
-                sc->n = 0;
-                p->ybot = y0;     /* nothing left */
-                p->slot = R8_NO_SLOT;
-                continue;
-            }
-        }
-        if (fast)
-            r8_scan_fill(sc, y1, judd, fb, p->shade);
-        else
-            while (r8_scan_next(sc, y1, judd, &sp))
-                draw_span(st, r, fb, p, &sp);
-        if (sc->y >= sc->ybot || sc->backface) {
-            p->ybot = y0;         /* finished: never looked at again */
-            if (p->slot != R8_NO_SLOT) {
-                st->pool[p->slot].n = 0;
-                p->slot = R8_NO_SLOT;
-            }
-        }
+    if (st->method == R8_VIS_SBUF) {
+        /* the row lists share memory with the frame set-up: start empty */
+        r8_s16 k;
+        for (k = 0; k < fb->rows; k++)
+            st->shead[k] = 0xFFFFu;
+        st->sused = 0;
     }
-    if (r->cfg.method == R8_VIS_SBUF)
+    if (st->method == R8_VIS_PAINTER) {
+        for (g = *link; g != (r8_fid)R8_FID_END; g = *link) {
+            if (draw_face(st, g, y0, y1, fb) == 1)
+                *link = st->next[g];      /* finished: leaves the list */
+            else
+                link = &st->next[g];
+        }
+    } else {
+        /* merge the faces going on from above (st->first) with the band's
+         * bucket, both in scene order; those that go on form the next
+         * band's list */
+        r8_u16 b = band_of(st, y0, r->cfg.band);
+        r8_fid a = st->first, n = b < st->nbands ? st->heads[b] : (r8_fid)R8_FID_END;
+        while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
+            if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
+                g = a;
+                a = st->next[a];
+            } else {
+                g = n;
+                n = st->next[n];
+            }
+            if (draw_face(st, g, y0, y1, fb) != 1) {
+                *link = g;
+                link = &st->next[g];
+            }
+        }
+        *link = (r8_fid)R8_FID_END;
+    }
+#ifndef R8_NO_SBUF
+    if (st->method == R8_VIS_SBUF)
         r8_vis_sbuf_flush(st, fb);
+#endif
 }

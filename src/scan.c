@@ -1,16 +1,30 @@
 /* scan.c - scan conversion of convex polygons, as the seed describes it:
- * find the top vertex, walk the left chain (backwards through the
- * vertex list) and the right chain (forwards) down the screen, resetting
- * an edge's interpolators when it reaches its lower vertex.  Edges are
- * stepped with the exact interpolator from subpixel vertices and sampled
- * at pixel centres with the top-left rule (r8raster.h).
+ * find the top vertex, walk the left chain (backwards through the vertex
+ * list) and the right chain (forwards) down the screen, restarting an
+ * edge when it reaches its lower vertex.  Pixels are sampled at their
+ * centres with the top-left rule (r8raster.h).
+ *
+ * An edge is stepped directly in pixel columns: the column of the first
+ * pixel centre at or right of the edge on row y is
+ *     col(y) = ceil((ax - 8 + (16 y + 8 - ay) dx / dy) / 16)
+ * (12.4 subpixels, a = upper vertex, dx, dy = b - a), a linear function
+ * of y with the rational slope dx / dy.  So an exact DDA steps it: whole
+ * columns q = floor(dx / dy) per row plus a fraction r / dy carried in an
+ * error term.  Set-up costs one 16-bit division and a few short
+ * products; a row costs two adds and a compare per edge, with no
+ * rounding and no drift.  (The error term also has a constant part below
+ * 1/16 of a step, which never changes and is left out.)
  *
  * Judd's backface test: on a clockwise (front) polygon the left chain is
  * never right of the right chain; on a back face it is on every row where
- * they differ, so the first row where the two edges' subpixel positions
- * differ decides, before any pixel is drawn. */
+ * they differ.  The first row whose two columns differ decides, before
+ * any pixel is drawn: a back face draws nothing, a front face draws
+ * exactly the pixels it draws without the test. */
 #include "r8raster.h"
 #include "r8fixed.h"
+#include "r8flash.h"
+
+R8_CASSERT(svert_is_4_s16, sizeof(r8_svert) == 4 * sizeof(r8_s16));
 
 r8_s16 r8_row_of(r8_s16 y)
 {
@@ -18,72 +32,136 @@ r8_s16 r8_row_of(r8_s16 y)
     return (r8_s16)(v >= 0 ? v >> 4 : -((-v + 15) >> 4));
 }
 
-static r8_u8 wrap(const r8_scan *s, r8_u8 i, int dir)
+#define VOFF(s, i) ((unsigned)(s)->idx[i] << (s)->vsh)
+#define VX(s, i) ((s)->v[VOFF(s, i)])
+#define VY(s, i) ((s)->v[VOFF(s, i) + 1u])
+
+static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
 {
     if (dir > 0)
         return (r8_u8)(i + 1 == s->n ? 0 : i + 1);
     return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
 }
 
-/* Set up edge e on the chain going in direction dir from polygon
- * position `from`, for row y: skips edges that end at or above row y. */
-static void edge_start(r8_scan *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
+/* Column DDA of the edge (ax, ay) -> (bx, by), by > ay, on its first row
+ * y0 = row_of(ay).  Returns y0.  For edges over 2047 pixels tall (only
+ * direct callers reach them: the renderer's guard band keeps edges under
+ * 1800) coordinates are halved: a column can then be off by one where
+ * the edge passes within 1/8 pixel of a centre (tests/host/test_stability.c). */
+static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
 {
-    const r8_svert *a, *b;
+    r8_s32 dx = (r8_s32)bx - ax, dy = (r8_s32)by - ay, p;
+    r8_s16 y0 = r8_row_of(ay);
+    r8_s32 s0 = r8_mul16(y0, R8_SUBPX) + 8 - ay;     /* 0 <= s0 < 16 */
+    r8_s32 axm = (r8_s32)ax - 8;
+    r8_u32 u, d16, udx;
+    r8_u16 den, qd, rd;
+    r8_u8 pl;
+    if (dy > 32767) {
+        dx = r8_asr32(dx, 1);
+        dy = (dy + 1) >> 1;
+        axm = r8_asr32(axm, 1);
+        s0 >>= 1;
+        /* halved units: col = ceil((axm + s0 dx / dy) / 8) */
+        p = axm * dy + s0 * dx;      /* |p| < 2^31: coordinates are 16-bit */
+        it->den = (r8_u16)dy;
+        it->q = (r8_s16)r8_floordiv(dx, dy);
+        it->r = (r8_u16)(dx - (r8_s32)it->q * dy);
+        d16 = (r8_u32)dy * 8u;
+        it->val = (r8_s16)r8_floordiv(p + (r8_s32)d16 - 1, (r8_s32)d16);
+        it->err = (r8_u16)(((r8_u32)(p + (r8_s32)d16 - 1 - (r8_s32)it->val * (r8_s32)d16)) >> 3);
+        return y0;
+    }
+    den = (r8_u16)dy;
+    /* dx = qd dy + rd, 0 <= rd < dy (floor division) */
+    if (dx >= 0) {
+        udx = (r8_u32)dx;
+        if (udx < 0x10000UL) {
+            qd = (r8_u16)((r8_u16)udx / den);
+            rd = (r8_u16)((r8_u16)udx % den);
+        } else {
+            qd = (r8_u16)(udx / den);
+            rd = (r8_u16)(udx % den);
+        }
+        it->q = (r8_s16)qd;
+    } else {
+        udx = (r8_u32)(-(dx + 1));               /* -dx - 1 >= 0 */
+        if (udx < 0x10000UL) {
+            qd = (r8_u16)((r8_u16)udx / den);
+            rd = (r8_u16)((r8_u16)udx % den);
+        } else {
+            qd = (r8_u16)(udx / den);
+            rd = (r8_u16)(udx % den);
+        }
+        it->q = (r8_s16)(-(r8_s16)qd - 1);
+        rd = (r8_u16)(den - 1u - rd);
+    }
+    it->r = rd;
+    it->den = den;
+    /* N + D - 1 = 16 dy (axh + Ph) + U with ax - 8 = 16 axh + axl,
+     * P = axl + s0 q = 16 Ph + Pl, U = dy Pl + s0 rd + 16 dy - 1 */
+    p = (r8_s32)((r8_u32)axm & 15u) + s0 * (r8_s32)it->q;
+    pl = (r8_u8)((r8_u32)p & 15u);
+    it->val = (r8_s16)(r8_asr32(axm, 4) + r8_asr32(p, 4));
+    d16 = (r8_u32)den << 4;
+    u = (r8_u32)den * pl + (r8_u32)s0 * rd + d16 - 1u;   /* < 46 dy */
+    while (u >= d16) {
+        u -= d16;
+        it->val++;
+    }
+    it->err = (r8_u16)(u >> 4);
+    return y0;
+}
+
+/* Set up edge e on the chain going in direction dir from polygon
+ * position `from`, for row y: skips edges that end at or above row y,
+ * and steps a started edge down to row y. */
+static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
+{
     r8_u8 to = wrap(s, from, dir);
     r8_u8 guard = s->n;
-    r8_s32 s0, dy, dx;
-    r8_u8 sh = 0;
-    while (r8_row_of(s->v[s->idx[to]].y) <= y && guard--) {
+    r8_s16 ya, yb, y0;
+    yb = r8_row_of(VY(s, to));
+    while (yb <= y && guard--) {
         from = to;
         to = wrap(s, from, dir);
+        yb = r8_row_of(VY(s, to));
     }
-    a = &s->v[s->idx[from]];
-    b = &s->v[s->idx[to]];
     e->vi = to;
-    e->yend = r8_row_of(b->y);
-    dy = (r8_s32)b->y - a->y;
-    if (dy <= 0)
-        dy = 1;  /* only for non-convex input; keeps the arithmetic sane */
-    s0 = r8_mul16(y, R8_SUBPX) + 8 - a->y;  /* subpixels from a to row y */
-    if (dy > 32767) {
-        /* Edges over 2047 pixels tall (only reachable by direct callers;
-         * the renderer's guard band keeps edges under 1800): measure in
-         * half-subpixels: rows stay exact to a subpixel, x can be off by
-         * up to 3 subpixels (measured, tests/host/test_stability.c). */
-        dy = (dy + 1) >> 1;
-        s0 >>= 1;
-        sh = 1;
+    e->yend = yb;
+    ya = VY(s, from);
+    if (VY(s, to) <= ya) {
+        /* only for non-convex input: an empty edge at b */
+        e->x.val = r8_row_of(VX(s, to));
+        e->x.q = 0;
+        e->x.r = e->x.err = 0;
+        e->x.den = 1;
+        return;
     }
-    dx = (r8_s32)b->x - a->x;
-    r8_interp_init_mul(&e->x, a->x, s0, dx, dx * (R8_SUBPX >> sh), (r8_u16)dy);
-    if (s->attrs & R8_ATTR_D) {
-        dx = (r8_s32)b->d - a->d;
-        r8_interp_init_mul(&e->d, a->d, s0, dx, dx * (R8_SUBPX >> sh), (r8_u16)dy);
-    }
-    if (s->attrs & R8_ATTR_S) {
-        dx = (r8_s32)b->s - a->s;
-        r8_interp_init_mul(&e->s, a->s, s0, dx, dx * (R8_SUBPX >> sh), (r8_u16)dy);
+    y0 = edge_dda(&e->x, VX(s, from), ya, VX(s, to), VY(s, to));
+    while (y0 < y) {
+        R8_INTERP_STEP(&e->x);
+        y0++;
     }
 }
 
-r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
-                     r8_u8 n, r8_u8 attrs, r8_s16 ystart)
+r8_s16 r8_scanx_begin(r8_scanx *s, const r8_s16 *v, r8_u8 vsh,
+                      const r8_u16 *idx, r8_u8 n, r8_s16 ystart)
 {
     r8_u8 i, top = 0;
     r8_s16 ymin, ymax, y;
     s->v = v;
     s->idx = idx;
     s->n = n;
-    s->attrs = attrs;
+    s->vsh = vsh;
     s->backface = 0;
     s->front = 0;
     s->y = s->ybot = 0;
     if (n < 3)
         return 0;
-    ymin = ymax = v[idx[0]].y;
+    ymin = ymax = VY(s, 0);
     for (i = 1; i < n; i++) {
-        r8_s16 vy = v[idx[i]].y;
+        r8_s16 vy = VY(s, i);
         if (vy < ymin) {
             ymin = vy;
             top = i;
@@ -103,26 +181,9 @@ r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
     return (r8_s16)(s->ybot - y);
 }
 
-static void edge_step(const r8_scan *s, r8_edge *e)
-{
-    R8_INTERP_STEP(&e->x);
-    if (s->attrs & R8_ATTR_D)
-        R8_INTERP_STEP(&e->d);
-    if (s->attrs & R8_ATTR_S)
-        R8_INTERP_STEP(&e->s);
-}
-
-/* Column of the first pixel centre at or right of edge x (16-bit: edge x
- * stays inside the guard band). */
-#define COL_OF(it, c) do { r8_s16 v_ = (it).val; \
-    if (v_ > 32700) c = 2044; else { v_ = (r8_s16)(v_ + 7 + ((it).err != 0)); \
-    c = (r8_s16)(v_ >= 0 ? v_ >> 4 : -((-v_ + 15) >> 4)); } } while (0)
-
 /* Start row y: move either edge on to its next vertex where it ended,
- * then Judd's test, decided on the first row where the edges differ by a
- * subpixel, before any pixel of the polygon is drawn.  0: a back face
- * (the scan is over). */
-static int row_begin(r8_scan *s, r8_s16 y, int judd)
+ * then Judd's test.  0: a back face (the scan is over). */
+static int row_begin(r8_scanx *s, r8_s16 y, int judd)
 {
     r8_edge *l = &s->l, *r = &s->r;
     if (y >= l->yend)
@@ -140,64 +201,129 @@ static int row_begin(r8_scan *s, r8_s16 y, int judd)
     return 1;
 }
 
+/* ---- with attributes: depth and shade along the edges ---- */
+
+/* Attribute interpolator for the edge of e (its upper vertex is the one
+ * before e->vi in direction dir), at row y. */
+static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
+                       r8_interp *d, r8_interp *sh)
+{
+    const r8_scanx *c = &s->c;
+    r8_u8 to = e->vi, from = wrap(c, to, -dir);
+    const r8_s16 *a = c->v + VOFF(c, from);
+    const r8_s16 *b = c->v + VOFF(c, to);
+    r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
+    r8_u8 sh1 = 0;
+    if (dy <= 0)
+        dy = 1;
+    if (dy > 32767) {
+        dy = (dy + 1) >> 1;
+        s0 >>= 1;
+        sh1 = 1;
+    }
+    if (s->attrs & R8_ATTR_D) {
+        dv = (r8_s32)b[2] - a[2];
+        r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+    }
+    if (s->attrs & R8_ATTR_S) {
+        dv = (r8_s32)b[3] - a[3];
+        r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+    }
+}
+
+r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
+                     r8_u8 n, r8_u8 attrs, r8_s16 ystart)
+{
+    r8_s16 rows = r8_scanx_begin(&s->c, (const r8_s16 *)(const void *)v, 2, idx, n, ystart);
+    s->attrs = attrs;
+    if (rows && attrs) {
+        attr_start(s, &s->c.l, -1, s->c.y, &s->ld, &s->ls);
+        attr_start(s, &s->c.r, 1, s->c.y, &s->rd, &s->rs);
+    }
+    return rows;
+}
+
+static void attr_step(const r8_scan *s, r8_interp *d, r8_interp *sh)
+{
+    if (s->attrs & R8_ATTR_D)
+        R8_INTERP_STEP(d);
+    if (s->attrs & R8_ATTR_S)
+        R8_INTERP_STEP(sh);
+}
+
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
 {
-    r8_edge *l = &s->l, *r = &s->r;
-    r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
-    r8_u8 attrs = s->attrs;
-    while (s->y < lim) {
-        r8_s16 y = s->y, xl, xr;
-        if (!row_begin(s, y, judd))
+    r8_scanx *c = &s->c;
+    r8_edge *l = &c->l, *r = &c->r;
+    r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit;
+    while (c->y < lim) {
+        r8_s16 y = c->y, xl, xr;
+        r8_u8 lv = l->vi, rv = r->vi;
+        if (!row_begin(c, y, judd))
             return 0;
-        COL_OF(l->x, xl);
-        COL_OF(r->x, xr);
-        s->y = (r8_s16)(y + 1);
+        if (s->attrs) {
+            if (l->vi != lv)
+                attr_start(s, l, -1, y, &s->ld, &s->ls);
+            if (r->vi != rv)
+                attr_start(s, r, 1, y, &s->rd, &s->rs);
+        }
+        xl = l->x.val;
+        xr = r->x.val;
+        R8_INTERP_STEP(&l->x);
+        R8_INTERP_STEP(&r->x);
+        c->y = (r8_s16)(y + 1);
         if (xl < xr) {
             out->y = y;
             out->x0 = xl;
             out->x1 = xr;
-            if (attrs) {
-                out->dl = l->d.val;
-                out->dr = r->d.val;
-                out->sl = l->s.val;
-                out->sr = r->s.val;
-                edge_step(s, l);
-                edge_step(s, r);
-            } else {
-                R8_INTERP_STEP(&l->x);
-                R8_INTERP_STEP(&r->x);
+            if (s->attrs) {
+                out->dl = s->ld.val;
+                out->dr = s->rd.val;
+                out->sl = s->ls.val;
+                out->sr = s->rs.val;
+                attr_step(s, &s->ld, &s->ls);
+                attr_step(s, &s->rd, &s->rs);
             }
             return 1;
         }
-        if (attrs) {
-            edge_step(s, l);
-            edge_step(s, r);
-        } else {
-            R8_INTERP_STEP(&l->x);
-            R8_INTERP_STEP(&r->x);
+        if (s->attrs) {
+            attr_step(s, &s->ld, &s->ls);
+            attr_step(s, &s->rd, &s->rs);
         }
     }
     return 0;
 }
 
-void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 {
     r8_edge *l = &s->l, *r = &s->r;
     r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
     r8_s16 w = fb->width, y = s->y;
-    if (s->attrs || fb->format != R8_FMT_PAGE1) {
-        /* general case: one span at a time */
-        r8_span sp;
-        while (r8_scan_next(s, ylimit, judd, &sp))
-            r8_fb_span_dither(fb, sp.y, sp.x0, sp.x1, level, 0);
+    if (fb->format != R8_FMT_PAGE1) {
+        /* other layouts: one span at a time */
+        for (; y < lim; y++) {
+            r8_s16 xl, xr;
+            if (!row_begin(s, y, judd))
+                return;
+            xl = l->x.val;
+            xr = r->x.val;
+            R8_INTERP_STEP(&l->x);
+            R8_INTERP_STEP(&r->x);
+            if (xl < xr)
+                r8_fb_span_dither(fb, y, xl, xr, level, 0);
+        }
+        s->y = y;
         return;
     }
+    if (lim > fb->y0 + fb->rows)
+        lim = (r8_s16)(fb->y0 + fb->rows);    /* never below the band */
     for (; y < lim; y++) {
         r8_s16 xl, xr;
-        if (!row_begin(s, y, judd))
-            return;
-        COL_OF(l->x, xl);
-        COL_OF(r->x, xr);
+        if (y >= l->yend || y >= r->yend || (judd && !s->front))
+            if (!row_begin(s, y, judd))
+                return;
+        xl = l->x.val;
+        xr = r->x.val;
         R8_INTERP_STEP(&l->x);
         R8_INTERP_STEP(&r->x);
         if (xl < 0)
@@ -207,14 +333,9 @@ void r8_scan_fill(r8_scan *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         if (xl < xr && y >= fb->y0) {
             /* SSD1306 page: one byte per column, bit (row & 7) */
             r8_s16 by = (r8_s16)(y - fb->y0);
-            r8_u8 pat = 0xFF;     /* if chain, not nested ?: (cc65) */
-            if (level == 0)
-                pat = 0;
-            else if (level < 16)
-                pat = r8_fb_dither_row(level, y);
             r8_fb_page_run(fb->buf + (unsigned)(by >> 3) * (unsigned)w + (unsigned)xl,
-                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)), pat,
-                           (r8_u8)(xl & 3));
+                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)),
+                           r8_fb_dither_row(level, y), (r8_u8)(xl & 3));
         }
     }
     s->y = y;

@@ -1,47 +1,119 @@
-/* transform.c - per frame: object rotations, then every vertex once:
- * rotate and translate into camera space, project to 12.4 screen
- * coordinates, depth (affine in 1/z) and, for Gouraud, the vertex shade.
- * Vertices behind the near plane or outside the guard band are flagged
- * (outcodes) and their faces go through the clipper. */
+/* transform.c - per frame: the camera and every object's pose become one
+ * model -> camera matrix and offset per object; then every vertex once:
+ * rotate and translate into camera space (1/16 model unit: 4 fraction
+ * bits), project to 12.4 screen coordinates through a reciprocal (no
+ * division), and for the depth methods the depth (affine in 1/z) and for
+ * Gouraud the vertex shade.  Vertices behind the near plane or outside
+ * the guard band are marked (R8_VX_CLIP) and their faces go through the
+ * clipper. */
 #include "r8int.h"
 
-void r8_tf_objects(r8_state *st, r8_u16 frame)
+/* a * b for a Q1.14 entry and a world-unit difference (|b| < 2^17):
+ * |sum of three| < 2^31 for a rotation row. */
+static r8_s32 mulq(r8_s16 a, r8_s32 b)
 {
-    const r8_scene *sc = st->scene;
+    r8_s32 p = a;
+    p *= b;
+    return p;
+}
+
+/* out = m * d >> 10 (rounded): world units -> camera units (<< 4) */
+static void rot_offset(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int transpose)
+{
+    r8_s32 *o = &out->x;
     r8_u8 i;
-    for (i = 0; i < sc->nobjects; i++) {
-        const r8_object *ob = &sc->objects[i];
-        r8_objx *o = &st->obj[i];
-        r8_vec3 p;
-        r8_u8 ax = (r8_u8)(ob->ax + (r8_u8)(ob->sx * (int)(frame & 0xFF)));
-        r8_u8 ay = (r8_u8)(ob->ay + (r8_u8)(ob->sy * (int)(frame & 0xFF)));
-        r8_u8 az = (r8_u8)(ob->az + (r8_u8)(ob->sz * (int)(frame & 0xFF)));
-        r8_mat_rotate(&o->m, ax, ay, az);
-        r8_mat_apply_t14(&o->m, &sc->light, &o->light);
-        /* eye in model space: R^T * (0 - position) */
-        p.x = (r8_s16)-ob->x;
-        p.y = (r8_s16)-ob->y;
-        p.z = (r8_s16)-ob->z;
-        o->eye.x = r8_asr14(r8_mul16(o->m.m[0], p.x) + r8_mul16(o->m.m[3], p.y) +
-                            r8_mul16(o->m.m[6], p.z) + 8192);
-        o->eye.y = r8_asr14(r8_mul16(o->m.m[1], p.x) + r8_mul16(o->m.m[4], p.y) +
-                            r8_mul16(o->m.m[7], p.z) + 8192);
-        o->eye.z = r8_asr14(r8_mul16(o->m.m[2], p.x) + r8_mul16(o->m.m[5], p.y) +
-                            r8_mul16(o->m.m[8], p.z) + 8192);
+    for (i = 0; i < 3; i++) {
+        r8_s32 s;
+        if (transpose)
+            s = mulq(m->m[i], d[0]) + mulq(m->m[3 + i], d[1]) + mulq(m->m[6 + i], d[2]);
+        else
+            s = mulq(m->m[i * 3], d[0]) + mulq(m->m[i * 3 + 1], d[1]) + mulq(m->m[i * 3 + 2], d[2]);
+        o[i] = r8_asr32(s + 512, 10);
     }
 }
 
-r8_s16 r8_tf_depth(const r8_state *st, r8_s32 z)
+void r8_tf_frame(r8_state *st, const r8_camera *cam)
 {
-    r8_s32 d;
-    if (z < 1)
-        z = 1;
-    d = st->dc1 / z - st->dc2;
-    if (d < 0)
-        d = 0;
-    if (d > 32767)
-        d = 32767;
-    return (r8_s16)d;
+    const r8_scene *sc = st->scene;
+    r8_mat3 c, r, t;
+    r8_s32 zn, zf;
+    r8_u8 i;
+    r8_proj_init(&st->cam, st->width, st->height, cam->focal,
+                 (r8_s32)cam->znear * R8_CSCALE);
+    /* world -> camera */
+    if ((cam->flags & R8_CAM_MATRIX) && cam->m) {
+        c = *cam->m;
+    } else {
+        /* camera -> world is Ry(yaw) Rx(pitch) Rz(roll) */
+        {
+            r8_mat3 ry, rx, rz, a;
+            r8_mat_rotate(&ry, 0, cam->yaw, 0);
+            r8_mat_rotate(&rx, cam->pitch, 0, 0);
+            r8_mat_rotate(&rz, 0, 0, cam->roll);
+            r8_mat_mul(&rx, &rz, &a);
+            r8_mat_mul(&ry, &a, &t);
+        }
+        r8_mat_transpose(&t, &c);
+    }
+    for (i = 0; i < sc->nobjects; i++) {
+        const r8_object *ob = &sc->objects[i];
+        r8_objx *o = &st->obj[i];
+        r8_s32 d[3];
+        o->hidden = (r8_u8)(ob->pose.flags & R8_POSE_HIDDEN);
+        if ((ob->pose.flags & R8_POSE_MATRIX) && ob->pose.m)
+            r = *ob->pose.m;
+        else
+            r8_mat_rotate(&r, ob->pose.ax, ob->pose.ay, ob->pose.az);
+        r8_mat_mul(&c, &r, &o->m);
+        d[0] = (r8_s32)ob->pose.x - cam->x;
+        d[1] = (r8_s32)ob->pose.y - cam->y;
+        d[2] = (r8_s32)ob->pose.z - cam->z;
+        rot_offset(&c, d, &o->t, 0);
+        d[0] = -d[0];
+        d[1] = -d[1];
+        d[2] = -d[2];
+        rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
+        r8_mat_apply_t14(&r, &sc->light, &o->light);
+    }
+    /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
+    zn = (r8_s32)cam->znear * R8_CSCALE;
+    zf = (r8_s32)cam->zfar * R8_CSCALE;
+    if (zf < zn + (zn >> 3) + 16)
+        zf = zn + (zn >> 3) + 16;      /* keeps 1 - zn/zf >= 1/9 */
+    st->zn16 = zn;
+    st->zf16 = zf;
+    st->zne = 0;
+    while (zn >= 0x8000L) {
+        zn >>= 1;
+        st->zne++;
+    }
+    while (zn < 0x4000L) {
+        zn <<= 1;
+        st->zne--;
+    }
+    st->znm = (r8_s16)zn;     /* znear = znm * 2^zne */
+    st->wf = (r8_u32)r8_muldiv(st->zn16, 1L << 20, zf);
+    st->gh = (r8_u32)r8_muldiv(32767L, 1L << 16, (r8_s32)((1L << 20) - (r8_s32)st->wf));
+}
+
+r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
+{
+    /* W = zn/z = znm 2^zne m 2^(e-31), in Q20 */
+    r8_u32 p = (r8_u32)m * (r8_u16)st->znm;   /* [2^29, 2^31) */
+    int sh = 11 - st->zne - e;
+    r8_u32 w, dw;
+    if (sh <= 0)
+        w = 1UL << 20;                  /* z <= znear/2^k: nearest */
+    else if (sh > 31)
+        w = 0;
+    else
+        w = (r8_u32)r8_asr32((r8_s32)p, (r8_u8)sh);
+    if (w > (1UL << 20))
+        w = 1UL << 20;
+    if (w <= st->wf)
+        return 0;
+    dw = w - st->wf;
+    return (r8_s16)((dw * st->gh + 32768UL) >> 16);
 }
 
 /* Shade in 8.8 (level 0..16 << 8) of a surface with unit normal n under
@@ -60,50 +132,59 @@ r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light,
     return (r8_s16)r8_asr14(k * ((r8_s32)colour << 8) + 8192);
 }
 
+/* Camera point c (<< R8_CFRAC) to screen vertex g: x, y (and depth). */
+void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
+{
+    r8_s16 *out = st->sv + ((unsigned)g << st->vsh);
+    r8_s8 e;
+    r8_u16 m;
+    if (c->z < st->zn16) {
+        out[0] = R8_VX_CLIP;
+        return;
+    }
+    m = r8_recip(c->z, &e);
+    if (r8_project_recip(&st->cam, c, m, e, &out[0], &out[1])) {
+        out[0] = R8_VX_CLIP;
+        return;
+    }
+    if (st->vsh == 2)
+        out[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
+    if (st->vkey)
+        st->vkey[g] = (r8_u8)(r8_tf_depth(st, m, e) >> 7);
+}
+
 void r8_tf_vertices(r8_state *st)
 {
     const r8_scene *sc = st->scene;
-    const r8_camera *cam = &st->cam;
-    r8_s32 wsub = r8_mul16(st->cam.cx, 2), hsub = r8_mul16(st->cam.cy, 2);
     r8_u8 i;
     for (i = 0; i < sc->nobjects; i++) {
-        const r8_object *ob = &sc->objects[i];
-        const r8_mesh *me = ob->mesh;
+        const r8_mesh *me = sc->objects[i].mesh;
         const r8_objx *o = &st->obj[i];
-        r8_u16 k;
+        const r8_s16 *mv = me->verts;
+        r8_u16 k, g = o->vbase;
+        if (o->hidden)
+            continue;
         for (k = 0; k < me->nverts; k++) {
-            r8_u16 g = (r8_u16)(o->vbase + k);
-            r8_svert *s = &st->sv[g];
-            const r8_s16 *mv = me->verts + k * 3;
             r8_vec3 v;
             r8_vec3l c;
-            r8_u8 out = 0;
-            v.x = mv[0];
-            v.y = mv[1];
-            v.z = mv[2];
-            r8_mat_apply(&o->m, &v, &c);
-            c.x += ob->x;
-            c.y += ob->y;
-            c.z += ob->z;
-            if (c.z < cam->znear) {
-                out = R8_OUT_NEAR;
-                s->x = s->y = 0;
-                s->d = 0;
-            } else {
-                r8_s32 gz = c.z * cam->guard, ax = c.x < 0 ? -c.x : c.x, ay = c.y < 0 ? -c.y : c.y;
-                if (ax * cam->focal > gz || ay * cam->focal > gz)
-                    out = R8_OUT_GUARD;
-                r8_project(cam, &c, &s->x, &s->y);
-                if (s->x < 0) out |= R8_OUT_LEFT;
-                if (s->x >= wsub) out |= R8_OUT_RIGHT;
-                if (s->y < 0) out |= R8_OUT_TOP;
-                if (s->y >= hsub) out |= R8_OUT_BOTTOM;
-                s->d = st->need_depth ? r8_tf_depth(st, c.z) : 0;
+            v.x = R8_RDS16(mv);
+            v.y = R8_RDS16(mv + 1);
+            v.z = R8_RDS16(mv + 2);
+            mv += 3;
+            r8_mat_apply16(&o->m, &v, &c);
+            c.x += o->t.x;
+            c.y += o->t.y;
+            c.z += o->t.z;
+            r8_tf_camera(&c, st, g);
+            if (st->attrs & R8_ATTR_S) {
+                r8_vec3 n;
+                const r8_s16 *vn = st->vnorm + 3u * g;
+                n.x = vn[0];
+                n.y = vn[1];
+                n.z = vn[2];
+                st->sv[((unsigned)g << 2) + 3u] = r8_tf_shade(st, &n, &o->light, 16);
             }
-            s->s = 0;
-            if (st->attrs & R8_ATTR_S)
-                s->s = r8_tf_shade(st, &st->vnorm[g], &o->light, 16);
-            st->out[g] = out;
+            g++;
         }
     }
 }

@@ -59,7 +59,7 @@ static r8_u16 put_piece(r8_state *st, r8_u16 *head, r8_u16 prev, const r8_snode 
     return k;
 }
 
-void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
+void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp)
 {
     r8_snode t;
     r8_u16 *head = &st->shead[sp->y - fb->y0];
@@ -73,7 +73,7 @@ void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span
     t.dd = r8_floordiv(((r8_s32)sp->dr - sp->dl) * 256, n);
     t.s = sp->sl;
     t.ds = (r8_s16)r8_divround((r8_s32)sp->sr - sp->sl, n);
-    t.shade = p->shade;
+    t.shade = level;
     t.next = SB_END;
     c = sp->x0 < 0 ? 0 : sp->x0;
     b = sp->x1 > fb->width ? fb->width : sp->x1;

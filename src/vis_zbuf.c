@@ -45,7 +45,7 @@ static void pixw_init(pixw *w, r8_fb *fb, r8_s16 y)
 static void pixw_put(const pixw *w, r8_s16 x, r8_u8 level)
 {
     if (w->row) {
-        if (level > w->thr[x & 3])
+        if (level > R8_RDU8(&w->thr[x & 3]))
             w->row[x] |= w->m;
         else
             w->row[x] &= w->nm;
@@ -78,12 +78,12 @@ static int span_setup(const r8_state *st, const r8_fb *fb, const r8_span *sp,
 
 
 /* No depth test, Gouraud shading (cull only and painter's). */
-void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
+void r8_vis_plain(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp)
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
     pixw w;
-    (void)p;   /* flat and Lambert spans go through r8_scan_fill */
+    (void)level;   /* flat and Lambert spans go through r8_scanx_fill */
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
         return;
     pixw_init(&w, fb, sp->y);
@@ -93,7 +93,7 @@ void r8_vis_plain(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp)
     }
 }
 
-void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int bits16)
+void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bits16)
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
@@ -107,8 +107,12 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
     if (bits16 && w.row && !gouraud) {
         /* the common case, written out: 16-bit depth, one level, pages */
         r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
-        r8_u8 *b = w.row, m = w.m, nm = w.nm, lv = p->shade;
-        const r8_u8 *t = w.thr;
+        r8_u8 *b = w.row, m = w.m, nm = w.nm, lv = level;
+        r8_u8 t[4];
+        t[0] = R8_RDU8(&w.thr[0]);
+        t[1] = R8_RDU8(&w.thr[1]);
+        t[2] = R8_RDU8(&w.thr[2]);
+        t[3] = R8_RDU8(&w.thr[3]);
         for (x = xa; x < xb; x++) {
             if ((r8_u16)d.val >= z[x]) {
                 z[x] = (r8_u16)d.val;
@@ -124,7 +128,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
         for (x = xa; x < xb; x++) {
             if ((r8_u16)d.val >= z[x]) {
                 z[x] = (r8_u16)d.val;
-                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
+                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : level);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -136,7 +140,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
             r8_u8 d8 = (r8_u8)(d.val >> 7);
             if (d8 >= z[x]) {
                 z[x] = d8;
-                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
+                pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : level);
             }
             R8_INTERP_STEP(&d);
             if (gouraud)
@@ -159,7 +163,7 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, i
  *    drawn only if nearer than the block depth, which keeps the nearest
  *    depth drawn.  No holes; errors remain where surfaces cross inside a
  *    block. */
-void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, int mask)
+void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span *sp, int mask)
 {
     r8_s16 xa, xb, x;
     r8_interp d, s;
@@ -170,7 +174,6 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
     r8_u8 *bz = st->depth;
     r8_u8 *owner = st->depth + nblocks;   /* naive: polygon id per block */
     r8_u16 *bm = (r8_u16 *)(void *)(st->depth + ((nblocks + 1u) & ~1u));
-    r8_u8 id = (r8_u8)((r8_u16)(p - st->poly) % 255u);   /* 0xFF: no owner */
     r8_u16 rowbits = (r8_u16)((sp->y & 3) << 2);
     int gouraud = (st->attrs & R8_ATTR_S) != 0;
     if (!span_setup(st, fb, sp, &xa, &xb, &d, &s))
@@ -191,7 +194,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
             }
             for (; x < end; x++) {
                 if (draw)
-                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
+                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : level);
                 R8_INTERP_STEP(&d);
                 if (gouraud)
                     R8_INTERP_STEP(&s);
@@ -203,7 +206,7 @@ void r8_vis_block(r8_state *st, r8_fb *fb, const r8_poly *p, const r8_span *sp, 
                 r8_u16 bit = (r8_u16)(1u << (rowbits | (x & 3)));
                 if (!(m & bit) || d8 >= bz[b]) {
                     bm[b] = (r8_u16)(bm[b] | bit);
-                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : p->shade);
+                    pixw_put(&w, x, gouraud ? r8_vis_level(s.val) : level);
                     drawn = 1;
                 }
                 R8_INTERP_STEP(&d);

@@ -139,18 +139,67 @@ static void test_rotation(void)
 
 static void test_projection(void)
 {
-    r8_camera cam;
+    r8_proj cam;
     r8_vec3l v;
     r8_s16 sx, sy;
-    r8_camera_init(&cam, 128, 64, 100, 16);
-    v.x = 50; v.y = -25; v.z = 200;
-    r8_project(&cam, &v, &sx, &sy);
+    r8_proj_init(&cam, 128, 64, 100, 16L << R8_CFRAC);
+    v.x = 50L << R8_CFRAC; v.y = -25L * R8_CSCALE; v.z = 200L << R8_CFRAC;
+    TEST_ASSERT_EQUAL_INT(0, r8_project(&cam, &v, &sx, &sy));
     TEST_ASSERT_EQUAL_INT(64 * 16 + 400, sx);   /* 100*50/200 = 25 px */
     TEST_ASSERT_EQUAL_INT(32 * 16 - 200, sy);
-    v.x = 1000000L; v.y = -1000000L; v.z = 100000L;  /* slow path */
-    r8_project(&cam, &v, &sx, &sy);
-    TEST_ASSERT_EQUAL_INT(64 * 16 + 16000, sx);
-    TEST_ASSERT_EQUAL_INT(32 * 16 - 16000, sy);
+    /* large coordinates: 1000000/100000 * 100 = 1000 px is outside the
+     * 900 px guard band; 80 px inside */
+    v.x = 1000000L; v.y = -1000000L; v.z = 100000L;
+    TEST_ASSERT_EQUAL_INT(1, r8_project(&cam, &v, &sx, &sy));
+    v.x = 1000000L; v.y = -1000000L; v.z = 1250000L;
+    TEST_ASSERT_EQUAL_INT(0, r8_project(&cam, &v, &sx, &sy));
+    TEST_ASSERT_EQUAL_INT(64 * 16 + 1280, sx);
+    TEST_ASSERT_EQUAL_INT(32 * 16 - 1280, sy);
+}
+
+/* The reciprocal projection against the exact quotient, 100 px either
+ * side of the centre, z from 1 to 2^17 units: within one subpixel
+ * (rounding to nearest is half; the table's error adds less than 1/8 on
+ * screen). */
+static void test_projection_precision(void)
+{
+    r8_proj cam;
+    r8_vec3l v;
+    r8_s16 sx, sy;
+    long z, worst = 0;
+    int i;
+    r8_proj_init(&cam, 128, 64, 100, 16);
+    for (z = 16; z < (1L << 21); z = z * 9 / 8 + 1)
+        for (i = -4; i <= 4; i++) {
+            long x = z / 4 * i, exact2, got2, err;   /* up to 100 px out */
+            v.x = x; v.y = -x; v.z = z;
+            if (r8_project(&cam, &v, &sx, &sy))
+                continue;
+            /* 2 * 16 * 100 * x / z, truncated, in half subpixels */
+            exact2 = r8_muldiv(3200L, x, z);
+            got2 = 2L * (sx - 64 * 16);
+            err = got2 - exact2;
+            if (err < 0) err = -err;
+            if (err > worst) worst = err;
+            TEST_ASSERT_INT_WITHIN(1, -(sx - 64 * 16), sy - 32 * 16);  /* ties round up */
+        }
+    TEST_ASSERT_TRUE(worst <= 2);   /* half subpixels: rounding plus table error */
+}
+
+/* r8_recip: m * 2^(e - 31) within 2^-15 of 1/z, for every magnitude. */
+static void test_recip(void)
+{
+    r8_s32 z;
+    r8_s8 e;
+    for (z = 1; z < 0x50000000L; z = z + z / 3 + 1) {
+        r8_u16 m = r8_recip(z, &e);
+        /* z * m * 2^(e-31) ~= 1: scale z into 16 bits with the same e */
+        r8_u32 zn = e >= 0 ? (r8_u32)z << e : (r8_u32)z >> -e;
+        r8_u32 p = (zn >> 1) * (r8_u32)m;            /* ~ 2^30 */
+        TEST_ASSERT_TRUE(m >= 0x8000u);
+        TEST_ASSERT_TRUE(zn >= 0x8000UL && zn < 0x10000UL);
+        TEST_ASSERT_TRUE(p > 0x40000000UL - 0x10000UL && p < 0x40000000UL + 0x10000UL);
+    }
 }
 
 int main(void)
@@ -166,5 +215,7 @@ int main(void)
     RUN_TEST(test_normalize);
     RUN_TEST(test_rotation);
     RUN_TEST(test_projection);
+    RUN_TEST(test_projection_precision);
+    RUN_TEST(test_recip);
     return UNITY_END();
 }

@@ -194,10 +194,10 @@ static void test_judd_skips_reversed(void)
     v[2].x = 50; v[2].y = 300;
     TEST_ASSERT_TRUE(r8_scan_begin(&s, v, cw, 3, 0, 0) > 0);
     TEST_ASSERT_EQUAL_INT(1, r8_scan_next(&s, 100, 1, &sp));
-    TEST_ASSERT_EQUAL_INT(0, s.backface);
+    TEST_ASSERT_EQUAL_INT(0, s.c.backface);
     TEST_ASSERT_TRUE(r8_scan_begin(&s, v, ccw, 3, 0, 0) > 0);
     TEST_ASSERT_EQUAL_INT(0, r8_scan_next(&s, 100, 1, &sp));
-    TEST_ASSERT_EQUAL_INT(1, s.backface);
+    TEST_ASSERT_EQUAL_INT(1, s.c.backface);
     /* without the Judd test a reversed polygon simply draws nothing */
     TEST_ASSERT_TRUE(r8_scan_begin(&s, v, ccw, 3, 0, 0) > 0);
     TEST_ASSERT_EQUAL_INT(0, r8_scan_next(&s, 100, 0, &sp));

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "r8render.h"
+#include "demo.h"
 
 static unsigned char work[1 << 20];
 static unsigned char frame_buf[1024 * 1024];
@@ -33,6 +34,8 @@ int main(int argc, char **argv)
     static const char *const formats[] = {"page1", "row1", "idx8"};
     r8_render_cfg cfg;
     r8_render r;
+    static r8_demo_run run;
+    int scene = R8_DEMO_CUBE;
     r8_fb band, full;
     const char *pgm = 0, *raw = 0;
     int frame = 0, count = 1, i, f;
@@ -48,8 +51,7 @@ int main(int argc, char **argv)
         }
         i++;
         if (!strcmp(a, "--scene")) {
-            if (r8_scene_by_name(v) < 0) { fprintf(stderr, "r8dump: unknown scene %s\n", v); return 2; }
-            cfg.scene = (r8_u8)r8_scene_by_name(v);
+            if ((scene = r8_demo_by_name(v)) < 0) { fprintf(stderr, "r8dump: unknown scene %s\n", v); return 2; }
         } else if (!strcmp(a, "--method")) {
             if (r8_method_by_name(v) < 0) { fprintf(stderr, "r8dump: unknown method %s\n", v); return 2; }
             cfg.method = (r8_u8)r8_method_by_name(v);
@@ -69,6 +71,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "r8dump: --method auto is resolved by the analyser, not here\n");
         return 2;
     }
+    r8_demo_setup(&run, r8_demo_get((r8_u8)scene), cfg.width);
+    cfg.scene = &run.scene;
     need = r8_render_ram(&cfg);
     if (!need || r8_render_init(&r, &cfg, work, sizeof work)) {
         fprintf(stderr, "r8dump: invalid configuration\n");
@@ -79,7 +83,8 @@ int main(int argc, char **argv)
     for (f = frame; f < frame + count; f++) {
         r8_s16 y;
         FILE *out;
-        r8_render_frame(&r, (r8_u16)f);
+        r8_demo_pose(&run, (r8_u16)f);
+        r8_render_frame(&r, &run.cam);
         r8_fb_init(&band, band_buf, cfg.format, cfg.width, cfg.height, 0, cfg.band);
         for (y = 0; y < cfg.height; y = (r8_s16)(y + cfg.band)) {
             r8_s16 yy, x;

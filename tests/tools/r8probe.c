@@ -1,6 +1,6 @@
 /* r8probe.c - the accuracy and cost probe (issue 6): renders a built-in
  * scene or a scene blob (host/rast8/scene.py to_blob) loaded at run time
- * through r8_render_cfg.custom, and writes what the reference comparison
+ * (scenes/blob.c), and writes what the reference comparison
  * needs.  Host tool only (C99).
  *
  *   r8probe [--scene S | --blob FILE] [--method M] [--shading flat|lambert|gouraud]
@@ -12,6 +12,8 @@
  *           [--verts FILE]    per frame and vertex: "frame obj k sx sy z near"
  *                             (C projection, 12.4; near = 1 behind znear)
  *           [--stats]         print "dropped=N npoly=N" for the last frame
+ *           [--normals]       print r8_mesh_normals of every object's mesh,
+ *                             "obj face nx ny nz", computed in C at run time
  * Face ids come from rendering flat IDX8 with each face's colour set to
  * its id (two passes when there are more than 254 faces); the visibility
  * method, cull and band are the ones given, so ids show which surface the
@@ -24,8 +26,9 @@
 #include "r8fixed.h"
 #include "../../src/r8int.h"
 
-#define MAXM 255
-#define MAXV 65536
+#include "demo.h"
+#include "blob.h"
+
 #define MAXF 16384
 
 static unsigned char work[1 << 21];
@@ -33,11 +36,11 @@ static unsigned char frame_buf[1024 * 1024];
 static unsigned char band_buf[1024 * 1024];
 static unsigned short ids[1024 * 1024];
 
-static r8_s16 vpool[MAXV * 3];
-static r8_face fpool[MAXF], fid[MAXF];
-static r8_mesh meshes[MAXM], idmeshes[MAXM];
-static r8_object objects[MAXM], idobjects[MAXM];
-static r8_scene blob_scene, id_scene;
+static r8_face fid[MAXF];
+static r8_mesh idmeshes[R8_DEMO_MAXOBJ];
+static r8_demo_obj idobjects[R8_DEMO_MAXOBJ];
+static r8_demo id_demo;
+static r8_demo_run run;
 
 static int pick(const char *v, const char *const *names, int n)
 {
@@ -49,96 +52,16 @@ static int pick(const char *v, const char *const *names, int n)
     exit(2);
 }
 
-static const unsigned char *bp, *bend;
-static void need(size_t n)
-{
-    if ((size_t)(bend - bp) < n) {
-        fprintf(stderr, "r8probe: blob truncated\n");
-        exit(2);
-    }
-}
-static int u8(void) { need(1); return *bp++; }
-static int s8(void) { int v = u8(); return v > 127 ? v - 256 : v; }
-static int u16(void) { int a = u8(); return a | (u8() << 8); }
-static int s16(void) { int v = u16(); return v > 32767 ? v - 65536 : v; }
-
-static void load_blob(const char *path)
-{
-    static unsigned char data[1 << 20];
-    FILE *f = fopen(path, "rb");
-    size_t n;
-    int nm, no, i, nv = 0, nf = 0;
-    if (!f) { perror(path); exit(2); }
-    n = fread(data, 1, sizeof data, f);
-    fclose(f);
-    bp = data;
-    bend = data + n;
-    need(4);
-    if (memcmp(bp, "R8SC", 4)) { fprintf(stderr, "r8probe: not a scene blob\n"); exit(2); }
-    bp += 4;
-    if (u8() != 1) { fprintf(stderr, "r8probe: blob version\n"); exit(2); }
-    nm = u8();
-    no = u8();
-    u8();
-    blob_scene.name = "blob";
-    blob_scene.focal_num = (r8_s16)s16();
-    blob_scene.znear = (r8_s16)s16();
-    blob_scene.ambient = (r8_s16)s16();
-    blob_scene.light.x = (r8_s16)s16();
-    blob_scene.light.y = (r8_s16)s16();
-    blob_scene.light.z = (r8_s16)s16();
-    for (i = 0; i < nm; i++) {
-        r8_mesh *m = &meshes[i];
-        int k, mv = u8(), mf = u16();
-        m->convex = (r8_u8)u8();
-        m->radius = (r8_s16)s16();
-        if (nv + mv > MAXV || nf + mf > MAXF) { fprintf(stderr, "r8probe: blob too big\n"); exit(2); }
-        m->verts = vpool + nv * 3;
-        m->faces = fpool + nf;
-        m->nverts = (r8_u16)mv;
-        m->nfaces = (r8_u16)mf;
-        for (k = 0; k < mv * 3; k++)
-            vpool[nv * 3 + k] = (r8_s16)s16();
-        for (k = 0; k < mf; k++) {
-            r8_face *fc = &fpool[nf + k];
-            int j;
-            fc->n = (r8_u8)u8();
-            fc->colour = (r8_u8)u8();
-            for (j = 0; j < 4; j++)
-                fc->v[j] = (r8_u8)u8();
-        }
-        nv += mv;
-        nf += mf;
-    }
-    for (i = 0; i < no; i++) {
-        r8_object *o = &objects[i];
-        int mi = u8();
-        if (mi >= nm) { fprintf(stderr, "r8probe: bad mesh index\n"); exit(2); }
-        o->mesh = &meshes[mi];
-        o->x = (r8_s16)s16();
-        o->y = (r8_s16)s16();
-        o->z = (r8_s16)s16();
-        o->ax = (r8_u8)u8();
-        o->ay = (r8_u8)u8();
-        o->az = (r8_u8)u8();
-        o->sx = (r8_s8)s8();
-        o->sy = (r8_s8)s8();
-        o->sz = (r8_s8)s8();
-    }
-    blob_scene.objects = objects;
-    blob_scene.nobjects = (r8_u8)no;
-}
-
-/* id_scene: a copy of sc whose objects each get their own mesh copy with
+/* id_demo: a copy of d whose objects each get their own mesh copy with
  * face colours = chunk `pass` of the global face index (+1). */
-static void make_id_scene(const r8_scene *sc, int pass)
+static void make_id_demo(const r8_demo *d, int pass)
 {
     int i, nf = 0;
-    id_scene = *sc;
-    for (i = 0; i < sc->nobjects; i++) {
-        const r8_mesh *m = sc->objects[i].mesh;
+    id_demo = *d;
+    for (i = 0; i < d->nobjects; i++) {
+        const r8_mesh *m = d->objects[i].mesh;
         int k;
-        idobjects[i] = sc->objects[i];
+        idobjects[i] = d->objects[i];
         idmeshes[i] = *m;
         idmeshes[i].faces = fid + nf;
         for (k = 0; k < m->nfaces; k++) {
@@ -149,14 +72,14 @@ static void make_id_scene(const r8_scene *sc, int pass)
         idobjects[i].mesh = &idmeshes[i];
         nf += m->nfaces;
     }
-    id_scene.objects = idobjects;
+    id_demo.objects = idobjects;
 }
 
-static int total_faces(const r8_scene *sc)
+static int total_faces(const r8_demo *d)
 {
     int i, n = 0;
-    for (i = 0; i < sc->nobjects; i++)
-        n += sc->objects[i].mesh->nfaces;
+    for (i = 0; i < d->nobjects; i++)
+        n += d->objects[i].mesh->nfaces;
     return n;
 }
 
@@ -166,7 +89,8 @@ static void render(const r8_render_cfg *cfg, r8_render *r, int f)
     r8_fb band, full;
     r8_s16 y;
     r8_fb_init(&full, frame_buf, cfg->format, cfg->width, cfg->height, 0, cfg->height);
-    r8_render_frame(r, (r8_u16)f);
+    r8_demo_pose(&run, (r8_u16)f);
+    r8_render_frame(r, &run.cam);
     r8_fb_init(&band, band_buf, cfg->format, cfg->width, cfg->height, 0, cfg->band);
     for (y = 0; y < cfg->height; y = (r8_s16)(y + cfg->band)) {
         r8_s16 yy, x;
@@ -187,35 +111,36 @@ static void init(r8_render *r, const r8_render_cfg *cfg)
     }
 }
 
-static void write_verts(FILE *out, const r8_render_cfg *cfg, const r8_scene *sc, int f)
+/* The renderer's own projection of every vertex (the demo camera sits
+ * at the origin with no rotation: camera space = world space). */
+static void write_verts(FILE *out, const r8_render_cfg *cfg, const r8_demo *d, int f)
 {
-    r8_camera cam;
+    r8_proj cam;
     int i;
-    r8_camera_init(&cam, cfg->width, cfg->height,
-                   (r8_s16)(((r8_s32)cfg->width * sc->focal_num) >> 6), sc->znear);
-    for (i = 0; i < sc->nobjects; i++) {
-        const r8_object *ob = &sc->objects[i];
+    r8_proj_init(&cam, cfg->width, cfg->height, run.cam.focal, (r8_s32)d->znear * R8_CSCALE);
+    r8_demo_pose(&run, (r8_u16)f);
+    for (i = 0; i < d->nobjects; i++) {
+        const r8_object *ob = &run.obj[i];
         r8_mat3 m;
         r8_u16 k;
-        r8_u8 ax = (r8_u8)(ob->ax + (r8_u8)(ob->sx * (f & 0xFF)));
-        r8_u8 ay = (r8_u8)(ob->ay + (r8_u8)(ob->sy * (f & 0xFF)));
-        r8_u8 az = (r8_u8)(ob->az + (r8_u8)(ob->sz * (f & 0xFF)));
-        r8_mat_rotate(&m, ax, ay, az);
+        r8_mat_rotate(&m, ob->pose.ax, ob->pose.ay, ob->pose.az);
         for (k = 0; k < ob->mesh->nverts; k++) {
             r8_vec3 v;
             r8_vec3l c;
             r8_s16 sx = 0, sy = 0;
+            int near;
             v.x = ob->mesh->verts[k * 3];
             v.y = ob->mesh->verts[k * 3 + 1];
             v.z = ob->mesh->verts[k * 3 + 2];
-            r8_mat_apply(&m, &v, &c);
-            c.x += ob->x;
-            c.y += ob->y;
-            c.z += ob->z;
-            if (c.z >= cam.znear)
-                r8_project(&cam, &c, &sx, &sy);
-            fprintf(out, "%d %d %u %d %d %ld %d\n", f, i, (unsigned)k, sx, sy, (long)c.z,
-                    c.z < cam.znear);
+            r8_mat_apply16(&m, &v, &c);
+            c.x += (r8_s32)ob->pose.x * R8_CSCALE;
+            c.y += (r8_s32)ob->pose.y * R8_CSCALE;
+            c.z += (r8_s32)ob->pose.z * R8_CSCALE;
+            near = c.z < cam.znear;
+            if (!near && r8_project(&cam, &c, &sx, &sy))
+                near = 1;   /* outside the guard band: clipped, not projected */
+            fprintf(out, "%d %d %u %d %d %ld %d\n", f, i, (unsigned)k, sx, sy,
+                    (long)(c.z >> R8_CFRAC), near);
         }
     }
 }
@@ -228,17 +153,19 @@ int main(int argc, char **argv)
     r8_render_cfg cfg;
     r8_render r;
     const char *raw = 0, *faceid = 0, *verts = 0, *blob = 0;
-    int frame = 0, count = 1, i, f, stats = 0;
+    int frame = 0, count = 1, i, f, stats = 0, normals = 0;
     unsigned bytes;
-    const r8_scene *sc;
+    const r8_demo *sc = r8_demo_get(R8_DEMO_CUBE);
+    char err[160];
     r8_render_defaults(&cfg);
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : "";
         if (!strcmp(a, "--stats")) { stats = 1; continue; }
+        if (!strcmp(a, "--normals")) { normals = 1; continue; }
         i++;
         if (!strcmp(a, "--scene")) {
-            if (r8_scene_by_name(v) < 0) { fprintf(stderr, "r8probe: unknown scene %s\n", v); return 2; }
-            cfg.scene = (r8_u8)r8_scene_by_name(v);
+            if (r8_demo_by_name(v) < 0) { fprintf(stderr, "r8probe: unknown scene %s\n", v); return 2; }
+            sc = r8_demo_get((r8_u8)r8_demo_by_name(v));
         } else if (!strcmp(a, "--blob")) blob = v;
         else if (!strcmp(a, "--method")) {
             if (r8_method_by_name(v) < 0 || r8_method_by_name(v) == R8_VIS_AUTO) {
@@ -259,11 +186,23 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--verts")) verts = v;
         else { fprintf(stderr, "r8probe: unknown option %s\n", a); return 2; }
     }
-    if (blob) {
-        load_blob(blob);
-        cfg.custom = &blob_scene;
+    if (blob && r8_blob_load(blob, &sc, err, sizeof err)) {
+        fprintf(stderr, "r8probe: %s\n", err);
+        return 2;
     }
-    sc = r8_render_scene(&cfg);
+    if (normals) {
+        static r8_s16 nbuf[3 * MAXF];
+        for (i = 0; i < sc->nobjects; i++) {
+            const r8_mesh *m = sc->objects[i].mesh;
+            int k;
+            r8_mesh_normals(m, nbuf);
+            for (k = 0; k < m->nfaces; k++)
+                printf("%d %d %d %d %d\n", i, k, nbuf[3 * k], nbuf[3 * k + 1], nbuf[3 * k + 2]);
+        }
+        return 0;
+    }
+    r8_demo_setup(&run, sc, cfg.width);
+    cfg.scene = &run.scene;
     init(&r, &cfg);
     bytes = r8_fb_bytes(cfg.format, cfg.width, cfg.height);
     if (raw) {
@@ -290,11 +229,12 @@ int main(int argc, char **argv)
         if (!out) { perror(faceid); return 1; }
         c.shading = R8_SHADE_FLAT;
         c.format = R8_FMT_IDX8;
-        c.custom = &id_scene;
         for (f = frame; f < frame + count; f++) {
             memset(ids, 0, npx * sizeof ids[0]);
             for (p = 0; p < passes; p++) {
-                make_id_scene(sc, p);
+                make_id_demo(sc, p);
+                r8_demo_setup(&run, &id_demo, cfg.width);
+                c.scene = &run.scene;
                 init(&r, &c);
                 render(&c, &r, f);
                 for (k = 0; k < npx; k++)

@@ -1,0 +1,117 @@
+/* demo.c - the built-in scene list and the spin (see demo.h). */
+#include "demo.h"
+
+extern const r8_demo r8_demo_cube, r8_demo_torus, r8_demo_teapot, r8_demo_terrain,
+    r8_demo_wall, r8_demo_cross, r8_demo_separate;
+
+static const char *const names[R8_DEMO_COUNT] = {
+    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate"
+};
+
+#ifdef R8_DEMO_ONLY
+/* one scene linked: a firmware build */
+const r8_demo *r8_demo_get(r8_u8 id)
+{
+    static const r8_demo *const only[R8_DEMO_COUNT] = {
+#if R8_DEMO_ONLY == 0
+        &r8_demo_cube, 0, 0, 0, 0, 0, 0
+#elif R8_DEMO_ONLY == 1
+        0, &r8_demo_torus, 0, 0, 0, 0, 0
+#elif R8_DEMO_ONLY == 2
+        0, 0, &r8_demo_teapot, 0, 0, 0, 0
+#elif R8_DEMO_ONLY == 3
+        0, 0, 0, &r8_demo_terrain, 0, 0, 0
+#elif R8_DEMO_ONLY == 4
+        0, 0, 0, 0, &r8_demo_wall, 0, 0
+#elif R8_DEMO_ONLY == 5
+        0, 0, 0, 0, 0, &r8_demo_cross, 0
+#else
+        0, 0, 0, 0, 0, 0, &r8_demo_separate
+#endif
+    };
+    return id < R8_DEMO_COUNT ? only[id] : 0;
+}
+#else
+const r8_demo *r8_demo_get(r8_u8 id)
+{
+    static const r8_demo *const all[R8_DEMO_COUNT] = {
+        &r8_demo_cube, &r8_demo_torus, &r8_demo_teapot, &r8_demo_terrain,
+        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate
+    };
+    return id < R8_DEMO_COUNT ? all[id] : 0;
+}
+#endif
+
+const char *r8_demo_name(r8_u8 id)
+{
+    return id < R8_DEMO_COUNT ? names[id] : 0;
+}
+
+static int streq(const char *a, const char *b)
+{
+    while (*a && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+int r8_demo_by_name(const char *name)
+{
+    int i;
+    for (i = 0; i < R8_DEMO_COUNT; i++)
+        if (streq(name, names[i]))
+            return i;
+    return -1;
+}
+
+int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
+{
+    r8_s32 zn = 0x7FFFFFFFL, zf = 1;
+    r8_u8 i;
+    if (!d || d->nobjects > R8_DEMO_MAXOBJ)
+        return -1;
+    run->demo = d;
+    for (i = 0; i < d->nobjects; i++) {
+        const r8_demo_obj *o = &d->objects[i];
+        r8_s32 a = (r8_s32)o->z - o->mesh->radius, b = (r8_s32)o->z + o->mesh->radius;
+        run->obj[i].mesh = o->mesh;
+        r8_pose_identity(&run->obj[i].pose);
+        run->obj[i].pose.x = o->x;
+        run->obj[i].pose.y = o->y;
+        run->obj[i].pose.z = o->z;
+        if (a < zn) zn = a;
+        if (b > zf) zf = b;
+    }
+    run->scene.objects = run->obj;
+    run->scene.nobjects = d->nobjects;
+    run->scene.ambient = d->ambient;
+    run->scene.light = d->light;
+    r8_camera_defaults(&run->cam, width);
+    run->cam.focal = (r8_s16)(r8_mul16(width, d->focal_num) >> 6);
+    /* the depth range the objects can occupy: all the depth methods'
+     * precision goes there (nothing lies nearer, so the near plane may
+     * move up to it) */
+    if (zn < d->znear)
+        zn = d->znear;
+    if (zf <= zn)
+        zf = zn + 1;
+    run->cam.znear = (r8_s16)zn;
+    run->cam.zfar = (r8_s16)zf;
+    r8_demo_pose(run, 0);
+    return 0;
+}
+
+void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
+{
+    const r8_demo *d = run->demo;
+    int f = (int)(frame & 0xFF);
+    r8_u8 i;
+    for (i = 0; i < d->nobjects; i++) {
+        const r8_demo_obj *o = &d->objects[i];
+        r8_pose *p = &run->obj[i].pose;
+        p->ax = (r8_u8)(o->ax + (r8_u8)(o->sx * f));
+        p->ay = (r8_u8)(o->ay + (r8_u8)(o->sy * f));
+        p->az = (r8_u8)(o->az + (r8_u8)(o->sz * f));
+    }
+}

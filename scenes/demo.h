@@ -1,0 +1,75 @@
+/* demo.h - the built-in demo scenes (one generated C file each in scenes/, from
+ * host/rast8/scenes and scene.py by `make scenes`) and the spin that
+ * animates them.  Application code, not library: a program links only
+ * the scenes it names (a firmware build compiles demo.c with
+ * -DR8_DEMO_ONLY=<id> so one scene's meshes are linked).
+ *
+ * The spin demo in a few lines:
+ *     r8_demo_run run;
+ *     r8_demo_setup(&run, r8_demo_get(R8_DEMO_CUBE), 128);
+ *     cfg.scene = &run.scene;  ... r8_render_init ...
+ *     per frame: r8_demo_pose(&run, frame); r8_render_frame(&r, &run.cam);
+ */
+#ifndef R8_DEMO_H
+#define R8_DEMO_H
+
+#include "r8render.h"
+#include "r8flash.h"
+
+/* One object of a demo scene: a mesh, its place, its start angles and
+ * its turn per frame (256 steps per turn). */
+typedef struct r8_demo_obj {
+    const r8_mesh *mesh;
+    r8_s16 x, y, z;
+    r8_u8 ax, ay, az;
+    r8_s8 sx, sy, sz;
+} r8_demo_obj;
+
+typedef struct r8_demo {
+    const char *name;
+    const r8_demo_obj *objects;
+    r8_u8 nobjects;
+    r8_s16 focal_num;          /* focal length = width * focal_num / 64 px */
+    r8_s16 znear;              /* near plane */
+    r8_s16 ambient;            /* Q1.14 */
+    r8_vec3 light;             /* unit vector towards the light, Q1.14 */
+} r8_demo;
+
+/* The built-in scenes, in this order. */
+#define R8_DEMO_CUBE 0        /* the rotating cube (one convex mesh) */
+#define R8_DEMO_TORUS 1       /* 200-face torus */
+#define R8_DEMO_TEAPOT 2      /* 232-face teapot */
+#define R8_DEMO_TERRAIN 3     /* seed's fractal terrain */
+#define R8_DEMO_WALL 4        /* seed's wall-and-pillar case */
+#define R8_DEMO_CROSS 5       /* two interpenetrating objects */
+#define R8_DEMO_SEPARATE 6    /* several separate objects */
+#define R8_DEMO_COUNT 7
+#ifndef R8_DEMO_MAXOBJ
+#define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
+                                 scene may set its own count) */
+#endif
+
+/* Scene `id` (0 if out of range, or not linked in this build), its
+ * name, and the id of a name (-1 if unknown). */
+const r8_demo *r8_demo_get(r8_u8 id);
+const char *r8_demo_name(r8_u8 id);
+int r8_demo_by_name(const char *name);
+
+/* A running demo: the application's scene, camera and objects (the
+ * array last: a program may size it for its scene alone). */
+typedef struct r8_demo_run {
+    const r8_demo *demo;
+    r8_scene scene;
+    r8_camera cam;
+    r8_object obj[R8_DEMO_MAXOBJ];
+} r8_demo_run;
+
+/* Objects at their start poses; the camera at the origin looking down
+ * +z with the scene's focal length for a `width`-pixel screen, and its
+ * near/far depth range fitted to the scene's extents.  -1 if d is 0 or
+ * has too many objects. */
+int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width);
+/* Poses of frame `frame`: angle = start + turn * (frame & 255). */
+void r8_demo_pose(r8_demo_run *run, r8_u16 frame);
+
+#endif
