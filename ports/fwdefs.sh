@@ -3,7 +3,7 @@
 # scene S, method M, F frames, FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
 # firmware then reports APP_E_RAM/APP_E_CFG instead of rendering), and
-# the link-time trims of emu/fw_trim.c that apply (-Isrc for r8int.h).
+# the link-time trims of ports/fw_trim.c that apply (-Isrc for r8int.h).
 IFS=- read -r s m f <<< "$1"
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$2")
 case "$ram" in ''|0) ram=1 ;; esac

@@ -34,7 +34,7 @@ int main(void)
     r8_u8 s, m;
     plat_init();
 #ifdef FW_SCENE
-    /* linked with one scene's table (emu/scene_strip.py): that scene only */
+    /* linked with one scene's table (ports/scene_strip.py): that scene only */
     for (s = FW_SCENE; s == FW_SCENE; s++)
 #else
     for (s = 0; s < R8_SCENE_COUNT; s++)
