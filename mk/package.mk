@@ -75,8 +75,8 @@ test-package: $(LIB) $(R8DUMP) $(SETUP)
 
 # the zip's layout, and every sketch compiled and linked for an
 # ATmega328P against tests/arduino/core (and a real core if installed),
-# then run in libsimavr against the host reference firmware.
-test-arduino: $(ARDUINO_ZIP) $(BUILD)/emu/avrsim $(BUILD)/emu/fw-host $(SETUP)
+# then run in libsimavr against build/rast8-emu's stream.
+test-arduino: $(ARDUINO_ZIP) $(BUILD)/emu/avrsim $(BUILD)/rast8-emu $(SETUP)
 	@bash scripts/run-step.sh arduino $(PY) tests/arduino/check.py $(ARDUINO_ZIP)
 
 TEST_STEPS += test-package test-arduino

@@ -345,6 +345,10 @@ def main(argv):
         if shutil.which(tool) is None:
             print("check.py: %s not found (apt-get install gcc-avr avr-libc)" % tool)
             return 2
+    for f in (AVRSIM, EMU):
+        if not os.access(f, os.X_OK):
+            print("check.py: %s missing (make %s)" % (f, os.path.relpath(f, ROOT)))
+            return 2
     with z:
         got = check_layout(z)
         tmp = tempfile.mkdtemp(prefix="r8ard.")
