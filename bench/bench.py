@@ -23,7 +23,7 @@ the start-up are excluded the same way on every target):
 Clocks for the compute-bound fps: AVR 16 MHz, 6502 0.985 MHz (C64 PAL),
 Z80 3.5 MHz (ZX Spectrum).  Link-bound fps at 8N1: baud / 10 / bytes.
 RAM: ram_static_bytes = .data+.bss (AVR, avr-size), DATA+BSS (6502, ld65
-map), the statics placed after the code (Z80, emu/z80link.py), all
+map), the statics placed after the code (Z80, ports/z80/z80link.py), all
 including the firmware's arena; stack_peak_bytes = free RAM painted with
 0xA5 before main and the high-water mark read at the end (AVR: by
 emu/avrsim from the simulator's memory; 6502/Z80: by the platform layer,
@@ -285,7 +285,7 @@ def write_md(recs, host, elapsed):
     if mic:
         with open(os.path.join(ROOT, "build", "bench", "micro.json"), "w") as f:
             json.dump(mic, f, indent=1)
-        L.append("## Inner loops (emu/fw_micro.c; build/bench/micro.json)")
+        L.append("## Inner loops (bench/fw_micro.c; build/bench/micro.json)")
         L.append("")
         L.append("| piece | what | unit | ATmega1284P cycles/unit | Z80 T-states/unit (indicative) |")
         L.append("|---|---|---|---:|---:|")
@@ -343,7 +343,7 @@ MICRO = [("span", 10, "r8_fb_span_dither, PAGE1, 120-px rows", "pixel"),
 
 
 def micro():
-    """Inner-loop costs from emu/fw_micro.c on the 1284P (exact) and the
+    """Inner-loop costs from bench/fw_micro.c on the 1284P (exact) and the
     Z80 (indicative): cycles per pixel / row / vertex / byte."""
     res = []
     for t in ("avr1284", "z80"):

@@ -1,4 +1,4 @@
-/* main.c - rast8-emu: runs the demo firmware (emu/app.c) natively and
+/* main.c - rast8-emu: runs the demo firmware (examples/spin/app.c) natively and
  * exposes its UART as a file, stdout, a pty or a TCP port.  See --help. */
 #define _GNU_SOURCE
 #include <errno.h>

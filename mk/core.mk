@@ -57,7 +57,7 @@ TEST_STEPS += test-lint test-strict test-cross test-unit test-asan
 # r8dump: render built-in scenes on the host to raw bytes or PGM.
 R8DUMP := $(BUILD)/r8dump
 ALL_TARGETS += $(R8DUMP)
-$(R8DUMP): tests/tools/r8dump.c $(LIBS) $(wildcard include/*.h)
+$(R8DUMP): tools/r8dump.c $(LIBS) $(wildcard include/*.h)
 	$(CC) -std=c99 -O2 -Wall -Wextra -Werror $(INC) $< $(LIBS) -o $@
 
 # Golden frames: compared byte for byte; only `make golden` rewrites them.

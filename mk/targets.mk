@@ -8,36 +8,38 @@
 #   make bench      build/bench/results.json + docs/benchmarks.md
 #
 # Under build/x/<target>/ (target = avr328 avr1284 6502 z80):
-#   obj/            library objects (src/*.c, emu/app.c), plat, scene_S
+#   obj/            library objects (src/*.c, examples/spin/app.c), plat, scene_S
 #   librast8.a / rast8.lib   the library archive
 #   sizes.txt       "scene method bytes": app_ram() measured on the target
-#                   (emu/fw_sizes.c, one program per scene)
+#                   (tests/targets/fw_sizes.c, one program per scene)
 #   fw/fw-S-M-F.*   firmware for scene S, method M, F frames, with a static
-#                   arena of exactly app_ram() bytes (emu/fw_app.c)
+#                   arena of exactly app_ram() bytes (examples/spin/fw_app.c)
 #   tests/test_x.*  tests/c/test_x.c + tests/unity + the library
-# Programs are linked by emu/xbuild.sh; one that does not fit its target
+# Programs are linked by ports/xbuild.sh; one that does not fit its target
 # becomes a one-line "SKIP: reason" file, which the runners report.
-# Every firmware links build/x/scenes/scene_S.c (emu/scene_strip.py): the
+# Every firmware links build/x/scenes/scene_S.c (ports/scene_strip.py): the
 # scene table with only its own scene's meshes.
 
 XB       := $(BUILD)/x
 AVRSIM   := $(BUILD)/emu/avrsim
 FWHOST   := $(BUILD)/emu/fw-host
 XTARGETS := avr328 avr1284 6502 z80
-XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) emu/plat.h $(wildcard emu/app.h)
+XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) ports/plat.h $(wildcard examples/spin/app.h)
 XSCENES  := 0 1 2 3 4 5 6
 
-# The library as the targets see it: src/*.c plus emu/app.c.  The
-# firmware main is emu/fw_app.c (app_run over a static arena).
-XLIB_SRC   := $(LIB_SRC) $(wildcard emu/app.c)
-FW_SRC     := emu/fw_app.c
+# The library as the targets see it: src/*.c plus examples/spin/app.c.
+# The firmware main is examples/spin/fw_app.c (app_run over a static
+# arena).  Port layers: ports/<cpu>/plat_*.c behind ports/plat.h.
+XLIB_SRC   := $(LIB_SRC) $(wildcard examples/spin/app.c)
+FW_SRC     := examples/spin/fw_app.c
+XINC       := -Iports -Iexamples/spin
 FW_DEFS    := -DFW_HAVE_APP
 XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
-              -ffunction-sections -fdata-sections $(INC) -Iemu
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) -Iemu
-Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) -Iemu
+              -ffunction-sections -fdata-sections $(INC) $(XINC)
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) $(XINC)
+Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p
@@ -65,12 +67,12 @@ $(AVRSIM): emu/avrsim.c
 
 $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
-	$(CC) $(STRICT) -O2 -g $(INC) -Iemu -DFW_HOST $(FW_DEFS) -o $@ $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC)
+	$(CC) $(STRICT) -O2 -g $(INC) $(XINC) -DFW_HOST $(FW_DEFS) -o $@ $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC)
 
-# ---- one scene's table (target independent)
-$(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) emu/scene_strip.py
+# ---- one scene's meshes (target independent)
+$(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) ports/scene_strip.py
 	@mkdir -p $(dir $@)
-	python3 emu/scene_strip.py $* > $@
+	python3 ports/scene_strip.py $* > $@
 # keep chained intermediates (scene tables, plat/unity/scene objects)
 .SECONDARY: $(XSCENES:%=$(XB)/scenes/scene_%.c) \
   $(foreach t,avr328 avr1284 6502,$(XB)/$(t)/obj/unity_target.o $(XSCENES:%=$(XB)/$(t)/obj/scene_%.o)) \
@@ -81,7 +83,10 @@ define AVR_OBJ
 $(XB)/$(1)/obj/%.o: src/%.c $(XHDRS)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: emu/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS)
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
+$(XB)/$(1)/obj/%.o: examples/spin/%.c $(XHDRS)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
 $(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
@@ -98,31 +103,37 @@ $(eval $(call AVR_OBJ,avr1284))
 
 $(XB)/6502/obj/%.o: src/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
-$(XB)/6502/obj/%.o: emu/%.c $(XHDRS)
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
+$(XB)/6502/obj/%.o: ports/6502/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
+$(XB)/6502/obj/%.o: examples/spin/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
 $(XB)/6502/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/cc65c.sh $@ $< $(C65_CFLAGS)
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
 $(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
-	bash emu/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
 $(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
 $(XB)/z80/obj/%.rel: src/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/sdcc.sh $(Z80_CFLAGS) --Werror -c -o $@ $<
-$(XB)/z80/obj/%.rel: emu/%.c $(XHDRS)
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) --Werror -c -o $@ $<
+$(XB)/z80/obj/%.rel: ports/z80/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
+$(XB)/z80/obj/%.rel: examples/spin/%.c $(XHDRS)
+	@mkdir -p $(dir $@)
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
 $(XB)/z80/obj/%.rel: $(XB)/scenes/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash emu/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
 $(XB)/z80/obj/%.rel: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
-	bash emu/sdcc.sh $(Z80_CFLAGS) -Itests/unity -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -Itests/unity -c -o $@ $<
 $(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel)
 	rm -f $@ && sdar -rc $@ $^
 
@@ -134,25 +145,25 @@ XSIZES_avr1284 := $(XB)/avr1284/sizes.txt
 XSIZES_6502    := $(XB)/6502/sizes.txt
 XSIZES_z80     := $(XB)/z80/sizes.txt
 define XPROG
-XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) emu/xbuild.sh
+XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) ports/xbuild.sh
 XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))
 
-$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): emu/fw_sizes.c emu/fw_trim.c $(XB)/$(1)/obj/scene_%.$(OBJ_$(1)) $$(XDEPS_$(1))
+$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): tests/targets/fw_sizes.c ports/fw_trim.c $(XB)/$(1)/obj/scene_%.$(OBJ_$(1)) $$(XDEPS_$(1))
 	@mkdir -p $$(dir $$@)
-	$(XENV) bash emu/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$*.$(OBJ_$(1)) -- $(FW_DEFS) -DFW_SCENE=$$* -Isrc -DFW_TRIM_LZ77 -DFW_TRIM_SBUF
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$*.$(OBJ_$(1)) -- $(FW_DEFS) -DFW_SCENE=$$* -Isrc -DFW_TRIM_LZ77 -DFW_TRIM_SBUF
 
-$(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) emu/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) emu/fwdefs.sh
+$(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) ports/fwdefs.sh
 	@mkdir -p $$(dir $$@)
-	$(XENV) bash emu/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
-	  -- $(FW_DEFS) $$$$(bash emu/fwdefs.sh $$* $(XSIZES_$(1)))
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
+	  -- $(FW_DEFS) $$$$(bash ports/fwdefs.sh $$* $(XSIZES_$(1)))
 
-$(XB)/$(1)/micro.$(EXT_$(1)): emu/fw_micro.c $$(XDEPS_$(1))
-	$(XENV) bash emu/xbuild.sh $(1) $$@ $$<
+$(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<
 
-$(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh emu/xbuild.sh
+$(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh ports/xbuild.sh
 	@mkdir -p $$(dir $$@)
 	@bash tests/targets/wrap.sh $$< > $$(basename $$@).wrap.c
-	$(XENV) bash emu/xbuild.sh $(1) $$@ $$(basename $$@).wrap.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) \
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$(basename $$@).wrap.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) \
 	  -- -Itests/unity -Itests/c $(if $(findstring 6502,$(1)),-W -error)
 endef
 $(foreach t,$(XTARGETS),$(eval $(call XPROG,$(t))))

@@ -13,7 +13,7 @@ LIBUSB_LIBS   := $(shell pkg-config --libs libusb-1.0 2>/dev/null || echo -lusb-
 
 ALL_TARGETS += $(USBCAT)
 
-$(USBCAT): emu/usbcat.c
+$(USBCAT): tools/usbcat.c
 	@mkdir -p $(dir $@)
 	$(CC) -std=gnu99 -Wall -Wextra -Werror $(CFLAGS) $(LIBUSB_CFLAGS) $< -o $@ $(LIBUSB_LIBS)
 

@@ -6,30 +6,31 @@
 EMU_CFLAGS := -std=gnu99 -Wall -Wextra -Werror -O2 -g
 EMU        := $(BUILD)/rast8-emu
 CODEC_TOOL := $(BUILD)/rast8-codec
-EMU_SRC    := emu/main.c emu/plat_host.c emu/app.c
-EMU_HDR    := emu/app.h emu/plat.h emu/plat_host.h $(wildcard include/*.h)
+EMU_SRC    := emu/main.c emu/plat_host.c examples/spin/app.c
+EMU_HDR    := examples/spin/app.h ports/plat.h emu/plat_host.h $(wildcard include/*.h)
+EMU_INC    := -Iemu -Iports -Iexamples/spin
 
 ALL_TARGETS += $(EMU) $(CODEC_TOOL)
 
 $(EMU): $(EMU_SRC) $(EMU_HDR) $(LIBS)
-	$(CC) $(EMU_CFLAGS) $(INC) -Iemu $(EMU_SRC) $(LIBS) -o $@
+	$(CC) $(EMU_CFLAGS) $(INC) $(EMU_INC) $(EMU_SRC) $(LIBS) -o $@
 
-$(CODEC_TOOL): emu/codec_host.c $(wildcard include/*.h) $(LIB)
-	$(CC) $(EMU_CFLAGS) $(INC) emu/codec_host.c $(LIB) -o $@
+$(CODEC_TOOL): tests/tools/codec_host.c $(wildcard include/*.h) $(LIB)
+	$(CC) $(EMU_CFLAGS) $(INC) tests/tools/codec_host.c $(LIB) -o $@
 
-# app.c runs on every target: hold it to the library's C89 gate and
+# examples/spin/app.c runs on every target: hold it to the library's C89 gate and
 # the three cross compilers too.
 .PHONY: test-app-c89 test-py vectors demo stats
 test-app-c89:
 	@bash scripts/run-step.sh app-c89 bash -c 'p=0; f=0; t=$$(mktemp -d); \
-	  for cc in gcc clang; do if $$cc $(STRICT) $(INC) -Iemu -c emu/app.c -o /dev/null; \
-	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: $$cc emu/app.c"; fi; done; \
-	  if avr-gcc $(STRICT) -mmcu=atmega328p -Os $(INC) -Iemu -c emu/app.c -o $$t/a.o; \
-	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: avr-gcc emu/app.c"; fi; \
-	  if cc65 -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) -Iemu emu/app.c -o $$t/a.s >/dev/null; \
-	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: cc65 emu/app.c"; fi; \
-	  if sdcc -mz80 --std-c89 --Werror $(INC) -Iemu -c emu/app.c -o $$t/a.rel >/dev/null; \
-	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: sdcc emu/app.c"; fi; \
+	  for cc in gcc clang; do if $$cc $(STRICT) $(INC) $(EMU_INC) -c examples/spin/app.c -o /dev/null; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: $$cc examples/spin/app.c"; fi; done; \
+	  if avr-gcc $(STRICT) -mmcu=atmega328p -Os $(INC) $(EMU_INC) -c examples/spin/app.c -o $$t/a.o; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: avr-gcc examples/spin/app.c"; fi; \
+	  if cc65 -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) $(EMU_INC) examples/spin/app.c -o $$t/a.s >/dev/null; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: cc65 examples/spin/app.c"; fi; \
+	  if sdcc -mz80 --std-c89 --Werror $(INC) $(EMU_INC) -c examples/spin/app.c -o $$t/a.rel >/dev/null; \
+	  then p=$$((p+1)); else f=$$((f+1)); echo "FAIL: sdcc examples/spin/app.c"; fi; \
 	  rm -rf $$t; echo "$$p passed, $$f failed"; [ $$f = 0 ]'
 
 # Python: codec/vector agreement with C, protocol, fault injection,

@@ -5,7 +5,7 @@ visibility method, on each target, streams the same UART bytes as the host.
     identity.py [--frames F] [--build-only] TARGET...     (avr328 avr1284 6502 z80)
 
 For each scene S and method M the target firmware build/x/T/fw/fw-S-M-F.*
-(emu/fw_app.c with a static arena of app_ram() bytes measured on the
+(examples/spin/fw_app.c with a static arena of app_ram() bytes measured on the
 target) runs in its simulator and its stream is compared byte for byte
 with the host build of the same main (build/emu/fw-host S M F), and with
 build/rast8-emu --scene --method --frames when that exists.  A

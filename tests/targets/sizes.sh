@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # sizes.sh TARGET OUT SIZER...  runs each scene's sizer program
-# (emu/fw_sizes.c built with -DFW_SCENE=S) on the target and writes the
+# (tests/targets/fw_sizes.c built with -DFW_SCENE=S) on the target and writes the
 # "scene method bytes" lines to OUT.  A sizer that did not fit the target
 # (a "SKIP: reason" file) gives "S M 0 # reason" for every method.
 set -u

@@ -3,7 +3,7 @@
 # scene S, method M, F frames, FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
 # firmware then reports APP_E_RAM/APP_E_CFG instead of rendering), and
-# the link-time trims of emu/fw_trim.c that apply (-Isrc for r8int.h):
+# the link-time trims of ports/fw_trim.c that apply (-Isrc for r8int.h):
 # the renderer built in with every method but M left out, no Gouraud
 # (the demo is Lambert), no run-time normals (built-in meshes carry
 # theirs), no clipper (the demo camera never sees a face cross the near

@@ -1,6 +1,8 @@
 /* plat.h - the small platform layer the demo firmware runs on.
  * One implementation per target: emu/plat_host.c (host emulator),
- * emu/plat_avr.c, emu/plat_sim65.c, emu/plat_z80.c. */
+ * emu/fw_plat_host.c (host reference firmware), ports/avr/plat_avr.c,
+ * ports/6502/plat_sim65.c, ports/z80/plat_z80.c.  docs/porting.md says
+ * what a new one must do. */
 #ifndef PLAT_H
 #define PLAT_H
 

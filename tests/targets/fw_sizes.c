@@ -36,7 +36,7 @@ int main(void)
     r8_u8 s, m;
     plat_init();
 #ifdef FW_SCENE
-    /* linked with one scene (emu/scene_strip.py): that scene only */
+    /* linked with one scene (ports/scene_strip.py): that scene only */
     for (s = FW_SCENE; s == FW_SCENE; s++)
 #else
     for (s = 0; s < R8_DEMO_COUNT; s++)

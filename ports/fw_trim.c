@@ -1,5 +1,5 @@
 /* fw_trim.c - link-time trimming for the target firmware (included by
- * emu/fw_app.c): library entry points this firmware can never reach are
+ * examples/spin/fw_app.c and tests/targets/fw_sizes.c): library entry points this firmware can never reach are
  * defined here as stubs, so the linker does not pull their modules from
  * the archive.  The 6502 and Z80 images are otherwise over 64 KB.
  *   FW_TRIM_LZ77  the firmware streams with RLE (app_defaults), so the

@@ -4,7 +4,7 @@
 # + the target's plat object + its library archive (build/x/TARGET/):
 #   avr328 / avr1284  avr-gcc, OUT.elf   (flags: $AVR_CFLAGS)
 #   6502              cc65,    OUT.prg   (flags: $C65_CFLAGS)
-#   z80               sdcc,    OUT.ihx   (flags: $Z80_CFLAGS; emu/z80link.py)
+#   z80               sdcc,    OUT.ihx   (flags: $Z80_CFLAGS; ports/z80/z80link.py)
 # When the program does not fit the target (flash, static RAM, address
 # space; or cc65's missing ?: in constant expressions) OUT becomes a
 # one-line text file "SKIP: reason" and the script succeeds: runners and
@@ -35,7 +35,7 @@ case $tgt in
     [ $((data + bss)) -lt $ram ] || { mv "$out" "$out.toobig"; skip "static RAM $((data + bss)) (.data $data + .bss $bss) >= $ram bytes ($mcu)"; }
     ;;
   6502)
-    bash emu/cc65c.sh "$base.o" "$src" $C65_CFLAGS "$@" > "$log" 2>&1 || {
+    bash ports/6502/cc65c.sh "$base.o" "$src" $C65_CFLAGS "$@" > "$log" 2>&1 || {
       grep -q 'Constant integer expression expected' "$log" &&
         skip "cc65 cannot evaluate ?: in a constant expression: $(grep -m1 'Constant integer' "$log")"; fail; }
     # C stack 1 KB instead of 2 (measured peaks are ~300 B): 1 KB more for code
@@ -62,8 +62,8 @@ print("flash=%d ram_static=%d" % (prog, ram))
 PY
     ;;
   z80)
-    bash emu/sdcc.sh $Z80_CFLAGS "$@" -c -o "$base.rel" "$src" > "$log" 2>&1 || fail
-    python3 emu/z80link.py "$out" "$base.rel" "${objs[@]}" $X/obj/plat_z80.rel $X/rast8.lib >> "$log" 2>&1 || {
+    bash ports/z80/sdcc.sh $Z80_CFLAGS "$@" -c -o "$base.rel" "$src" > "$log" 2>&1 || fail
+    python3 ports/z80/z80link.py "$out" "$base.rel" "${objs[@]}" $X/obj/plat_z80.rel $X/rast8.lib >> "$log" 2>&1 || {
       [ $? = 3 ] && skip "$(grep -m1 'does not fit' "$log" | sed 's/^does not fit: //') (64 KB Z80 map)"; fail; }
     grep -o 'code=[0-9]* data=[0-9]*' "$log" | tail -1 | sed 's/code=\([0-9]*\) data=\([0-9]*\)/flash=\1 ram_static=\2/' > "$out.size"
     ;;

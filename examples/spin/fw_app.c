@@ -1,4 +1,4 @@
-/* fw_app.c - the demo firmware's main on every target: emu/app.c's loop
+/* fw_app.c - the demo firmware's main on every target: app.c's loop
  * over a static arena sized for this scene and method on this target.
  *   FW_SCENE, FW_METHOD  R8_DEMO_*, R8_VIS_*               (default 0, 0)
  *   FW_FRAMES            frames to stream                   (default 4)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """z80link.py OUT.ihx OBJ... [LIB...] - links a rast8 Z80 program with sdcc
-for the flat 64 KB map of emu/plat_z80.c: code from 0x0200, statics
+for the flat 64 KB map of ports/z80/plat_z80.c: code from 0x0200, statics
 right after the code, stack down from 0xFFFF.
 
 sdcc puts _DATA at a fixed --data-loc, so this links once to learn where

@@ -2,7 +2,7 @@
  *
  * Memory map (64 KB RAM): crt0 at 0x0000-0x010F, the four I/O bytes
  * below at 0x01FC-0x01FF, code from 0x0200, statics right after the code
- * (emu/z80link.py links twice to place them), stack down from 0xFFFF.
+ * (ports/z80/z80link.py links twice to place them), stack down from 0xFFFF.
  * (The toolchain notes put the simif byte at 0x7FFF, but the library
  * alone is ~50 KB of sdcc code, so nothing fixed can sit mid-memory.)
  *
