@@ -44,14 +44,14 @@ uninstall:
 # ---- Arduino library zip
 # Sketches: every examples/NAME/ with a .ino.  A sketch's folder in the
 # zip gets its .ino files, ARDUINO_FILES_NAME, and scene.c (built-in
-# scene S's table alone, ports/scene_strip.py) when ARDUINO_SCENE_NAME=S.
+# scene S's meshes alone, ports/scene_strip.py) when ARDUINO_SCENE_NAME=S.
 ARDUINO_DIR      := $(BUILD)/arduino
 ARDUINO_ZIP      := $(ARDUINO_DIR)/rast8-$(VERSION).zip
 ARDUINO_SKETCHES := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard examples/*/*.ino)))))
-ARDUINO_FILES_spin := examples/spin/app.c examples/spin/app.h ports/plat.h
+ARDUINO_FILES_spin := examples/spin/app.c examples/spin/app.h ports/plat.h scenes/demo.h
 ARDUINO_SCENE_spin := 0
 ARDUINO_DEPS := library.properties LICENSE README.md $(LIB_SRC) $(wildcard src/*.h) $(PUB_HDR) \
-  ports/scene_strip.py mk/package.mk $(wildcard examples/*/*.ino) \
+  ports/scene_strip.py mk/package.mk $(wildcard examples/*/*.ino) $(wildcard scenes/*.c) \
   $(foreach s,$(ARDUINO_SKETCHES),$(ARDUINO_FILES_$(s)))
 
 arduino: $(ARDUINO_ZIP)
@@ -63,7 +63,7 @@ $(ARDUINO_ZIP): $(ARDUINO_DEPS)
 	@cp $(LIB_SRC) $(wildcard src/*.h) $(PUB_HDR) $(ARDUINO_DIR)/rast8/src/
 	@set -e; $(foreach s,$(ARDUINO_SKETCHES),d=$(ARDUINO_DIR)/rast8/examples/$(s); mkdir -p $$d; \
 	  cp examples/$(s)/*.ino $(ARDUINO_FILES_$(s)) $$d/; \
-	  $(if $(ARDUINO_SCENE_$(s)),python3 ports/scene_strip.py $(ARDUINO_SCENE_$(s)) src/scene_data.c > $$d/scene.c;))
+	  $(if $(ARDUINO_SCENE_$(s)),python3 ports/scene_strip.py $(ARDUINO_SCENE_$(s)) --inline > $$d/scene.c;))
 	@cd $(ARDUINO_DIR) && python3 -m zipfile -c $(notdir $@) rast8
 	@echo "$@: $$(cd $(ARDUINO_DIR) && find rast8 -type f | wc -l) files; sketches: $(ARDUINO_SKETCHES)"
 

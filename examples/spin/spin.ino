@@ -1,14 +1,12 @@
 /* spin - the rast8 demo on an Arduino: a rotating cube, rendered band
  * by band on the board and streamed over Serial in the rast8 display
- * protocol (docs/protocol.md), 64x64 pixels.  Watch it on the PC with
+ * protocol (docs/protocol.md), 128x64 pixels.  Watch it on the PC with
  *     rast8 view /dev/ttyACM0 --baud 115200
  *
  * The loop is app.c, the same code rast8-emu and every simulator
  * firmware run; this sketch is only its platform layer (plat.h) on
- * Serial.  scene.c (written by `make arduino`) is the library's scene
- * table with the cube's meshes alone, as in every rast8 firmware: the
- * full table holds ~8.5 KB of RAM on AVR.  The library is linked as an
- * archive (dot_a_linkage), so scene.c replaces the built-in table.
+ * Serial.  scene.c (written by `make arduino`) is the demo scene list
+ * with the cube's meshes alone (in flash).
  */
 #include <r8render.h>
 extern "C" {
@@ -22,13 +20,11 @@ extern "C" {
 #ifndef SPIN_FRAMES
 #define SPIN_FRAMES 0   /* frames to stream; 0 = forever */
 #endif
-/* 64x64: at 128x64 the arena is 128 bytes larger, and an Uno's 2 KB
- * no longer holds it, Serial's buffers and the stack. */
-#define SPIN_WIDTH 64
+#define SPIN_WIDTH 128
 #ifndef SPIN_RAM
 /* app_ram() of this configuration on AVR (larger on 32-bit boards:
  * raise it there, app_run returns APP_E_RAM when it is too small). */
-#define SPIN_RAM 1012
+#define SPIN_RAM 772
 #endif
 
 static r8_u8 arena[SPIN_RAM];
@@ -53,6 +49,7 @@ void setup()
     app_defaults(&cfg);
     cfg.frames = SPIN_FRAMES;
     cfg.render.width = SPIN_WIDTH;
+    cfg.render.clip = 0;    /* the camera never comes near the cube */
     app_run(&cfg, arena, sizeof arena);   /* returns APP_E_RAM if too small */
 }
 

@@ -49,7 +49,7 @@ CATEGORIES = ["Display", "Communication", "Signal Input/Output", "Sensors",
 # sketch -> (compile-time defines for the run, the same stream from
 # build/rast8-emu: its options, the sketch's arena macro)
 RUNS = {"spin": (["-DSPIN_FRAMES=4"],
-                 ["--scene", "cube", "--method", "cull", "--frames", "4", "--width", "64"],
+                 ["--scene", "cube", "--method", "cull", "--frames", "4", "--width", "128"],
                  "SPIN_RAM")}
 CYCLES = 60000000
 
