@@ -37,6 +37,19 @@ typedef struct r8_mat3 { r8_s16 m[9]; } r8_mat3;
 
 /* Full 32-bit product of two 16-bit values. */
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
+/* The same in line where the compiler gets it right (SDCC 4.2 does not:
+ * there it stays the function). */
+#ifdef __SDCC
+#define R8_MUL16(a, b) r8_mul16((r8_s16)(a), (r8_s16)(b))
+#else
+#define R8_MUL16(a, b) ((r8_s32)(r8_s16)(a) * (r8_s32)(r8_s16)(b))
+#endif
+/* floor(v / 2^n) for a constant n, portably and fast: the shift is done
+ * on v + 2^31 as unsigned (a byte move for n >= 8), then the bias comes
+ * off.  v + 2^31 must not pass 2^32: any r8_s32 v. */
+#define R8_ASR32C(v, n) ((r8_s32)((r8_u32)((r8_u32)(v) + 0x80000000UL) >> (n)) - (r8_s32)(0x80000000UL >> (n)))
+/* floor(v / 16) for |v| < 32768 - 16: the row or column of a 12.4 value. */
+#define R8_FLOOR16(v) ((r8_s16)(((r8_u16)((v) + 32768u)) >> 4) - 2048)
 /* (a * b) >> frac, rounded to nearest (ties away from zero), saturated
  * to r8_s16.  r8_mulq(a, b, 8) is the Q8.8 multiply, 14 the Q1.14 one. */
 r8_s16 r8_mulq(r8_s16 a, r8_s16 b, r8_u8 frac);

@@ -66,16 +66,17 @@ typedef struct r8_edge {
     r8_u8 vi;     /* polygon position of the edge's lower vertex */
 } r8_edge;
 
+/* Vertices of a scanned polygon at most: a face (4) and what clipping
+ * to five planes adds. */
+#define R8_SCAN_MAXV 9
+
 /* Resumable scan conversion of one convex polygon, top to bottom, edges
  * only (no attributes): a polygon can be scanned band by band without
- * re-walking its edges.  Vertex k of the polygon is v[idx[k] << vsh]
- * (x, 12.4) and the r8_s16 after it (y); with vsh = 2, depth and shade
- * follow at +2 and +3 (an r8_svert array). */
+ * re-walking its edges.  Vertex k of the polygon is vp[k]: x, y in 12.4,
+ * then (for r8_scan with attributes) depth and shade: an r8_svert. */
 typedef struct r8_scanx {
-    const r8_s16 *v;
-    const r8_u16 *idx;  /* polygon: clockwise on screen for a front face */
+    const r8_s16 *vp[R8_SCAN_MAXV]; /* clockwise on screen for a front face */
     r8_u8 n;
-    r8_u8 vsh;          /* log2 of r8_s16 per vertex: 1 or 2 */
     r8_u8 backface;     /* set when Judd's test found left right of right */
     r8_u8 front;        /* set when Judd's test found a front face */
     r8_s16 y;           /* next row */
@@ -97,9 +98,9 @@ typedef struct r8_span {
     r8_s16 dl, dr, sl, sr;
 } r8_span;
 
-/* Start scanning a polygon of n (3..255) vertices of v at row ystart
- * (rows above it are skipped).  Returns the number of rows left to
- * scan (0: nothing to draw). */
+/* Start scanning a polygon of n (3..R8_SCAN_MAXV) vertices v[idx[k]] at
+ * row ystart (rows above it are skipped).  Returns the number of rows
+ * left to scan (0: nothing to draw, or n out of range). */
 r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
                      r8_u8 n, r8_u8 attrs, r8_s16 ystart);
 /* Next non-empty span on a row < ylimit; returns 0 when none is left
@@ -109,9 +110,11 @@ r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
  * faces draw nothing, front faces exactly what judd == 0 draws. */
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out);
 
-/* Edges only, over vertices of 2 << vsh bytes (x, y first). */
-r8_s16 r8_scanx_begin(r8_scanx *s, const r8_s16 *v, r8_u8 vsh,
-                      const r8_u16 *idx, r8_u8 n, r8_s16 ystart);
+/* Edges only: the caller has set s->vp[0..n). */
+r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart);
+/* After r8_scanx_begin(&s->c, ...) returned rows: set up the attributes
+ * s->attrs asks for along both edges. */
+void r8_scan_attrs(r8_scan *s);
 /* Scan rows < ylimit and fill every span with dither level `level` (no
  * depth test): the same pixels as r8_scan_next + r8_fb_span_dither, in
  * one loop (the fast path for cull-only and painter's with flat or

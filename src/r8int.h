@@ -52,25 +52,25 @@ typedef struct r8_cpoly {
     r8_u8 level;
 } r8_cpoly;
 
-/* A face being scanned: its vertex list and level, then the scan state
- * (edges only on the fast path, edges and attributes otherwise). */
+/* A face being scanned: its level, then the scan state (edges only on
+ * the fast path, edges and attributes otherwise; the scan state starts
+ * with the polygon's vertex pointers). */
 typedef struct r8_actx {
-    r8_u16 idx[R8_MAX_CLIP_POLY];
     r8_u8 level;
     r8_u8 used;         /* a pool entry in use */
     r8_scanx c;
 } r8_actx;
 typedef struct r8_act {
-    r8_u16 idx[R8_MAX_CLIP_POLY];
     r8_u8 level;
     r8_u8 used;
     r8_scan s;
 } r8_act;
-/* the fields both entry kinds share, at the same place */
+/* the fields both entry kinds share, at the same place (r8_scan starts
+ * with its r8_scanx) */
 typedef struct r8_acthead {
-    r8_u16 idx[R8_MAX_CLIP_POLY];
     r8_u8 level;
     r8_u8 used;
+    r8_scanx c;
 } r8_acthead;
 
 /* S-buffer span node */

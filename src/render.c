@@ -486,23 +486,31 @@ static r8_u16 band_of(const r8_state *st, r8_s16 y, r8_s16 band)
     return (r8_u16)((r8_u16)y / (r8_u16)band);
 }
 
-/* Rows [*top, *bot) and columns of the polygon over vertex list idx;
- * 0 if no pixel centre of the frame can be inside. */
-static int face_rows(const r8_state *st, const r8_u16 *idx, r8_u8 n, r8_s16 *top, r8_s16 *bot)
+/* Rows [*top, *bot) and columns of the polygon vp[0..n); 0 if no pixel
+ * centre of the frame can be inside. */
+static int face_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n, r8_s16 *top, r8_s16 *bot)
 {
-    r8_s16 ymin = 32767, ymax = -32767 - 1, xmin = 32767, xmax = -32767 - 1;
+    r8_s16 ymin = vp[0][1], ymax = ymin, xmin = vp[0][0], xmax = xmin;
     r8_u8 i;
-    for (i = 0; i < n; i++) {
-        const r8_s16 *v = st->sv + ((unsigned)idx[i] << st->vsh);
+    for (i = 1; i < n; i++) {
+        const r8_s16 *v = vp[i];
         if (v[0] < xmin) xmin = v[0];
         if (v[0] > xmax) xmax = v[0];
         if (v[1] < ymin) ymin = v[1];
         if (v[1] > ymax) ymax = v[1];
     }
-    *top = r8_row_of(ymin);
-    *bot = r8_row_of(ymax);
+    *top = R8_FLOOR16(ymin + 7);
+    *bot = R8_FLOOR16(ymax + 7);
     return *top < *bot && *bot > 0 && *top < st->height &&
-           r8_row_of(xmax) > 0 && r8_row_of(xmin) < st->width;
+           R8_FLOOR16(xmax + 7) > 0 && R8_FLOOR16(xmin + 7) < st->width;
+}
+
+/* Vertex pointers of the polygon over screen vertex list idx. */
+static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16 **vp)
+{
+    r8_u8 i;
+    for (i = 0; i < n; i++)
+        vp[i] = st->sv + ((unsigned)idx[i] << st->vsh);
 }
 
 /* ceil(65536 / n), n = 3..9: the mean of n depth keys by a product */
@@ -550,6 +558,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
             r8_u16 gi[R8_MAX_FACE_VERTS];
             const r8_u16 *list = gi;
+            const r8_s16 *vp[R8_SCAN_MAXV];
             r8_s16 top, bot;
             r8_fid id;
             r8_u16 key;
@@ -583,7 +592,8 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             } else {
                 id = (r8_fid)(o->fbase + f);
             }
-            if (!face_rows(st, list, n, &top, &bot))
+            face_vp(st, list, n, vp);
+            if (!face_rows(st, vp, n, &top, &bot))
                 continue;
             if (clip)
                 st->nclipped++;
@@ -620,15 +630,15 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 
 /* ---- per band ---- */
 
-/* The vertex list and level of face id g into idx / *level; returns n. */
-static r8_u8 face_setup(const r8_state *st, r8_fid g, r8_u16 *idx, r8_u8 *level)
+/* The vertex pointers and level of face id g into vp / *level;
+ * returns n. */
+static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *level)
 {
     const r8_scene *sc = st->scene;
     r8_u8 i = 0, n, j;
     if (g >= st->nfaces) {
         const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
-        for (j = 0; j < cp->n; j++)
-            idx[j] = cp->idx[j];
+        face_vp(st, cp->idx, cp->n, vp);
         *level = cp->level;
         return cp->n;
     }
@@ -639,9 +649,10 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, r8_u16 *idx, r8_u8 *level)
         const r8_object *ob = &sc->objects[i];
         r8_u16 f = (r8_u16)(g - o->fbase);
         const r8_face *fc = &ob->mesh->faces[f];
+        const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
         n = R8_RDU8(&fc->n);
         for (j = 0; j < n; j++)
-            idx[j] = (r8_u16)(o->vbase + R8_RDU8(&fc->v[j]));
+            vp[j] = base + ((unsigned)R8_RDU8(&fc->v[j]) << st->vsh);
         *level = r8_face_level(st, o, ob, f);
     }
     return n;
@@ -683,69 +694,62 @@ static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_s
  * (or a back face), 0 when it goes on below y1, 2 when it starts below. */
 static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 {
-    r8_u8 *e;
+    r8_acthead *e;
     r8_u8 k = st->slot ? st->slot[g] : R8_NO_SLOT;
     r8_scanx *c;
     int done;
     if (k != R8_NO_SLOT) {
-        e = ENTRY(st, k);
+        e = (r8_acthead *)(void *)ENTRY(st, k);
     } else {
-        r8_u16 *idx = (r8_u16 *)(void *)st->tmp;   /* entries start with idx[] */
-        r8_u8 n, level;
+        const r8_s16 **vp = ((r8_acthead *)(void *)st->tmp)->c.vp;
+        r8_u8 n, level, j;
         r8_s16 top, bot;
-        n = face_setup(st, g, idx, &level);
-        face_rows(st, idx, n, &top, &bot);
+        n = face_setup(st, g, vp, &level);
+        face_rows(st, vp, n, &top, &bot);
         if (top >= y1)
             return 2;
         if (bot <= y0)
             return 1;
-        e = st->tmp;
+        e = (r8_acthead *)(void *)st->tmp;
         if (bot > y1 && st->pool_used < st->npool) {
             /* it goes on below this band: keep its state */
-            r8_u8 j;
             for (k = 0; k < st->npool; k++)
                 if (!((r8_acthead *)(void *)ENTRY(st, k))->used)
                     break;
-            e = ENTRY(st, k);
+            e = (r8_acthead *)(void *)ENTRY(st, k);
             for (j = 0; j < n; j++)
-                ((r8_u16 *)(void *)e)[j] = idx[j];
+                e->c.vp[j] = vp[j];
             st->slot[g] = k;
             st->pool_used++;
         }
+        e->level = level;
+        e->used = 1;
 #ifndef R8_FAST_ONLY
         if (!st->fast) {
             r8_act *a = (r8_act *)(void *)e;
-            a->level = level;
-            if (!r8_scan_begin(&a->s, (const r8_svert *)(const void *)st->sv, a->idx, n,
-                               st->attrs, y0))
+            a->s.attrs = st->attrs;
+            if (!r8_scanx_begin(&a->s.c, n, y0))
                 a->s.c.ybot = a->s.c.y;
+            else
+                r8_scan_attrs(&a->s);
         } else
 #endif
-        {
-            r8_actx *a = (r8_actx *)(void *)e;
-            a->level = level;
-            if (!r8_scanx_begin(&a->c, st->sv, st->vsh, a->idx, n, y0))
-                a->c.ybot = a->c.y;
-        }
-        ((r8_acthead *)(void *)e)->used = 1;
+        if (!r8_scanx_begin(&e->c, n, y0))
+            e->c.ybot = e->c.y;
     }
+    c = &e->c;
 #ifndef R8_FAST_ONLY
     if (!st->fast) {
         r8_act *a = (r8_act *)(void *)e;
         r8_span sp;
-        c = &a->s.c;
         while (r8_scan_next(&a->s, y1, st->judd, &sp))
-            draw_span(st, fb, a->level, g, &sp);
+            draw_span(st, fb, e->level, g, &sp);
     } else
 #endif
-    {
-        r8_actx *a = (r8_actx *)(void *)e;
-        c = &a->c;
-        r8_scanx_fill(c, y1, st->judd, fb, a->level);
-    }
+        r8_scanx_fill(c, y1, st->judd, fb, e->level);
     done = c->y >= c->ybot || c->backface;
     if (done || k == R8_NO_SLOT) {
-        ((r8_acthead *)(void *)e)->used = 0;
+        e->used = 0;
         if (k != R8_NO_SLOT) {
             st->slot[g] = R8_NO_SLOT;
             st->pool_used--;

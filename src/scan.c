@@ -23,6 +23,7 @@
 #include "r8raster.h"
 #include "r8fixed.h"
 #include "r8flash.h"
+#include "r8kern.h"
 
 R8_CASSERT(svert_is_4_s16, sizeof(r8_svert) == 4 * sizeof(r8_s16));
 
@@ -32,9 +33,39 @@ r8_s16 r8_row_of(r8_s16 y)
     return (r8_s16)(v >= 0 ? v >> 4 : -((-v + 15) >> 4));
 }
 
-#define VOFF(s, i) ((unsigned)(s)->idx[i] << (s)->vsh)
-#define VX(s, i) ((s)->v[VOFF(s, i)])
-#define VY(s, i) ((s)->v[VOFF(s, i) + 1u])
+/* r8_row_of in line */
+#define ROW_OF(y) ((y) > 32760 ? 2048 : R8_FLOOR16((y) + 7))
+
+/* n / d and n % d for d > 0, by shift and subtract from the quotient's
+ * top bit: a few steps for the small quotients of edge slopes (a library
+ * 16-bit division always takes 16). */
+static r8_u16 udivmod(r8_u16 n, r8_u16 d, r8_u16 *rem)
+{
+    r8_u16 q = 0, bit = 1;
+    if (n < d) {
+        *rem = n;
+        return 0;
+    }
+    while (d <= (n >> 1)) {
+        d <<= 1;
+        bit <<= 1;
+    }
+    for (;;) {
+        if (n >= d) {
+            n = (r8_u16)(n - d);
+            q |= bit;
+        }
+        if (bit == 1)
+            break;
+        d >>= 1;
+        bit >>= 1;
+    }
+    *rem = n;
+    return q;
+}
+
+#define VX(s, i) ((s)->vp[i][0])
+#define VY(s, i) ((s)->vp[i][1])
 
 static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
 {
@@ -48,7 +79,7 @@ static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
  * direct callers reach them: the renderer's guard band keeps edges under
  * 1800) coordinates are halved: a column can then be off by one where
  * the edge passes within 1/8 pixel of a centre (tests/host/test_stability.c). */
-static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
+static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
 {
     r8_s32 dx = (r8_s32)bx - ax, dy = (r8_s32)by - ay, p;
     r8_s16 y0 = r8_row_of(ay);
@@ -113,6 +144,44 @@ static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by
     return y0;
 }
 
+/* The same in 16-bit arithmetic for the edges the renderer makes: under
+ * 89 pixels tall, slopes under 2048 columns per row, x inside +-1024 px. */
+static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
+{
+    r8_u16 dy = (r8_u16)((r8_u16)by - (r8_u16)ay), udx, rd, u, d16;
+    r8_s16 y0, q, p, dx;
+    r8_u8 s0, pl, neg;
+    if (dy >= 1424u || ax < -16384 || ax > 16383 || bx < -16384 || bx > 16383)
+        return edge_dda_wide(it, ax, ay, bx, by);
+    y0 = ROW_OF(ay);
+    s0 = (r8_u8)((r8_u16)((r8_u16)y0 * 16u + 8u - (r8_u16)ay));   /* 0..15 */
+    dx = (r8_s16)(bx - ax);
+    neg = (r8_u8)(dx < 0);
+    udx = neg ? (r8_u16)(-(dx + 1)) : (r8_u16)dx;     /* -dx - 1 >= 0 */
+    q = (r8_s16)udivmod(udx, dy, &rd);
+    if (neg) {
+        q = (r8_s16)(-q - 1);                          /* floor */
+        rd = (r8_u16)(dy - 1u - rd);
+    }
+    if (q >= 2048 || q <= -2048)
+        return edge_dda_wide(it, ax, ay, bx, by);
+    it->q = q;
+    it->r = rd;
+    it->den = dy;
+    /* as edge_dda_wide: ax - 8 = 16 axh + axl, P = axl + s0 q = 16 Ph + Pl */
+    p = (r8_s16)(((r8_u16)(ax - 8) & 15u) + (r8_s16)s0 * q);
+    pl = (r8_u8)((r8_u16)p & 15u);
+    it->val = (r8_s16)(R8_FLOOR16(ax - 8) + R8_FLOOR16(p));
+    d16 = (r8_u16)(dy << 4);
+    u = (r8_u16)(dy * pl + (r8_u16)s0 * rd + d16 - 1u);     /* < 46 dy < 2^16 */
+    while (u >= d16) {
+        u = (r8_u16)(u - d16);
+        it->val++;
+    }
+    it->err = (r8_u16)(u >> 4);
+    return y0;
+}
+
 /* Set up edge e on the chain going in direction dir from polygon
  * position `from`, for row y: skips edges that end at or above row y,
  * and steps a started edge down to row y. */
@@ -120,44 +189,42 @@ static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
 {
     r8_u8 to = wrap(s, from, dir);
     r8_u8 guard = s->n;
-    r8_s16 ya, yb, y0;
-    yb = r8_row_of(VY(s, to));
+    const r8_s16 *a, *b;
+    r8_s16 yb, y0;
+    yb = ROW_OF(VY(s, to));
     while (yb <= y && guard--) {
         from = to;
         to = wrap(s, from, dir);
-        yb = r8_row_of(VY(s, to));
+        yb = ROW_OF(VY(s, to));
     }
+    a = s->vp[from];
+    b = s->vp[to];
     e->vi = to;
     e->yend = yb;
-    ya = VY(s, from);
-    if (VY(s, to) <= ya) {
+    if (b[1] <= a[1]) {
         /* only for non-convex input: an empty edge at b */
-        e->x.val = r8_row_of(VX(s, to));
+        e->x.val = r8_row_of(b[0]);
         e->x.q = 0;
         e->x.r = e->x.err = 0;
         e->x.den = 1;
         return;
     }
-    y0 = edge_dda(&e->x, VX(s, from), ya, VX(s, to), VY(s, to));
+    y0 = edge_dda(&e->x, a[0], a[1], b[0], b[1]);
     while (y0 < y) {
         R8_INTERP_STEP(&e->x);
         y0++;
     }
 }
 
-r8_s16 r8_scanx_begin(r8_scanx *s, const r8_s16 *v, r8_u8 vsh,
-                      const r8_u16 *idx, r8_u8 n, r8_s16 ystart)
+r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart)
 {
     r8_u8 i, top = 0;
     r8_s16 ymin, ymax, y;
-    s->v = v;
-    s->idx = idx;
     s->n = n;
-    s->vsh = vsh;
     s->backface = 0;
     s->front = 0;
     s->y = s->ybot = 0;
-    if (n < 3)
+    if (n < 3 || n > R8_SCAN_MAXV)
         return 0;
     ymin = ymax = VY(s, 0);
     for (i = 1; i < n; i++) {
@@ -169,8 +236,8 @@ r8_s16 r8_scanx_begin(r8_scanx *s, const r8_s16 *v, r8_u8 vsh,
         if (vy > ymax)
             ymax = vy;
     }
-    s->ybot = r8_row_of(ymax);
-    y = r8_row_of(ymin);
+    s->ybot = ROW_OF(ymax);
+    y = ROW_OF(ymin);
     if (y < ystart)
         y = ystart;
     s->y = y;
@@ -210,8 +277,8 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
 {
     const r8_scanx *c = &s->c;
     r8_u8 to = e->vi, from = wrap(c, to, -dir);
-    const r8_s16 *a = c->v + VOFF(c, from);
-    const r8_s16 *b = c->v + VOFF(c, to);
+    const r8_s16 *a = c->vp[from];
+    const r8_s16 *b = c->vp[to];
     r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
     r8_u8 sh1 = 0;
     if (dy <= 0)
@@ -231,15 +298,25 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     }
 }
 
-r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
-                     r8_u8 n, r8_u8 attrs, r8_s16 ystart)
+void r8_scan_attrs(r8_scan *s)
 {
-    r8_s16 rows = r8_scanx_begin(&s->c, (const r8_s16 *)(const void *)v, 2, idx, n, ystart);
-    s->attrs = attrs;
-    if (rows && attrs) {
+    if (s->attrs) {
         attr_start(s, &s->c.l, -1, s->c.y, &s->ld, &s->ls);
         attr_start(s, &s->c.r, 1, s->c.y, &s->rd, &s->rs);
     }
+}
+
+r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
+                     r8_u8 n, r8_u8 attrs, r8_s16 ystart)
+{
+    r8_s16 rows;
+    r8_u8 i;
+    for (i = 0; i < n && i < R8_SCAN_MAXV; i++)
+        s->c.vp[i] = &v[idx[i]].x;
+    rows = r8_scanx_begin(&s->c, n, ystart);
+    s->attrs = attrs;
+    if (rows)
+        r8_scan_attrs(s);
     return rows;
 }
 
@@ -298,7 +375,9 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 {
     r8_edge *l = &s->l, *r = &s->r;
     r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
-    r8_s16 w = fb->width, y = s->y;
+    r8_s16 w = fb->width, y = s->y, by;
+    r8_trapfill t;
+    r8_u8 k;
     if (fb->format != R8_FMT_PAGE1) {
         /* other layouts: one span at a time */
         for (; y < lim; y++) {
@@ -317,26 +396,39 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
     }
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);    /* never below the band */
-    for (; y < lim; y++) {
-        r8_s16 xl, xr;
+    for (; y < fb->y0 && y < lim; y++) {      /* never above it either */
+        if (!row_begin(s, y, judd))
+            return;
+        R8_INTERP_STEP(&l->x);
+        R8_INTERP_STEP(&r->x);
+    }
+    if (y >= lim) {
+        s->y = y;
+        return;
+    }
+    /* this row's page and bit, and the level's 4 dither rows in the
+     * order the rows come; then trapezoids: runs of rows on which
+     * neither edge ends, filled by the kernel (r8kern.h) */
+    by = (r8_s16)(y - fb->y0);
+    t.page = fb->buf + (unsigned)(by >> 3) * (unsigned)w;
+    t.m = (r8_u8)(1u << (by & 7));
+    t.k = 0;
+    t.w = w;
+    for (k = 0; k < 4; k++)
+        t.pat[k] = r8_fb_dither_row(level, (r8_s16)(y + k));
+    while (y < lim) {
+        r8_s16 stop = lim;
         if (y >= l->yend || y >= r->yend || (judd && !s->front))
             if (!row_begin(s, y, judd))
                 return;
-        xl = l->x.val;
-        xr = r->x.val;
-        R8_INTERP_STEP(&l->x);
-        R8_INTERP_STEP(&r->x);
-        if (xl < 0)
-            xl = 0;
-        if (xr > w)
-            xr = w;
-        if (xl < xr && y >= fb->y0) {
-            /* SSD1306 page: one byte per column, bit (row & 7) */
-            r8_s16 by = (r8_s16)(y - fb->y0);
-            r8_fb_page_run(fb->buf + (unsigned)(by >> 3) * (unsigned)w + (unsigned)xl,
-                           (unsigned)(xr - xl), (r8_u8)(1u << (by & 7)),
-                           r8_fb_dither_row(level, y), (r8_u8)(xl & 3));
-        }
+        if (l->yend < stop)
+            stop = l->yend;
+        if (r->yend < stop)
+            stop = r->yend;
+        if (judd && !s->front)
+            stop = (r8_s16)(y + 1);       /* undecided: one row at a time */
+        r8k_trap(&t, &l->x, &r->x, (r8_u16)(stop - y));
+        y = stop;
     }
     s->y = y;
 }

@@ -7,6 +7,7 @@
  * the guard band are marked (R8_VX_CLIP) and their faces go through the
  * clipper. */
 #include "r8int.h"
+#include "r8kern.h"
 
 /* a * b for a Q1.14 entry and a world-unit difference (|b| < 2^17):
  * |sum of three| < 2^31 for a rotation row. */
@@ -165,16 +166,9 @@ void r8_tf_vertices(r8_state *st)
         if (o->hidden)
             continue;
         for (k = 0; k < me->nverts; k++) {
-            r8_vec3 v;
             r8_vec3l c;
-            v.x = R8_RDS16(mv);
-            v.y = R8_RDS16(mv + 1);
-            v.z = R8_RDS16(mv + 2);
+            r8k_xform(&o->m, &o->t, mv, &c);
             mv += 3;
-            r8_mat_apply16(&o->m, &v, &c);
-            c.x += o->t.x;
-            c.y += o->t.y;
-            c.z += o->t.z;
             r8_tf_camera(&c, st, g);
             if (st->attrs & R8_ATTR_S) {
                 r8_vec3 n;

@@ -115,37 +115,41 @@ static r8_s16 rnd(r8_s16 n)
 
 static void test_fan_no_gaps_no_overlaps(void)
 {
-    /* A convex 12-gon (clockwise on screen) with a centre vertex, as a fan
-     * of 12 triangles, at subpixel positions; every pixel of the 12-gon
-     * is covered exactly once by the fan. */
-    static const r8_s16 ox[12] = {0, 14, 24, 28, 24, 14, 0, -14, -24, -28, -24, -14};
-    static const r8_s16 oy[12] = {-15, -13, -8, 0, 8, 13, 15, 13, 8, 0, -8, -13};
-    static r8_svert v[13];
-    static r8_u16 outer[12], tri[3];
+    /* A convex 9-gon (clockwise on screen; R8_SCAN_MAXV vertices, the
+     * most a polygon may have) with a centre vertex, as a fan of 9
+     * triangles, at subpixel positions; every pixel of the 9-gon is
+     * covered exactly once by the fan. */
+    static const r8_s16 ox[9] = {0, 18, 28, 24, 10, -10, -24, -28, -18};
+    static const r8_s16 oy[9] = {-15, -11, -3, 8, 14, 14, 8, -3, -11};
+    static r8_svert v[10];
+    static r8_u16 outer[10], tri[3];
     r8_s16 trial, i;
     for (trial = 0; trial < N_TRIALS; trial++) {
         long fan = 0, whole;
-        for (i = 0; i < 12; i++) {
+        for (i = 0; i < 9; i++) {
             v[i].x = (r8_s16)((32 + ox[i]) * 16 + rnd(16) - 8);
             v[i].y = (r8_s16)((16 + oy[i]) * 16 + rnd(16) - 8);
             outer[i] = (r8_u16)i;
         }
-        v[12].x = (r8_s16)(32 * 16 + rnd(64) - 32);
-        v[12].y = (r8_s16)(16 * 16 + rnd(64) - 32);
+        v[9].x = (r8_s16)(32 * 16 + rnd(64) - 32);
+        v[9].y = (r8_s16)(16 * 16 + rnd(64) - 32);
+        outer[9] = 9;
         clear_cover();
-        for (i = 0; i < 12; i++) {
-            tri[0] = 12;
+        for (i = 0; i < 9; i++) {
+            tri[0] = 9;
             tri[1] = (r8_u16)i;
-            tri[2] = (r8_u16)((i + 1) % 12);
+            tri[2] = (r8_u16)((i + 1) % 9);
             fan += cover_poly(v, tri, 3);
         }
         for (i = 0; i < 64 * 32; i++)
             TEST_ASSERT_TRUE(cover[i] <= 1);
-        /* the union is exactly the 12-gon */
-        whole = cover_poly(v, outer, 12);
+        /* the union is exactly the 9-gon; a 10th vertex is refused */
+        TEST_ASSERT_EQUAL_INT(0, cover_poly(v, outer, 10) != 0);
+        whole = cover_poly(v, outer, 9);
         TEST_ASSERT_EQUAL_INT(fan, whole);
         for (i = 0; i < 64 * 32; i++)
             TEST_ASSERT_TRUE(cover[i] == 0 || cover[i] == 2);
+        TEST_ASSERT_TRUE(fan > 800);   /* the 9-gon is about 1300 px */
     }
 }
 

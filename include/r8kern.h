@@ -1,0 +1,43 @@
+/* r8kern.h - the hot inner loops, as kernels a port may replace with
+ * assembly (ports/<cpu>/).  Each has a C89 reference in src/kern.c; a
+ * build that links a port's version defines the kernel's R8_ASM_*
+ * macro, and the port's simulator test shows the two equal on random
+ * inputs (DEVELOPERS.md: assembly is the exception).
+ *
+ *   r8k_trap    fill the rows of a trapezoid between two column DDAs
+ *               into an SSD1306 page band (R8_ASM_TRAP)
+ *   r8k_xform   a model vertex (flash) into camera space (R8_ASM_XFORM)
+ */
+#ifndef R8KERN_H
+#define R8KERN_H
+
+#include "r8types.h"
+#include "r8raster.h"
+#include "r8fixed.h"
+
+/* Where a trapezoid fill writes: the current row's page in the band
+ * (its column 0), the row's bit in the page byte, the row's dither
+ * phase k (the pattern is pat[k], k = row & 3 as the caller counts),
+ * and the frame width (spans are clamped to [0, w); the page stride). */
+typedef struct r8_trapfill {
+    r8_u8 *page;
+    r8_u8 m;
+    r8_u8 k;
+    r8_u8 pat[4];
+    r8_s16 w;
+} r8_trapfill;
+
+/* Fill `rows` rows: on each, columns [l->val, r->val) clamped to
+ * [0, w), pattern pat[k] under bit m (0xFF sets, 0 clears, others mix
+ * per column: bit 7 - (x & 3) of the pattern, repeated every 4
+ * columns); then both DDAs step (R8_INTERP_STEP), m moves to the next
+ * row (and page), k to the next phase.  The state in t, l and r is left
+ * for the next row. */
+void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
+
+/* out = m * v + t in camera units: each row's three Q1.14 x s16 products
+ * summed exactly (32 bits), plus 512, shifted right 10 with floor, plus
+ * t.  v points at three r8_s16 in R8_FLASH (a mesh vertex). */
+void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
+
+#endif
