@@ -219,20 +219,17 @@ def cobs_encode(data):
 
 def cobs_decode(data):
     data = bytes(data)
-    out = bytearray()
+    if b"\x00" in data:
+        raise CodecError("cobs: zero byte inside a packet")
+    out = []
     i, n = 0, len(data)
     while i < n:
         code = data[i]
-        i += 1
-        if code == 0:
-            raise CodecError("cobs: zero code byte")
-        if n - i < code - 1:
+        j = i + code
+        if j > n:
             raise CodecError("cobs: block truncated")
-        block = data[i:i + code - 1]
-        if 0 in block:
-            raise CodecError("cobs: zero inside a block")
-        out.extend(block)
-        i += code - 1
-        if code != 0xFF and i < n:
-            out.append(0)
-    return bytes(out)
+        out.append(data[i + 1:j])
+        if code != 0xFF and j < n:
+            out.append(b"\x00")
+        i = j
+    return b"".join(out)
