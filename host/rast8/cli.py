@@ -116,10 +116,13 @@ class Capture:
 
 def _open(args):
     try:
-        return open_source(args.source, baud=args.baud, idle=args.idle)
+        src = open_source(args.source, baud=args.baud, idle=args.idle)
     except Exception as e:      # noqa: BLE001 - report any open failure
         print("rast8: %s" % e, file=sys.stderr)
         sys.exit(getattr(e, "exit_code", 2))
+    for w in getattr(src, "warnings", ()):     # e.g. several USB boards match
+        print("rast8: warning: %s" % w, file=sys.stderr)
+    return src
 
 
 def _fmt(v, suffix=""):
