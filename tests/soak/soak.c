@@ -303,7 +303,17 @@ int main(int argc, char **argv)
                 continue;
             fi = frame_idx[d.frame];
             if (fi < 0 || memcmp(fb, ref[fi], fbytes)) {
+                /* keep the evidence: the damaged stream of this pass */
+                char name[64];
+                FILE *w;
                 wrong++;
+                sprintf(name, "build/soak/wrong-%llu.bin", wrong);
+                if ((w = fopen(name, "wb")) != 0) {
+                    fwrite(out, 1, (size_t)olen, w);
+                    fclose(w);
+                }
+                fprintf(stderr, "r8soak: WRONG frame %u accepted at byte %ld of pass %llu "
+                        "(stream kept in %s)\n", (unsigned)d.frame, k, passes, name);
                 continue;
             }
             checked++;
