@@ -46,6 +46,16 @@ static void usage(FILE *f)
 "  --linger S        pty/tcp: after the last frame wait up to S seconds for the\n"
 "                    reader to close (default 30) so no byte is lost\n"
 "\n"
+"input (display -> device: REQUEST and INPUT packets, docs/protocol.md):\n"
+"                    with --pty/--tcp the reader's bytes are read after every\n"
+"                    frame and fed to the firmware (app_rx)\n"
+"  --rx FILE|-       also read display bytes from FILE or stdin (- ), the same way\n"
+"  --keys FILE       key script: line N is the key mask (hex 0x.. or decimal,\n"
+"                    R8_KEY_* bits; '#' comments) sent as an INPUT packet after\n"
+"                    frame N, so the firmware sees it from frame N+1 on\n"
+"  --key-log FILE    write 'FRAME KEYS' (hex) per frame: the key state the\n"
+"                    firmware had while rendering that frame\n"
+"\n"
 "firmware config:\n"
 "  --scene NAME      scene (default cube):",
             prog, R8_WIRE_VERSION);
@@ -57,6 +67,7 @@ static void usage(FILE *f)
     fprintf(f, "\n"
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
+"  --shading S       flat, lambert, gouraud (default: the renderer's)\n"
 "  --band H          band height in rows (default 8; multiple of 8 for page1)\n"
 "  --frames N        frames to send (default 64; 0 = forever)\n"
 "  --first N         number of the first frame (default 0)\n"
@@ -102,6 +113,10 @@ static long num(const char *opt, const char *s, long lo, long hi)
 /* ---- host hooks: dump whole frames, poll the display's requests */
 struct host {
     FILE *dump;
+    FILE *keys;          /* key script, or 0 */
+    FILE *key_log;       /* per-frame key state, or 0 */
+    int rx2_fd;          /* --rx FILE|-, or -1 */
+    int bad_keys;        /* the key script had a bad line */
     unsigned char *frame;
     unsigned frame_bytes;
     int rx_fd;
@@ -131,6 +146,25 @@ static void put16(FILE *f, unsigned v)
     fputc((int)v & 0xFF, f);
 }
 
+/* Feed what the display sent (REQUEST, INPUT packets) to the firmware. */
+static void feed_rx(int fd)
+{
+    unsigned char buf[256];
+    struct pollfd p;
+    ssize_t n, k;
+    if (fd < 0)
+        return;
+    p.fd = fd;
+    p.events = POLLIN;
+    while (poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
+        n = read(fd, buf, sizeof buf);
+        if (n <= 0)
+            break;
+        for (k = 0; k < n; k++)
+            app_rx(buf[k]);
+    }
+}
+
 static int on_frame(void *ctx, r8_u16 no)
 {
     struct host *h = ctx;
@@ -144,19 +178,31 @@ static int on_frame(void *ctx, r8_u16 no)
         fwrite(h->frame, 1, h->frame_bytes, h->dump);
         fflush(h->dump);
     }
-    if (h->rx_fd >= 0) {
-        unsigned char buf[64];
-        struct pollfd p;
-        ssize_t n, k;
-        p.fd = h->rx_fd;
-        p.events = POLLIN;
-        while (poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
-            n = read(h->rx_fd, buf, sizeof buf);
-            if (n <= 0)
-                break;
+    if (h->key_log)
+        fprintf(h->key_log, "%u %04x\n", (unsigned)no, (unsigned)app_keys());
+    feed_rx(h->rx_fd);
+    feed_rx(h->rx2_fd);
+    if (h->keys) {
+        /* the script's next line: an INPUT packet, as a display sends it */
+        char line[128];
+        while (fgets(line, sizeof line, h->keys)) {
+            char *end, *s = line + strspn(line, " \t");
+            unsigned long v;
+            unsigned char pk[R8_DEC_INPUT_BYTES];
+            unsigned n, k;
+            if (*s == '#' || *s == '\n' || !*s)
+                continue;
+            v = strtoul(s, &end, 0);
+            if (end == s || v > 0xFFFFu) {
+                fprintf(stderr, "%s: --keys: bad key mask '%.*s' (0..0xffff)\n", prog,
+                        (int)strcspn(s, "\n"), s);
+                h->bad_keys = 1;
+                return 1;
+            }
+            n = r8_dec_input(pk, (r8_u16)v);
             for (k = 0; k < n; k++)
-                app_rx(buf[k]);
-            h->requests++;
+                app_rx(pk[k]);
+            break;
         }
     }
     return plat_host_failed();
@@ -336,7 +382,7 @@ int main(int argc, char **argv)
 {
     enum { O_OUT = 256, O_PTY, O_TCP, O_BAUD, O_RAM, O_SCENE, O_METHOD, O_BAND,
            O_FRAMES, O_FIRST, O_W, O_H, O_FMT, O_CODEC, O_PERIOD, O_NODIRTY,
-           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE };
+           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE, O_RX, O_KEYS, O_KEYLOG, O_SHADING };
     static const struct option opts[] = {
         { "out", 1, 0, O_OUT }, { "pty", 0, 0, O_PTY }, { "tcp", 1, 0, O_TCP },
         { "baud", 1, 0, O_BAUD }, { "ram", 1, 0, O_RAM }, { "scene", 1, 0, O_SCENE },
@@ -345,13 +391,14 @@ int main(int argc, char **argv)
         { "width", 1, 0, O_W }, { "height", 1, 0, O_H }, { "format", 1, 0, O_FMT },
         { "codec", 1, 0, O_CODEC }, { "full-period", 1, 0, O_PERIOD },
         { "no-dirty", 0, 0, O_NODIRTY }, { "dump", 1, 0, O_DUMP },
-        { "linger", 1, 0, O_LINGER }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
+        { "linger", 1, 0, O_LINGER }, { "rx", 1, 0, O_RX }, { "keys", 1, 0, O_KEYS },
+        { "key-log", 1, 0, O_KEYLOG }, { "shading", 1, 0, O_SHADING }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
         { "quiet", 0, 0, 'q' }, { "help", 0, 0, 'h' }, { 0, 0, 0, 0 }
     };
     app_cfg cfg;
     app_layout lay;
     struct host host;
-    const char *out = "-", *dump = 0;
+    const char *out = "-", *dump = 0, *rx = 0, *keys = 0, *key_log = 0;
     int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc, band_given = 0;
     long tcp = -1, baud = 0, ram = -1;
     double linger = 30, gate = 2;
@@ -361,6 +408,7 @@ int main(int argc, char **argv)
     app_defaults(&cfg);
     memset(&host, 0, sizeof host);
     host.rx_fd = -1;
+    host.rx2_fd = -1;
     while ((c = getopt_long(argc, argv, "qh", opts, 0)) != -1) {
         switch (c) {
         case O_OUT: out = optarg; break;
@@ -396,6 +444,15 @@ int main(int argc, char **argv)
         case O_PERIOD: cfg.full_period = (r8_u16)num("--full-period", optarg, 0, 65535); break;
         case O_NODIRTY: cfg.dirty = 0; break;
         case O_DUMP: dump = optarg; break;
+        case O_RX: rx = optarg; break;
+        case O_SHADING:
+            if (!strcmp(optarg, "flat")) cfg.render.shading = R8_SHADE_FLAT;
+            else if (!strcmp(optarg, "lambert")) cfg.render.shading = R8_SHADE_LAMBERT;
+            else if (!strcmp(optarg, "gouraud")) cfg.render.shading = R8_SHADE_GOURAUD;
+            else die(2, "--shading: unknown shading '%s' (flat, lambert, gouraud)", optarg);
+            break;
+        case O_KEYS: keys = optarg; break;
+        case O_KEYLOG: key_log = optarg; break;
         case O_LINGER: linger = (double)num("--linger", optarg, 0, 86400); break;
         case O_GATE: gate = (double)num("--gate", optarg, 0, 86400) / 1000.0; break;
         case O_PRINTRAM: print_ram = 1; break;
@@ -460,6 +517,15 @@ int main(int argc, char **argv)
         host.frame_bytes = r8_fb_bytes(cfg.render.format, cfg.render.width, cfg.render.height);
         host.frame = calloc(1, host.frame_bytes);
     }
+    if (rx) {
+        host.rx2_fd = strcmp(rx, "-") ? open(rx, O_RDONLY) : 0;
+        if (host.rx2_fd < 0)
+            die(1, "cannot read --rx: %s", strerror(errno));
+    }
+    if (keys && !(host.keys = fopen(keys, "r")))
+        die(1, "cannot read the key script: %s", strerror(errno));
+    if (key_log && !(host.key_log = fopen(key_log, "w")))
+        die(1, "cannot write the key log: %s", strerror(errno));
     host.cfg = &cfg;
     cfg.on_band = on_band;
     cfg.on_frame = on_frame;
@@ -501,6 +567,10 @@ int main(int argc, char **argv)
         close(fd);
     if (host.dump)
         fclose(host.dump);
+    if (host.key_log)
+        fclose(host.key_log);
+    if (host.bad_keys)
+        return 2;
     if (plat_host_failed()) {
         fprintf(stderr, "%s: output failed after %lu bytes (reader went away?)\n",
                 prog, plat_host_bytes());

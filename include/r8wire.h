@@ -13,6 +13,10 @@
  *               the whole raw frame, clean bands included)
  *   REQUEST     10                                (display -> device:
  *               send a full frame next)
+ *   INPUT       11 keys:2                         (display -> device: the
+ *               state of the keys, R8_KEY_* bits, 1 = pressed)
+ * Kinds 10..1F go from the display to the device; a display decoder
+ * ignores them (an echo), a device ignores the ones it does not know.
  */
 #ifndef R8WIRE_H
 #define R8WIRE_H
@@ -27,8 +31,25 @@
 #define R8_PKT_BAND 0x02
 #define R8_PKT_FRAME_END 0x03
 #define R8_PKT_REQUEST 0x10
+#define R8_PKT_INPUT 0x11
+#define R8_PKT_TO_DEVICE_FIRST 0x10     /* kinds 10..1F: display -> device */
+#define R8_PKT_TO_DEVICE_LAST 0x1F
 
-#define R8_FLAG_FULL 0x01
+/* INPUT key bits (docs/protocol.md section 2.1) */
+#define R8_KEY_UP 0x0001u
+#define R8_KEY_DOWN 0x0002u
+#define R8_KEY_LEFT 0x0004u
+#define R8_KEY_RIGHT 0x0008u
+#define R8_KEY_A 0x0010u
+#define R8_KEY_B 0x0020u
+#define R8_KEY_START 0x0040u
+#define R8_KEY_SELECT 0x0080u
+#define R8_KEY_X 0x0100u
+#define R8_KEY_Y 0x0200u
+#define R8_KEY_L 0x0400u
+#define R8_KEY_R 0x0800u
+
+#define R8_FLAG_FULL 0x01               /* bits 1..7 reserved: sent 0, ignored */
 
 #define R8_WIRE_CRC_BYTES 2
 #define R8_WIRE_START_BYTES 14          /* FRAME_START body without palette */
@@ -101,8 +122,10 @@ typedef struct r8_tx {
     r8_u8 full;              /* this frame is full */
     r8_u8 want_full;         /* a full frame was requested / is due */
     r8_u8 in_frame;
-    r8_u8 rx[8];             /* request parser */
+    r8_u8 rx[8];             /* request/input parser */
     r8_u8 rx_len;
+    r8_u16 keys;             /* last INPUT key state (R8_KEY_* bits) */
+    r8_u16 inputs;           /* INPUT packets accepted (wraps) */
     r8_u32 bytes;            /* bytes written, delimiters included */
     r8_u32 raw_bytes;        /* raw frame bytes rendered */
 } r8_tx;
@@ -119,8 +142,13 @@ int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
 void r8_tx_sync(r8_tx *tx);
 /* Ask for a full frame at the next r8_tx_frame_begin. */
 void r8_tx_request_full(r8_tx *tx);
-/* Feed one byte received from the display; a valid REQUEST packet
- * calls r8_tx_request_full.  Returns 1 when a request was accepted. */
+/* Feed one byte received from the display.  A valid REQUEST packet
+ * calls r8_tx_request_full and returns 1; a valid INPUT packet stores
+ * its key state in tx->keys, counts it in tx->inputs and returns 2;
+ * anything else (partial packet, bad CRC, unknown kind, wrong length)
+ * returns 0 and changes nothing. */
+#define R8_RX_REQUEST 1
+#define R8_RX_INPUT 2
 int r8_tx_rx(r8_tx *tx, r8_u8 c);
 /* Begin frame `frame`: decides full/delta and sends FRAME_START. */
 int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame);
@@ -130,7 +158,12 @@ int r8_tx_band(r8_tx *tx, const r8_fb *band);
 /* Sends FRAME_END. */
 int r8_tx_frame_end(r8_tx *tx);
 
-/* ---- the frame decoder (display side): byte at a time, fixed memory */
+/* ---- the frame decoder (display side): byte at a time, fixed memory.
+ * Rules (docs/protocol.md section 4): a frame is good only when its
+ * start, every band it announced (every band for a FULL frame, in
+ * increasing y0) and its end arrived intact, a delta frame's number is
+ * the last good frame's number + 1, and the CRC of the assembled frame
+ * matches.  Identical repeats of a packet are ignored. */
 #define R8_DEC_NONE 0       /* nothing finished */
 #define R8_DEC_FRAME 1      /* a complete, CRC-checked frame is in fb */
 #define R8_DEC_PACKET 2     /* a packet was accepted (not a frame end) */
@@ -144,6 +177,7 @@ typedef struct r8_dec {
     r8_u8 code;              /* COBS: current block code */
     r8_u8 left;              /* COBS: bytes left in the block */
     r8_u8 overflow;          /* packet did not fit: drop it */
+    r8_u8 synced;            /* a 0x00 has been seen */
     r8_u8 *fb;               /* the display frame (caller's) */
     unsigned fb_size;
     r8_u8 *pal;              /* caller's palette store (3 * 256) or 0 */
@@ -151,18 +185,28 @@ typedef struct r8_dec {
     /* current frame */
     r8_u8 in_frame, full, format, codec, valid, npal;
     r8_u16 frame, nbands_got, width, height, band;
-    r8_u16 last_seen;        /* last frame number seen in any packet */
+    r8_u16 next_y;           /* smallest y0 the next band may have */
+    r8_u16 last_y0;          /* y0 of the last band accepted */
+    r8_u16 start_crc;        /* packet CRC of this frame's FRAME_START */
+    r8_u16 band_crc;         /* packet CRC of the last band accepted */
+    r8_u16 last_seen;        /* newest frame number seen */
     r8_u8 have_last;         /* last_seen is set */
-    r8_u8 base_ok;           /* fb holds the last good frame */
+    r8_u8 base_ok;           /* fb holds good frame good_no (this geometry) */
+    r8_u16 good_no;          /* number of the last good frame */
+    r8_u8 ever_good;         /* a good frame has been seen (joined) */
+    r8_u8 have_failed;       /* failed_no is set */
+    r8_u16 failed_no;        /* last frame counted incomplete/skipped */
     r8_u8 need_full;         /* ask the device for a full frame */
     unsigned frame_bytes;
-    /* counters */
+    /* counters (docs/protocol.md section 5) */
     r8_u32 bytes;            /* bytes fed */
-    r8_u32 packets;          /* packets accepted */
+    r8_u32 packets;          /* packets accepted (good CRC, well formed) */
     r8_u32 bad_packets;      /* CRC/COBS/format/size failures */
     r8_u32 frames;           /* good frames */
     r8_u32 dropped;          /* frame numbers never seen */
     r8_u32 incomplete;       /* frames started but not good */
+    r8_u32 skipped;          /* delta frames before the first good frame */
+    r8_u32 ignored;          /* accepted packets that changed nothing */
 } r8_dec;
 
 /* Packet buffer bytes a decoder needs for frames up to fb_bytes raw
@@ -173,9 +217,16 @@ void r8_dec_init(r8_dec *d, r8_u8 *pkt, unsigned pkt_size, r8_u8 *fb,
                  unsigned fb_size, r8_u8 *pal, unsigned pal_size);
 /* Feed one byte; returns R8_DEC_*. */
 int r8_dec_feed(r8_dec *d, r8_u8 c);
+/* End of input: an unterminated packet counts as bad, an open frame as
+ * incomplete.  Returns R8_DEC_BAD, R8_DEC_INCOMPLETE or R8_DEC_NONE. */
+int r8_dec_end(r8_dec *d);
 /* Body of the REQUEST packet, COBS-encoded with delimiters, into out
  * (at least R8_DEC_REQUEST_BYTES); returns its length. */
 #define R8_DEC_REQUEST_BYTES 6
 unsigned r8_dec_request(r8_u8 *out);
+/* The INPUT packet for key state `keys`, COBS-encoded with delimiters,
+ * into out (at least R8_DEC_INPUT_BYTES); returns its length. */
+#define R8_DEC_INPUT_BYTES 8
+unsigned r8_dec_input(r8_u8 *out, r8_u16 keys);
 
 #endif

@@ -26,7 +26,7 @@ test-py: $(R8PROBE) $(R8FILL)
 FUZZ_SRC  := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_BIN  := $(FUZZ_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
 FUZZ_SECS ?= 4
-FUZZ_LONG ?= 600
+FUZZ_LONG ?= 3600
 
 $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_SRC) $(wildcard include/*.h src/*.h)
 	@mkdir -p $(dir $@)
@@ -37,9 +37,10 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(LIB_SRC) $(wildcard include/*.h src/
 test-fuzz: $(FUZZ_BIN)
 	@bash scripts/run-step.sh fuzz bash tests/fuzz/run.sh $(FUZZ_SECS) $(FUZZ_BIN)
 
-# long runs: make fuzz [FUZZ_LONG=seconds per target]
+# long runs: make fuzz [FUZZ_RUNS=executions per target] [FUZZ_LONG=cap in s]
+FUZZ_RUNS ?= 10000000
 fuzz: $(FUZZ_BIN)
-	bash tests/fuzz/run.sh $(FUZZ_LONG) $(FUZZ_BIN)
+	FUZZ_RUNS=$(FUZZ_RUNS) bash tests/fuzz/run.sh $(FUZZ_LONG) $(FUZZ_BIN)
 
 TEST_STEPS += test-fuzz
 

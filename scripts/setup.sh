@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# setup.sh - install what rast8's build, demo and tests need on Debian.
+# setup.sh [demo] - install what rast8's build, demo and tests need on Debian.
+#  `setup.sh demo` (make demo) installs only what the demo and the README's
+#  commands need: the host compiler, libusb, Tk and the venv with the
+#  package (and pyusb); without it, everything for make test / make bench.
 #  * apt: cross toolchains and simulators (avr-gcc, cc65, sdcc/ucsim,
 #    simavr), clang (sanitizers, libFuzzer), valgrind, socat, umockdev,
 #    libusb, Xvfb.  Only packages that are missing are installed; apt runs
@@ -11,7 +14,12 @@ cd "$(dirname "$0")/.."
 
 APT_PKGS="build-essential gcc-avr avr-libc simavr libsimavr-dev libelf-dev cc65 sdcc sdcc-ucsim
  clang libclang-rt-14-dev valgrind socat umockdev libusb-1.0-0-dev pkg-config xvfb xauth
- python3-venv python3-dev"
+ python3-venv python3-dev python3-tk"
+EXTRA="test"
+if [ "${1:-}" = demo ]; then
+  APT_PKGS="build-essential libusb-1.0-0-dev pkg-config python3-venv python3-dev python3-tk"
+  EXTRA="usb"
+fi
 
 missing=""
 for p in $APT_PKGS; do
@@ -33,6 +41,6 @@ if [ ! -x .venv/bin/python ]; then
   python3 -m venv .venv
 fi
 .venv/bin/python -m pip install -q --upgrade pip >/dev/null 2>&1 || true
-echo "setup: pip install -e host[test]"
-.venv/bin/python -m pip install -q -e 'host[test]'
+echo "setup: pip install -e host[$EXTRA]"
+.venv/bin/python -m pip install -q -e "host[$EXTRA]"
 echo "setup: done"

@@ -99,6 +99,8 @@ int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
     tx->want_full = 1;
     tx->in_frame = 0;
     tx->rx_len = 0;
+    tx->keys = 0;
+    tx->inputs = 0;
     tx->bytes = 0;
     tx->raw_bytes = 0;
     return R8_OK;
@@ -116,7 +118,7 @@ void r8_tx_request_full(r8_tx *tx)
 
 int r8_tx_rx(r8_tx *tx, r8_u8 c)
 {
-    r8_u8 body[4];
+    r8_u8 body[6];
     unsigned n;
     if (c != 0) {
         if (tx->rx_len < sizeof tx->rx)
@@ -127,13 +129,22 @@ int r8_tx_rx(r8_tx *tx, r8_u8 c)
     }
     n = tx->rx_len;
     tx->rx_len = 0;
-    if (n > sizeof tx->rx || r8_cobs_decode(tx->rx, n, body, sizeof body, &n) != R8_OK)
+    if (n > sizeof tx->rx || r8_cobs_decode(tx->rx, n, body, sizeof body, &n) != R8_OK ||
+        n < 1u + R8_WIRE_CRC_BYTES ||
+        r8_crc16(body, n - R8_WIRE_CRC_BYTES) !=
+            (((unsigned)body[n - 2u] << 8) | body[n - 1u]))
         return 0;
-    if (n != 1u + R8_WIRE_CRC_BYTES || body[0] != R8_PKT_REQUEST ||
-        r8_crc16(body, 1) != (((unsigned)body[1] << 8) | body[2]))
-        return 0;
-    tx->want_full = 1;
-    return 1;
+    n -= R8_WIRE_CRC_BYTES;
+    if (body[0] == R8_PKT_REQUEST && n == 1u) {
+        tx->want_full = 1;
+        return R8_RX_REQUEST;
+    }
+    if (body[0] == R8_PKT_INPUT && n == 3u) {
+        tx->keys = (r8_u16)(((unsigned)body[1] << 8) | body[2]);
+        tx->inputs++;
+        return R8_RX_INPUT;
+    }
+    return 0; /* unknown kind or length: ignored */
 }
 
 int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)

@@ -43,10 +43,19 @@ int main(int argc, char **argv)
     r8_render_defaults(&cfg);
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : "";
-        if (!strcmp(a, "--help")) {
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            int k;
             printf("usage: r8dump [--scene S] [--method M] [--shading flat|lambert|gouraud]\n"
                    "  [--cull normal|judd] [--format page1|row1|idx8] [--width W] [--height H]\n"
-                   "  [--band B] [--frame N] [--count K] [--pgm FILE | --raw FILE]\n");
+                   "  [--band B] [--frame N] [--count K] [--pgm FILE | --raw FILE]\n"
+                   "Renders frames of a built-in scene on the host (PGM picture or raw bytes).\n"
+                   "scenes:");
+            for (k = 0; k < R8_SCENE_COUNT; k++)
+                printf(" %s", r8_scene_name((r8_u8)k));
+            printf("\nmethods: auto (the analyser picks)");
+            for (k = 0; k < R8_VIS_COUNT; k++)
+                printf(" %s", r8_method_name((r8_u8)k));
+            printf("\n");
             return 0;
         }
         i++;
@@ -68,8 +77,14 @@ int main(int argc, char **argv)
         else { fprintf(stderr, "r8dump: unknown option %s\n", a); return 2; }
     }
     if (cfg.method == R8_VIS_AUTO) {
-        fprintf(stderr, "r8dump: --method auto is resolved by the analyser, not here\n");
-        return 2;
+        r8_analysis an;
+        r8_s16 band = cfg.band;
+        if (r8_analyse(&cfg, 16384u, &an)) {
+            fprintf(stderr, "r8dump: --method auto: nothing fits 16 KB for this scene\n");
+            return 2;
+        }
+        cfg.band = band; /* the picture does not depend on the band */
+        fprintf(stderr, "r8dump: analyser: method %s\n", r8_method_name(cfg.method));
     }
     r8_demo_setup(&run, r8_demo_get((r8_u8)scene), cfg.width);
     cfg.scene = &run.scene;

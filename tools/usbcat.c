@@ -207,10 +207,14 @@ static const char *udev_hint =
     "then run 'sudo udevadm control --reload && sudo udevadm trigger' and "
     "re-plug the device (or run as root)";
 
-/* Find the interface / altsetting owning a bulk IN endpoint `ep`.
- * Returns 0 and fills iface/alt, or -1. */
+/* Find the vendor-class (0xff) interface / altsetting owning a bulk IN
+ * endpoint `ep`.  Returns 0 and fills iface/alt; -2 (and *iface, *alt =
+ * the interface's class) when the endpoint is only on an interface of
+ * another class, which is never opened (claiming it would detach e.g.
+ * cdc_acm from the board's serial port); -1 if there is no such endpoint. */
 static int find_endpoint(libusb_device *dev, int ep, int want_iface, int *iface, int *alt)
 {
+    int other = -1, other_class = 0;
     struct libusb_config_descriptor *cfg;
     int i, a, e, found = -1;
     if (libusb_get_active_config_descriptor(dev, &cfg) != 0 &&
@@ -224,6 +228,11 @@ static int find_endpoint(libusb_device *dev, int ep, int want_iface, int *iface,
             for (e = 0; e < d->bNumEndpoints; e++) {
                 const struct libusb_endpoint_descriptor *ed = &d->endpoint[e];
                 if (ed->bEndpointAddress == ep &&
+                    (ed->bmAttributes & 3) == LIBUSB_TRANSFER_TYPE_BULK &&
+                    d->bInterfaceClass != LIBUSB_CLASS_VENDOR_SPEC && other < 0) {
+                    other = d->bInterfaceNumber;
+                    other_class = d->bInterfaceClass;
+                } else if (ed->bEndpointAddress == ep &&
                     (ed->bmAttributes & 3) == LIBUSB_TRANSFER_TYPE_BULK) {
                     *iface = d->bInterfaceNumber;
                     *alt = d->bAlternateSetting;
@@ -234,6 +243,11 @@ static int find_endpoint(libusb_device *dev, int ep, int want_iface, int *iface,
         }
     }
     libusb_free_config_descriptor(cfg);
+    if (found < 0 && other >= 0) {
+        *iface = other;
+        *alt = other_class;
+        return -2;
+    }
     return found;
 }
 
@@ -506,7 +520,11 @@ int main(int argc, char **argv)
         if (dd.idVendor != o.vid || dd.idProduct != o.pid) continue;
         if (o.bus >= 0 && libusb_get_bus_number(list[i]) != o.bus) continue;
         if (o.addr >= 0 && libusb_get_device_address(list[i]) != o.addr) continue;
-        if (!dev) dev = list[i];
+        /* "first" = the lowest bus number, then the lowest address */
+        if (!dev || libusb_get_bus_number(list[i]) < libusb_get_bus_number(dev) ||
+            (libusb_get_bus_number(list[i]) == libusb_get_bus_number(dev) &&
+             libusb_get_device_address(list[i]) < libusb_get_device_address(dev)))
+            dev = list[i];
         matches++;
     }
     if (!dev) {
@@ -520,7 +538,17 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: %d devices match %04x:%04x; using bus %u addr %u "
                 "(choose with --bus/--addr)\n", prog, matches, o.vid, o.pid,
                 libusb_get_bus_number(dev), libusb_get_device_address(dev));
-    if (find_endpoint(dev, o.ep, o.iface, &iface, &alt) != 0) {
+    r = find_endpoint(dev, o.ep, o.iface, &iface, &alt);
+    if (r == -2) {
+        rc = fail(EX_NODEV, "not a vendor-class interface: endpoint 0x%02x of %04x:%04x is on "
+                  "interface %d of class 0x%02x%s, which rast8 does not open (it would take "
+                  "the interface from its kernel driver, e.g. the board's serial port). Use "
+                  "the vendor-class endpoint that 'rast8-usbcat --list' shows, or read the "
+                  "serial port", o.ep, o.vid, o.pid, iface, alt,
+                  alt == 0x0a ? " (CDC data)" : alt == 0x02 ? " (CDC control)" : "");
+        goto out;
+    }
+    if (r != 0) {
         if (o.iface >= 0)
             rc = fail(EX_NODEV, "no such endpoint: interface %d of %04x:%04x has no bulk "
                       "IN endpoint 0x%02x; 'rast8-usbcat --list' shows the endpoints",
@@ -679,6 +707,11 @@ int main(int argc, char **argv)
         } else if (r == LIBUSB_ERROR_OVERFLOW) {
             rc = fail(EX_USB, "USB overflow on endpoint 0x%02x after %lld bytes: the device "
                       "sent more than was asked for", o.ep, total);
+        } else if (r == LIBUSB_ERROR_IO) {
+            rc = fail(EX_USB, "USB bus error on %s after %lld bytes (all written out): the "
+                      "transfer failed on the wire (EPROTO/EILSEQ/ETIME: bad signal, noise or "
+                      "power). Try another cable, a port on the computer itself rather than a "
+                      "hub, or a powered hub, then run again", o.spec, total);
         } else {
             rc = fail(EX_USB, "USB read error on %s after %lld bytes: %s", o.spec, total,
                       libusb_strerror(r));

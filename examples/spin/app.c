@@ -143,6 +143,11 @@ void app_rx(r8_u8 c)
     r8_tx_rx(&tx, c);
 }
 
+r8_u16 app_keys(void)
+{
+    return tx.keys;
+}
+
 void app_request_full(void)
 {
     r8_tx_request_full(&tx);

@@ -83,6 +83,9 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size);
 /* One byte received from the display (safe to call from the UART ISR
  * while app_run runs: it only sets a flag for the next frame). */
 void app_rx(r8_u8 c);
+/* The key state from the display's last INPUT packet (R8_KEY_* bits,
+ * 1 = pressed; 0 before any). */
+r8_u16 app_keys(void);
 /* Send a full frame next. */
 void app_request_full(void);
 /* Bytes written so far by the current/last app_run. */

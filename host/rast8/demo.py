@@ -1,6 +1,6 @@
-"""`make demo`: the emulator streams the rotating-cube demo through a pty,
-the viewer reads it over pyserial and writes PNGs and a GIF, then one
-summary line.  `--compare` measures bytes per frame and compression with
+"""`make demo`: the emulator streams a demo scene (make demo: the teapot,
+Gouraud-shaded in 8-bit grey) through a pty, the viewer reads it over
+pyserial and writes PNGs (1:1 and x4) and a GIF, then one summary line.  `--compare` measures bytes per frame and compression with
 each codec, with and without dirty bands.
 
     python -m rast8.demo --emu build/rast8-emu --frames 64 --out build/demo
@@ -38,7 +38,9 @@ def run_demo(emu, frames, out, extra, baud=None):
     def on_frame(fr):
         decoded.append(fr)
         fr.to_image().save(os.path.join(out, "frame_%05d.png" % fr.number))
-        images.append(fr.to_image(4).convert("P"))
+        big = fr.to_image(4)
+        big.save(os.path.join(out, "frame_%05d_x4.png" % fr.number))
+        images.append(big.convert("P"))
 
     try:
         cap.run(on_frame)

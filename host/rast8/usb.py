@@ -272,6 +272,8 @@ class UsbSource:
                 f"no such device: no USB device {self.vid:04x}:{self.pid:04x} is connected{where}. "
                 "Plug the board in (check the cable carries data) and check VID:PID with "
                 "'rast8-usbcat --list' or 'lsusb'")
+        # "first found" = the lowest bus number, then the lowest address
+        devs.sort(key=lambda d: (d.bus, d.address))
         dev = devs[0]
         self.bus, self.addr = dev.bus, dev.address
         if len(devs) > 1:
@@ -287,8 +289,18 @@ class UsbSource:
     def _setup(self, dev, opts):
         import usb.core
         want = opts["interface"]
-        found = [(i, e) for i, e in _bulk_in_interfaces(dev, self.ep)
-                 if want is None or i.bInterfaceNumber == want]
+        owners = [(i, e) for i, e in _bulk_in_interfaces(dev, self.ep)
+                  if want is None or i.bInterfaceNumber == want]
+        found = [(i, e) for i, e in owners if i.bInterfaceClass == 0xFF]
+        if owners and not found:
+            i = owners[0][0]
+            kind = {0x0A: " (CDC data)", 0x02: " (CDC control)"}.get(i.bInterfaceClass, "")
+            raise UsbNoDevice(
+                f"not a vendor-class interface: endpoint 0x{self.ep:02x} of "
+                f"{self.vid:04x}:{self.pid:04x} is on interface {i.bInterfaceNumber} of class "
+                f"0x{i.bInterfaceClass:02x}{kind}, which rast8 does not open (it would take the "
+                "interface from its kernel driver, e.g. the board's serial port). Use the "
+                "vendor-class endpoint that 'rast8-usbcat --list' shows, or read the serial port")
         if not found:
             on = f"interface {want} of " if want is not None else ""
             raise UsbNoDevice(f"no such endpoint: {on}{self.vid:04x}:{self.pid:04x} has no bulk "
@@ -327,11 +339,13 @@ class UsbSource:
             if code == _ERR_ACCESS:
                 raise UsbPermissionDenied(f"permission denied opening {ident}: {perm}") from e
             if code == _ERR_BUSY:
+                why = ("; " + self.warnings[-1]) if any(
+                    w.startswith("cannot detach") for w in self.warnings) else ""
                 raise UsbBusy(
                     f"interface busy: interface {iface} of {self.vid:04x}:{self.pid:04x} is "
                     "claimed by another program (another rast8 viewer or rast8-usbcat?) or by "
-                    "a kernel driver that could not be detached. Close that program and "
-                    "retry") from e
+                    f"a kernel driver that could not be detached{why}. Close that program "
+                    "(or run as root to detach the driver) and retry") from e
             if code == _ERR_NO_DEVICE:
                 raise UsbUnplugged(f"device unplugged: {ident} disappeared before streaming "
                                    "began; re-plug it and retry") from e
@@ -380,6 +394,12 @@ class UsbSource:
         if r == _ERR_OVERFLOW:
             return UsbError(f"USB overflow on endpoint 0x{self.ep:02x} after {n} bytes: the "
                             "device sent more than was asked for")
+        if r == _ERR_IO:
+            return UsbError(
+                f"USB bus error on {self.name} after {n} bytes (all passed on): the transfer "
+                "failed on the wire (EPROTO/EILSEQ/ETIME: bad signal, noise or power). Try "
+                "another cable, a port on the computer itself rather than a hub, or a powered "
+                "hub, then run again")
         return UsbError(f"USB read error on {self.name} after {n} bytes: libusb error {r}")
 
     def _fill(self):

@@ -6,9 +6,9 @@ from them (tests/vectors/vectors.h), so C and Python check the same bytes.
 import sys
 
 
-def parse_bytes(text):
+def _plain_bytes(tokens):
     out = bytearray()
-    for tok in text.split():
+    for tok in tokens:
         if tok == "-":
             continue
         if "*" in tok:
@@ -18,8 +18,58 @@ def parse_bytes(text):
             a, b = tok.split("..")
             out.extend(range(int(a, 16), int(b, 16) + 1))
         else:
-            out.append(int(tok, 16))
+            out.extend(bytes.fromhex(tok))    # 2, 4, ... hex digits
+    return out
+
+
+def parse_bytes(text):
+    """Hex bytes; XX*N repeats, XX..YY counts; [ body ] is one packet:
+    body + CRC-16, COBS-encoded, then the 0x00 delimiter."""
+    from .codec import crc16, cobs_encode
+    out = bytearray()
+    rest = text.replace("[", " [ ").replace("]", " ] ").split()
+    i = 0
+    while i < len(rest):
+        if rest[i] == "[":
+            j = rest.index("]", i)
+            body = bytes(_plain_bytes(rest[i + 1:j]))
+            out += cobs_encode(body + crc16(body).to_bytes(2, "big")) + b"\x00"
+            i = j + 1
+        else:
+            j = i
+            while j < len(rest) and rest[j] != "[":
+                j += 1
+            out += _plain_bytes(rest[i:j])
+            i = j
     return bytes(out)
+
+
+DEC_COUNTERS = ("bad", "dropped", "incomplete", "skipped", "ignored")
+
+
+def parse_expect(kind, text):
+    """dec: fb=N frames=a,b,... [bad= dropped= incomplete= skipped= ignored=]
+    (counters not given are 0); dev: requests= inputs= keys=HEX."""
+    kv = dict(t.split("=", 1) for t in text.split())
+    if kind == "dec":
+        e = {"fb": int(kv["fb"]),
+             "frames": [int(x) for x in kv.get("frames", "").split(",") if x]}
+        for c in DEC_COUNTERS:
+            e[c] = int(kv.get(c, 0))
+        return e
+    return {"requests": int(kv.get("requests", 0)), "inputs": int(kv.get("inputs", 0)),
+            "keys": int(kv.get("keys", "0"), 16)}
+
+
+def expect_bytes(kind, e):
+    """The expectation packed for vectors.h (big-endian):
+    dec: fb:2 nframes:1 frame:2... bad:2 dropped:2 incomplete:2 skipped:2
+    ignored:2;  dev: requests:1 inputs:1 keys:2."""
+    if kind == "dec":
+        out = e["fb"].to_bytes(2, "big") + bytes([len(e["frames"])])
+        out += b"".join(f.to_bytes(2, "big") for f in e["frames"])
+        return out + b"".join(e[c].to_bytes(2, "big") for c in DEC_COUNTERS)
+    return bytes([e["requests"], e["inputs"]]) + e["keys"].to_bytes(2, "big")
 
 
 def load(path):
@@ -35,7 +85,10 @@ def load(path):
             kind, name = head.split()
             v = {"kind": kind, "name": name, "input": parse_bytes(inp), "line": ln,
                  "output": None, "error": None, "limit": None}
-            if kind.endswith("_bad"):
+            if kind in ("dec", "dev"):
+                v["expect"] = parse_expect(kind, outp)
+                v["output"] = expect_bytes(kind, v["expect"])
+            elif kind.endswith("_bad"):
                 err = outp.split(":")
                 v["error"] = err[0]
                 if len(err) > 1:
@@ -47,7 +100,8 @@ def load(path):
 
 
 KIND_IDS = {"rle": 1, "lz77": 2, "lz77_dec": 3, "cobs": 4, "crc": 5,
-            "rle_bad": 6, "lz77_bad": 7, "cobs_bad": 8, "stream": 9}
+            "rle_bad": 6, "lz77_bad": 7, "cobs_bad": 8, "stream": 9,
+            "dec": 10, "dev": 11}
 ERR_IDS = {"SPACE": -1, "MALFORMED": -2, "TRUNC": -3}
 
 

@@ -1,5 +1,6 @@
 /* test_wire.c - CRC-16/CCITT-FALSE, COBS (shared vectors, streaming
- * writer, malformed input) and the frame encoder's packets. */
+ * writer, malformed input), the frame encoder's packets, and the shared
+ * decoder (dec) and device-input (dev) vectors. */
 #include "unity.h"
 #include "r8wire.h"
 #include "../vectors/vectors.h"
@@ -315,6 +316,130 @@ static void test_stream_vector(void)
     TEST_ASSERT_EQUAL_UINT(1, seen);
 }
 
+static unsigned get16v(const unsigned char *p)
+{
+    return ((unsigned)p[0] << 8) | p[1];
+}
+
+/* Decoder vectors: the good frames' numbers and the counters after the
+ * end of input; nothing written past the frame buffer. */
+#define DV_FB 32
+static r8_u8 dv_pkt[R8_DEC_PKT_BYTES(DV_FB)];
+static r8_u8 dv_fb[DV_FB + 4];
+static r8_u8 dv_pal[3 * 256];
+static void test_decoder_vectors(void)
+{
+    unsigned i, k, seen = 0;
+    for (i = 0; i < TVEC_COUNT; i++) {
+        const tvec *v = &tvecs[i];
+        const unsigned char *e = v->out, *cnt;
+        unsigned fb, nf, got = 0;
+        r8_dec d;
+        if (v->kind != VK_DEC)
+            continue;
+        fb = get16v(e);
+        nf = e[2];
+        cnt = e + 3 + 2 * nf;
+        seen++;
+        TEST_ASSERT_TRUE(fb <= DV_FB);
+        for (k = 0; k < sizeof dv_fb; k++)
+            dv_fb[k] = GUARD;
+        r8_dec_init(&d, dv_pkt, R8_DEC_PKT_BYTES(fb), dv_fb, fb, dv_pal, sizeof dv_pal);
+        for (k = 0; k < v->in_len; k++) {
+            if (r8_dec_feed(&d, v->in[k]) == R8_DEC_FRAME) {
+                if (got >= nf || d.frame != get16v(e + 3 + 2 * got)) {
+                    unity_print(v->name);
+                    unity_print(": unexpected good frame\n");
+                    TEST_ASSERT_TRUE(0);
+                }
+                got++;
+            }
+        }
+        r8_dec_end(&d);
+        for (k = fb; k < sizeof dv_fb; k++)
+            TEST_ASSERT_EQUAL_HEX8(GUARD, dv_fb[k]);
+        if (got != nf || d.bad_packets != get16v(cnt) || d.dropped != get16v(cnt + 2) ||
+            d.incomplete != get16v(cnt + 4) || d.skipped != get16v(cnt + 6) ||
+            d.ignored != get16v(cnt + 8)) {
+            unity_print(v->name);
+            unity_print(": frames/counters differ\n");
+            TEST_ASSERT_EQUAL_UINT(nf, got);
+            TEST_ASSERT_EQUAL_UINT(get16v(cnt), d.bad_packets);
+            TEST_ASSERT_EQUAL_UINT(get16v(cnt + 2), d.dropped);
+            TEST_ASSERT_EQUAL_UINT(get16v(cnt + 4), d.incomplete);
+            TEST_ASSERT_EQUAL_UINT(get16v(cnt + 6), d.skipped);
+            TEST_ASSERT_EQUAL_UINT(get16v(cnt + 8), d.ignored);
+        }
+        TEST_ASSERT_EQUAL_UINT(nf, d.frames);
+    }
+    TEST_ASSERT_TRUE(seen >= 15);
+}
+
+/* Device-side vectors: what r8_tx_rx makes of display -> device bytes. */
+static void test_device_input_vectors(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    unsigned i, k, seen = 0, req, inp;
+    for (i = 0; i < TVEC_COUNT; i++) {
+        const tvec *v = &tvecs[i];
+        if (v->kind != VK_DEV)
+            continue;
+        seen++;
+        tx_cfg(&c);
+        TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+        send_frame(&tx, 0, 0, 1);
+        req = inp = 0;
+        for (k = 0; k < v->in_len; k++) {
+            int r = r8_tx_rx(&tx, v->in[k]);
+            req += r == R8_RX_REQUEST;
+            inp += r == R8_RX_INPUT;
+        }
+        if (req != v->out[0] || inp != v->out[1] || tx.keys != get16v(v->out + 2) ||
+            tx.inputs != inp || tx.want_full != (req != 0)) {
+            unity_print(v->name);
+            unity_print(": device input differs\n");
+            TEST_ASSERT_EQUAL_UINT(v->out[0], req);
+            TEST_ASSERT_EQUAL_UINT(v->out[1], inp);
+            TEST_ASSERT_EQUAL_HEX16(get16v(v->out + 2), tx.keys);
+            TEST_ASSERT_EQUAL_UINT(inp, tx.inputs);
+            TEST_ASSERT_EQUAL_UINT(req != 0, tx.want_full);
+        }
+    }
+    TEST_ASSERT_TRUE(seen >= 5);
+}
+
+/* r8_dec_input writes the INPUT packet r8_tx_rx accepts, for every key
+ * bit, and r8_dec_request the REQUEST. */
+static void test_input_packet_round_trip(void)
+{
+    r8_tx_cfg c;
+    r8_tx tx;
+    r8_u8 out[R8_DEC_INPUT_BYTES + 2];
+    unsigned b, k, n;
+    tx_cfg(&c);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    TEST_ASSERT_EQUAL_UINT(0, tx.keys);
+    send_frame(&tx, 0, 0, 1); /* the first (full) frame clears want_full */
+    TEST_ASSERT_EQUAL_UINT(0, tx.want_full);
+    for (b = 0; b <= 16; b++) {
+        r8_u16 keys = (r8_u16)(b == 16 ? 0xFFFFu : (1u << b));
+        int last = 0;
+        out[R8_DEC_INPUT_BYTES] = GUARD;
+        n = r8_dec_input(out, keys);
+        TEST_ASSERT_TRUE(n <= R8_DEC_INPUT_BYTES);
+        TEST_ASSERT_EQUAL_HEX8(GUARD, out[R8_DEC_INPUT_BYTES]);
+        TEST_ASSERT_EQUAL_UINT(0, out[0]);
+        TEST_ASSERT_EQUAL_UINT(0, out[n - 1]);
+        for (k = 0; k < n; k++)
+            last = r8_tx_rx(&tx, out[k]);
+        TEST_ASSERT_EQUAL_INT(R8_RX_INPUT, last);
+        TEST_ASSERT_EQUAL_HEX16(keys, tx.keys);
+    }
+    TEST_ASSERT_EQUAL_UINT(17, tx.inputs);
+    TEST_ASSERT_EQUAL_UINT(0, tx.want_full); /* inputs do not ask for a full frame */
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -326,5 +451,8 @@ int main(void)
     RUN_TEST(test_tx_request_packet);
     RUN_TEST(test_tx_palette_and_raw_fallback);
     RUN_TEST(test_stream_vector);
+    RUN_TEST(test_decoder_vectors);
+    RUN_TEST(test_device_input_vectors);
+    RUN_TEST(test_input_packet_round_trip);
     return UNITY_END();
 }

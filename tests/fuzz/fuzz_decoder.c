@@ -26,6 +26,10 @@ int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)
         if (d.pkt_len > pktsz)
             abort();
     }
+    if (r8_dec_end(&d) > R8_DEC_INCOMPLETE || d.in_frame)
+        abort();
+    if (d.frames > d.packets)
+        abort();
     free(pkt);
     free(fb);
     free(pal);

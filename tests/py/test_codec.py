@@ -41,6 +41,29 @@ def test_vector_python(v):
         enc = Encoder(0, 16, 8, 8, codec.RLE, full_period=32, dirty=True)
         assert enc.sync() + enc.frame(0, i) + enc.frame(1, i) == o
         assert [f.pixels for f in StreamDecoder().feed(o)] == [i, i]
+    elif k == "dec":
+        from rast8.protocol import StreamDecoder
+        e = v["expect"]
+        dec = StreamDecoder(e["fb"])
+        got = dec.feed(i)
+        dec.finish()
+        assert [f.number for f in got] == e["frames"]
+        assert {c: dec.counters()[c if c != "bad" else "bad_packets"]
+                for c in ("bad", "dropped", "incomplete", "skipped", "ignored")} == \
+            {c: e[c] for c in ("bad", "dropped", "incomplete", "skipped", "ignored")}
+        # byte at a time gives the same
+        one = StreamDecoder(e["fb"])
+        assert [f.number for b in i for f in one.feed(bytes([b]))] == e["frames"]
+        one.finish()
+        assert one.counters() == dec.counters()
+    elif k == "dev":
+        from rast8.protocol import parse_to_device
+        got = parse_to_device(i)
+        e = v["expect"]
+        inputs = [x for t, x in got if t == "input"]
+        assert sum(t == "request" for t, _ in got) == e["requests"]
+        assert len(inputs) == e["inputs"]
+        assert (inputs[-1] if inputs else 0) == e["keys"]
     else:
         fn = {"rle_bad": codec.rle_decode, "lz77_bad": codec.lz77_decode,
               "cobs_bad": lambda d, limit=None: codec.cobs_decode(d)}[k]

@@ -32,3 +32,19 @@ def test_seed_examples_in_doc():
     assert C.rle_encode(bytes([1] + [3] * 9 + [8, 7, 6, 5])).hex(" ").upper() in DOC
     seed = bytes.fromhex("0005 0102030405 FFFC 0003 0002 0302 FFF6 0002 FFFB 0005".replace(" ", ""))
     assert C.lz77_decode(seed) == bytes([1, 2, 3, 4, 5, 2, 3, 4, 3, 2, 1, 2, 4, 3, 2, 1, 2])
+
+
+def test_input_example_bytes():
+    from rast8.protocol import input_packet, KEY_BITS
+    m = re.search(r"<!-- input-example -->`([0-9A-F ]+)`", DOC)
+    assert m and bytes.fromhex(m.group(1)) == input_packet(KEY_BITS["a"] | KEY_BITS["left"])
+
+
+def test_every_vector_named_in_the_spec_exists():
+    from rast8.vectors import load
+    from conftest import VECTORS
+    names = {"%s %s" % (v["kind"], v["name"]) for v in load(os.path.join(VECTORS, "codec.txt"))}
+    cited = set(re.findall(r"`((?:dec|dev) [a-z0-9_]+)`", DOC.replace("\n", " ")))
+    cited |= {"%s %s" % m for m in re.findall(r"`(dec|dev)\s+([a-z0-9_]+)`", DOC)}
+    cited = {c for c in cited if not c.endswith("_")}
+    assert cited and cited <= names, sorted(cited - names)

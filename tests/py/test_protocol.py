@@ -83,6 +83,7 @@ def test_c_and_python_decoders_agree_on_damaged_streams(emu_stream, codec_tool):
         bad = _damage(stream, rnd)
         dec = StreamDecoder()
         got = dec.feed(bad)
+        dec.finish()
         r = subprocess.run([codec_tool, "dec"], input=bad, capture_output=True)
         cgot = read_dump(r.stdout)
         assert [(f.number, f.pixels) for f in got] == [(f.number, f.pixels) for f in cgot]

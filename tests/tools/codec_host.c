@@ -4,9 +4,11 @@
  *
  *   rast8-codec rle|lz77|raw|cobs encode|decode [LIMIT]
  *   rast8-codec crc                 prints the CRC-16 as 4 hex digits
- *   rast8-codec dec [FB_BYTES]      protocol stream -> good frames in the
+ *   rast8-codec dec [FB_BYTES [--no-end]]
+ *                                   protocol stream -> good frames in the
  *                                   emulator's --dump format; counters as
- *                                   one JSON line on stderr
+ *                                   one JSON line on stderr (after
+ *                                   r8_dec_end unless --no-end)
  * exit: 0 ok, 2 usage, 3 malformed, 4 truncated, 5 output limit */
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,7 +41,7 @@ static int rc_exit(int rc)
     }
 }
 
-static int dec_main(unsigned fb_bytes)
+static int dec_main(unsigned fb_bytes, int no_end)
 {
     static r8_dec d;
     unsigned char *pkt = malloc(R8_DEC_PKT_BYTES(fb_bytes)), *fb = malloc(fb_bytes);
@@ -59,11 +61,15 @@ static int dec_main(unsigned fb_bytes)
             fwrite(fb, 1, d.frame_bytes, stdout);
         }
     }
+    if (!no_end)
+        r8_dec_end(&d);
     fprintf(stderr, "{\"bytes\": %lu, \"packets\": %lu, \"bad_packets\": %lu, "
-            "\"frames\": %lu, \"dropped\": %lu, \"incomplete\": %lu}\n",
+            "\"frames\": %lu, \"dropped\": %lu, \"incomplete\": %lu, "
+            "\"skipped\": %lu, \"ignored\": %lu}\n",
             (unsigned long)d.bytes, (unsigned long)d.packets,
             (unsigned long)d.bad_packets, (unsigned long)d.frames,
-            (unsigned long)d.dropped, (unsigned long)d.incomplete);
+            (unsigned long)d.dropped, (unsigned long)d.incomplete,
+            (unsigned long)d.skipped, (unsigned long)d.ignored);
     return 0;
 }
 
@@ -74,7 +80,8 @@ int main(int argc, char **argv)
     unsigned cap, len;
     int rc, codec = -1, enc;
     if (argc >= 2 && !strcmp(argv[1], "dec"))
-        return dec_main(argc > 2 ? (unsigned)strtoul(argv[2], 0, 0) : 65536u);
+        return dec_main(argc > 2 ? (unsigned)strtoul(argv[2], 0, 0) : 65536u,
+                        argc > 3 && !strcmp(argv[3], "--no-end"));
     in = slurp(&n);
     if (!in)
         return 1;
@@ -83,7 +90,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (argc < 3) {
-        fprintf(stderr, "usage: rast8-codec rle|lz77|raw|cobs encode|decode [LIMIT] | crc | dec [FB_BYTES]\n");
+        fprintf(stderr, "usage: rast8-codec rle|lz77|raw|cobs encode|decode [LIMIT] | crc | dec [FB_BYTES [--no-end]]\n");
         return 2;
     }
     enc = !strcmp(argv[2], "encode");

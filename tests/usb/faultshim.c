@@ -13,6 +13,7 @@
  *   silent=K     the first K bulk IN requests go to umockdev as usual;
  *                later ones never complete (the device sends nothing),
  *                until libusb cancels them on its timeout
+ *   nodetach     (with driver) detaching the driver fails with EPERM
  *   driver       a kernel driver ("rast8drv") is bound to the interface:
  *                claiming fails with EBUSY until it is detached
  *                (USBDEVFS_DISCONNECT); detach and re-attach
@@ -32,7 +33,7 @@
 #include <linux/usbdevice_fs.h>
 
 static int inited;
-static int f_access, f_busy, f_silent, f_driver;
+static int f_access, f_busy, f_silent, f_driver, f_nodetach;
 static int driver_bound = 1;
 static long silent_after;
 static long in_submits;
@@ -49,6 +50,7 @@ static void init_mode(void)
         if (!strncmp(p, "access", 6)) f_access = 1;
         else if (!strncmp(p, "busy", 4)) f_busy = 1;
         else if (!strncmp(p, "driver", 6)) f_driver = 1;
+        else if (!strncmp(p, "nodetach", 8)) f_nodetach = 1;
         else if (!strncmp(p, "silent=", 7)) { f_silent = 1; silent_after = strtol(p + 7, NULL, 10); }
     }
 }
@@ -135,6 +137,10 @@ int ioctl(int fd, unsigned long req, ...)
             if (c->ioctl_code == (int)USBDEVFS_DISCONNECT) {
                 if (!driver_bound) {
                     errno = ENODATA;
+                    return -1;
+                }
+                if (f_nodetach) {       /* the driver refuses to let go */
+                    errno = EPERM;
                     return -1;
                 }
                 driver_bound = 0;

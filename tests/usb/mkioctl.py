@@ -50,6 +50,17 @@ FEEDBEEF = _desc_hex([
     "0705010240 0000".replace(" ", ""),
     "0705810240 0000".replace(" ", ""),
 ])
+# feed:cafe composite board: interface 0 CDC comm (interrupt IN 0x83),
+# interface 1 CDC data (class 0a: bulk OUT 0x01, bulk IN 0x81), interface 2
+# vendor class ff with the stream on bulk IN 0x82
+COMPOSITE = _desc_hex([
+    "12010002000000 40 edfe feca 0001 000000 01".replace(" ", ""),
+    "0902400003010080 32".replace(" ", ""),
+    "090400000102020100", "0705830308 0010".replace(" ", ""),
+    "0904010002 0a000000".replace(" ", ""), "0705010240 0000".replace(" ", ""),
+    "0705810240 0000".replace(" ", ""),
+    "0904020001ff000000", "0705820240 0000".replace(" ", ""),
+])
 # 046d:c077 HID mouse: interface class 03, interrupt IN 0x81
 MOUSE = _desc_hex([
     "120100020000000 86d0477c0000100000001".replace(" ", ""),
@@ -60,7 +71,8 @@ MOUSE = _desc_hex([
 ])
 
 
-def _device(desc, vid, pid, devnum, cls):
+def _device(desc, vid, pid, devnum, cls, bus=BUS, nifaces=1):
+    BUS = bus  # noqa: N806 - the device's own bus
     minor = (BUS - 1) * 128 + devnum - 1
     return "\n".join([
         f"P: /devices/pci0000:00/0000:00:14.0/usb{BUS}/{BUS}-{devnum - 1}",
@@ -84,7 +96,7 @@ def _device(desc, vid, pid, devnum, cls):
         "A: bDeviceSubClass=00",
         f"A: bMaxPacketSize0={int(desc[14:16], 16)}",
         "A: bNumConfigurations=1",
-        "A: bNumInterfaces= 1",
+        f"A: bNumInterfaces= {nifaces}",
         "A: bcdDevice=0100",
         f"A: busnum={BUS}",
         f"H: descriptors={desc}",
@@ -99,30 +111,45 @@ def _device(desc, vid, pid, devnum, cls):
     ])
 
 
-def devnode(addr=DEVNUM):
-    return f"/dev/bus/usb/{BUS:03d}/{addr:03d}"
+def devnode(addr=DEVNUM, bus=BUS):
+    return f"/dev/bus/usb/{bus:03d}/{addr:03d}"
 
 
-def device_file(boards=1):
+def device_file(boards=1, other_bus=False, composite=False):
+    """boards=2: a second feed:beef at address 4 (bus 1), or with
+    other_bus at address 2 of bus 2.  composite: also the feed:cafe
+    composite board at address 5."""
     devs = [_device(FEEDBEEF, "feed", "beef", DEVNUM, "ff"),
             _device(MOUSE, "046d", "c077", DEVNUM + 1, "00")]
     if boards > 1:
-        devs.append(_device(FEEDBEEF, "feed", "beef", DEVNUM + 2, "ff"))
+        if other_bus:
+            devs.append(_device(FEEDBEEF, "feed", "beef", DEVNUM, "ff", bus=2))
+        else:
+            devs.append(_device(FEEDBEEF, "feed", "beef", DEVNUM + 2, "ff"))
+    if composite:
+        devs.append(_device(COMPOSITE, "feed", "cafe", 5, "00", nifaces=3))
     return "\n".join(devs)
 
 
-def _reply(status, data):
-    return (f"USBDEVFS_REAPURBNDELAY 0 3 129 {status} 0 {URB_SIZE} {len(data)} 0 "
+def _reply(status, data, ep=0x81):
+    return (f"USBDEVFS_REAPURBNDELAY 0 3 {ep} {status} 0 {URB_SIZE} {len(data)} 0 "
             f"{data.hex().upper()}")
 
 
-def ioctl_script(stream, fault=None, at=None, addr=DEVNUM):
+ESHUTDOWN, EPROTO = 108, 71
+# fault -> (errno of the failing URB, whether that URB still carries data)
+FAULTS = {"unplug": (ENODEV, False), "stall": (EPIPE, True),
+          "unplug-data": (ENODEV, True), "shutdown": (ESHUTDOWN, True),
+          "proto": (EPROTO, True)}
+
+
+def ioctl_script(stream, fault=None, at=None, addr=DEVNUM, bus=BUS, ep=0x81):
     """(script text, number of bulk IN replies, bytes delivered)."""
-    if fault not in (None, "unplug", "stall"):
+    if fault not in (None, *FAULTS):
         raise ValueError(f"unknown fault {fault!r}")
     if fault and (at is None or not 0 <= at <= len(stream)):
         raise ValueError(f"--at must be within the stream (0..{len(stream)})")
-    lines = [f"@DEV {devnode(addr)} (usbdevfs)", "USBDEVFS_GET_CAPABILITIES 0 0F000000"]
+    lines = [f"@DEV {devnode(addr, bus)} (usbdevfs)", "USBDEVFS_GET_CAPABILITIES 0 0F000000"]
     pos = k = replies = 0
     end = at if fault else len(stream)
     while pos < end:
@@ -131,20 +158,20 @@ def ioctl_script(stream, fault=None, at=None, addr=DEVNUM):
         if fault and pos + n > end:
             break
         n = min(n, end - pos)
-        lines.append(_reply(0, stream[pos:pos + n]))
+        lines.append(_reply(0, stream[pos:pos + n], ep))
         replies += 1
         pos += n
     delivered = pos
-    if fault == "stall":
-        lines.append(_reply(-EPIPE, stream[pos:end]))   # partial data, then STALL
+    if fault:
+        err, with_data = FAULTS[fault]
+        if with_data:                                   # the failing URB carries
+            lines.append(_reply(-err, stream[pos:end], ep))   # the bytes up to `at`
+        else:
+            if pos < end:                               # last whole transfer before
+                lines.append(_reply(0, stream[pos:end], ep))  # the cable is pulled
+                replies += 1
+            lines.append(_reply(-err, b"", ep))
         delivered = end
-        replies += 1
-    elif fault == "unplug":
-        if pos < end:                                  # last whole transfer before
-            lines.append(_reply(0, stream[pos:end]))   # the cable is pulled
-            replies += 1
-            delivered = end
-        lines.append(_reply(-ENODEV, b""))
         replies += 1
     return "\n".join(lines) + "\n", replies, delivered
 
@@ -157,16 +184,20 @@ def main(argv=None):
     d = sub.add_parser("device", help="write the umockdev device description")
     d.add_argument("out")
     d.add_argument("--boards", type=int, choices=[1, 2], default=1)
+    d.add_argument("--other-bus", action="store_true", help="the second board on bus 2")
+    d.add_argument("--composite", action="store_true", help="add the composite board feed:cafe")
     i = sub.add_parser("ioctl", help="write the ioctl script for a stream file")
     i.add_argument("stream")
     i.add_argument("out")
-    i.add_argument("--fault", choices=["unplug", "stall"])
+    i.add_argument("--fault", choices=sorted(FAULTS))
     i.add_argument("--at", type=int, help="stream byte offset of the fault")
     i.add_argument("--addr", type=int, default=DEVNUM, help="device address of the board")
+    i.add_argument("--bus", type=int, default=BUS, help="bus of the board")
+    i.add_argument("--ep", type=lambda t: int(t, 16), default=0x81, help="bulk IN endpoint (hex)")
     a = ap.parse_args(argv)
     if a.cmd == "device":
         with open(a.out, "w") as f:
-            f.write(device_file(a.boards))
+            f.write(device_file(a.boards, a.other_bus, a.composite))
         return 0
     try:
         with open(a.stream, "rb") as f:
@@ -180,7 +211,7 @@ def main(argv=None):
     if a.fault and a.at is None:
         a.at = len(stream) // 2
     try:
-        text, replies, delivered = ioctl_script(stream, a.fault, a.at, a.addr)
+        text, replies, delivered = ioctl_script(stream, a.fault, a.at, a.addr, a.bus, a.ep)
     except ValueError as e:
         print(f"mkioctl: {e}", file=sys.stderr)
         return 2

@@ -67,7 +67,7 @@ def bed(work):
     return path
 
 
-def make_script(stream, work, name, fault=None, at=None, addr=None):
+def make_script(stream, work, name, fault=None, at=None, addr=None, bus=None, ep=None):
     """Run the generator; returns (ioctl path, replies, bytes delivered)."""
     path = work / f"{name}.ioctl"
     cmd = [sys.executable, str(HERE / "mkioctl.py"), "ioctl", str(stream), str(path)]
@@ -75,6 +75,10 @@ def make_script(stream, work, name, fault=None, at=None, addr=None):
         cmd += ["--fault", fault, "--at", str(at)]
     if addr:
         cmd += ["--addr", str(addr)]
+    if bus:
+        cmd += ["--bus", str(bus)]
+    if ep:
+        cmd += ["--ep", ep]
     r = subprocess.run(cmd, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     replies, delivered = map(int, r.stdout.split())
@@ -541,3 +545,108 @@ def test_view_usb_source_screenshot(bed, stream, clean, work):
     want = last.to_image(3).convert("RGB")
     got = Image.open(shot).convert("RGB")
     assert got.size == want.size and ImageChops.difference(got, want).getbbox() is None
+
+
+# ------------------------------------------------------------------ issue 12 item 12
+
+@pytest.fixture(scope="session")
+def bed_composite(work):
+    path = work / "bedc.umockdev"
+    r = subprocess.run([sys.executable, str(HERE / "mkioctl.py"), "device", str(path),
+                        "--composite"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return path
+
+
+def test_composite_board_uses_the_vendor_interface_only(bed_composite, stream, work):
+    """feed:cafe: CDC control (if 0), CDC data with bulk IN 0x81 (if 1),
+    vendor class with bulk IN 0x82 (if 2): 0x82 streams; 0x81 is refused."""
+    data = stream.read_bytes()
+    ioctl, replies, _ = make_script(stream, work, "comp", addr=5, ep="82")
+    node = {mkioctl.devnode(5): ioctl}
+    r = mock(bed_composite, node, [USBCAT, "-n", "500", "usb:feed:cafe:82"])
+    assert r.returncode == 0 and r.stdout == data[:500], r.stderr
+    for spec in ("usb:feed:cafe", "usb:feed:cafe:81"):
+        r = mock(bed_composite, node, [USBCAT, spec])
+        err = r.stderr.decode()
+        assert r.returncode == EX_NODEV and "not a vendor-class interface" in err, err
+        assert "interface 1 of class 0x0a (CDC data)" in err and r.stdout == b""
+        rc, rep = usbread(bed_composite, node, spec, os.devnull)
+        assert rc == EX_NODEV and "not a vendor-class interface" in rep["error"]["message"]
+        r = mock(bed_composite, node, [RAST8, "stats", spec])
+        assert r.returncode == EX_NODEV and b"Traceback" not in r.stderr
+    rc, rep = usbread(bed_composite, node, "usb:feed:cafe:82,idle=0.2", work / "comp.bin",
+                      fault=f"silent={replies}")
+    assert rc == 0 and (work / "comp.bin").read_bytes() == data, rep
+    r = mock(bed_composite, node, [USBCAT, "--list"])
+    lines = r.stdout.decode().splitlines()
+    assert any(l.startswith("usb:feed:cafe:82 ") and "interface 2" in l for l in lines), lines
+    assert not any(l.startswith("usb:feed:cafe:81") for l in lines), lines
+
+
+@pytest.mark.parametrize("fault, code, words", [
+    ("unplug-data", EX_UNPLUGGED, "device unplugged"),
+    ("shutdown", EX_UNPLUGGED, "device unplugged"),
+    ("proto", 1, "USB bus error"),
+])
+def test_failing_transfer_keeps_its_bytes(bed, stream, work, fault, code, words):
+    """The URB that fails (-ENODEV, -ESHUTDOWN, -EPROTO) still carries bytes:
+    every one of them is passed on, and the message says what to try."""
+    data = stream.read_bytes()
+    at = len(data) // 3
+    ioctl, _, delivered = make_script(stream, work, "f-" + fault, fault, at)
+    assert delivered == at
+    r = mock(bed, ioctl, [USBCAT, SPEC])
+    err = r.stderr.decode()
+    assert r.returncode == code and r.stdout == data[:at], err
+    assert words in err and "libusb error" not in err
+    if fault == "proto":
+        assert "cable" in err
+    out = work / f"f-{fault}.bin"
+    rc, rep = usbread(bed, ioctl, SPEC, out)
+    assert rc == code and out.read_bytes() == data[:at], rep
+    assert words in rep["error"]["message"] and "libusb error" not in rep["error"]["message"]
+
+
+def test_rast8_prints_the_usb_warnings(bed2, clean, work):
+    """Two matching boards: rast8 says which one it uses (and how to choose)."""
+    ioctl, replies, _ = clean
+    scripts = {mkioctl.devnode(2): ioctl, mkioctl.devnode(4): ioctl}
+    r = mock(bed2, scripts, [RAST8, "stats", f"{SPEC},idle=0.2", "--json"],
+             fault=f"silent={replies}")
+    err = r.stderr.decode()
+    assert "warning: 2 devices match feed:beef; using bus 1 addr 2" in err, err
+    assert "bus=N,addr=N" in err
+
+
+def test_kernel_driver_detach_failure_is_printed(bed, clean, work):
+    """A driver that cannot be detached: rast8 prints the warning it collects."""
+    ioctl, replies, _ = clean
+    r = mock(bed, ioctl, [RAST8, "stats", f"{SPEC},idle=0.2", "--json"],
+             fault=f"driver,nodetach,silent={replies}")
+    err = r.stderr.decode()
+    assert "cannot detach the kernel driver" in err or "interface busy" in err, err
+
+
+def test_two_boards_on_different_buses(work, stream, clean):
+    """feed:beef on bus 1 and on bus 2: 'first' is bus 1; bus=2 picks the other."""
+    bed = work / "bedbus.umockdev"
+    r = subprocess.run([sys.executable, str(HERE / "mkioctl.py"), "device", str(bed),
+                        "--boards", "2", "--other-bus"], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    data = stream.read_bytes()
+    at = len(data) // 5
+    other, _, _ = make_script(stream, work, "bus2", "stall", at, bus=2)
+    scripts = {mkioctl.devnode(2): clean[0], mkioctl.devnode(2, 2): other}
+    r = mock(bed, scripts, [USBCAT, "--list"])
+    lines = r.stdout.decode().splitlines()
+    assert sorted(l.split("  ")[1][:7] for l in lines) == ["bus 001", "bus 002"], lines
+    r = mock(bed, scripts, [USBCAT, "-n", "300", SPEC])
+    assert r.returncode == 0 and r.stdout == data[:300]
+    assert "2 devices match feed:beef; using bus 1 addr 2" in r.stderr.decode()
+    r = mock(bed, scripts, [USBCAT, "--bus", "2", SPEC])
+    assert r.returncode == EX_STALL and r.stdout == data[:at], r.stderr
+    rc, rep = usbread(bed, scripts, f"{SPEC},bus=2", work / "bus2.bin")
+    assert rc == EX_STALL and (work / "bus2.bin").read_bytes() == data[:at]
+    rc, rep = usbread(bed, scripts, f"{SPEC},timeout=0.3", os.devnull, fault="silent=0")
+    assert "using bus 1 addr 2" in rep["warnings"][0], rep
