@@ -42,6 +42,11 @@ $(BUILD)/obj/scenes/%.o: scenes/%.c scenes/demo.h $(wildcard include/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(STRICT) $(CFLAGS) $(INC) -c $< -o $@
 
+# the scene loader runs this tree's scene converter (host/rast8/scene.py)
+$(BUILD)/obj/scenes/blob.o: scenes/blob.c scenes/blob.h scenes/demo.h $(wildcard include/*.h)
+	@mkdir -p $(dir $@)
+	$(CC) $(STRICT) $(CFLAGS) $(INC) -DR8_HOST_DIR='"$(abspath host)"' -c $< -o $@
+
 $(SCENELIB): $(SCENE_OBJ)
 	rm -f $@
 	ar rcs $@ $^

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "app.h"
+#include "blob.h"
 #include "plat.h"
 #include "plat_host.h"
 
@@ -57,7 +58,7 @@ static void usage(FILE *f)
 "                    firmware had while rendering that frame\n"
 "\n"
 "firmware config:\n"
-"  --scene NAME      scene (default cube):",
+"  --scene NAME|FILE scene: a .r8s, .obj or scene blob file, or (default cube):",
             prog, R8_WIRE_VERSION);
     for (i = 0; i < R8_DEMO_COUNT; i++)
         fprintf(f, " %s", r8_demo_name((r8_u8)i));
@@ -354,7 +355,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         if (budget - extra <= 0 || !run ||
             r8_analyse(&rc, &run->cam, 0, (unsigned)(budget - extra), &a)) {
             fprintf(stderr, "%s: --method auto: nothing fits %ld bytes of RAM for scene %s\n",
-                    prog, budget, r8_demo_name(cfg->scene));
+                    prog, budget, (cfg->demo ? cfg->demo->name : r8_demo_name(cfg->scene)));
             exit(3);
         }
         rc.scene = 0;
@@ -365,7 +366,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
     if (!quiet)
         fprintf(stderr, "%s: analyser: scene %s -> method %s (%s), band %d rows, "
                 "renderer+band %u bytes; depth range z %ld..%ld, camera coordinates "
-                "need %d bits\n", prog, r8_demo_name(cfg->scene),
+                "need %d bits\n", prog, (cfg->demo ? cfg->demo->name : r8_demo_name(cfg->scene)),
                 r8_method_name(a.method), why[a.why < 6 ? a.why : 0], a.band, a.ram,
                 (long)a.znear, (long)a.zfar, a.coord_bits);
 }
@@ -417,9 +418,13 @@ int main(int argc, char **argv)
         case O_BAUD: baud = num("--baud", optarg, 0, 100000000L); break;
         case O_RAM: ram = num("--ram", optarg, 1, 1L << 30); break;
         case O_SCENE:
-            if ((v = r8_demo_by_name(optarg)) < 0)
-                die(2, "--scene: unknown scene '%s' (see --help)", optarg);
-            cfg.scene = (r8_u8)v;
+            if ((v = r8_demo_by_name(optarg)) >= 0) {
+                cfg.scene = (r8_u8)v;
+            } else {
+                char err[200];
+                if (r8_scene_open(optarg, &cfg.demo, err, sizeof err))
+                    die(2, "--scene: %s (a scene name: see --help)", err);
+            }
             break;
         case O_METHOD:
             if ((v = r8_method_by_name(optarg)) < 0)
@@ -476,7 +481,7 @@ int main(int argc, char **argv)
     if (!r8_render_ram(&cfg.render)) {
         fprintf(stderr, "%s: invalid configuration: the renderer does not accept "
                 "scene %s, method %s, %dx%d, format %d, band %d\n", prog,
-                r8_demo_name(cfg.scene), r8_method_name(cfg.render.method),
+                (cfg.demo ? cfg.demo->name : r8_demo_name(cfg.scene)), r8_method_name(cfg.render.method),
                 cfg.render.width, cfg.render.height, cfg.render.format, cfg.render.band);
         return 2;
     }

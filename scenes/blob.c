@@ -1,6 +1,8 @@
 /* blob.c - the scene blob loader (see blob.h). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include "blob.h"
 
 #define MAXM 32
@@ -115,4 +117,47 @@ int r8_blob_load(const char *path, const r8_demo **out, char *err, unsigned errl
     scene.nobjects = (r8_u8)no;
     *out = &scene;
     return 0;
+}
+
+static int ends_with(const char *s, const char *tail)
+{
+    size_t a = strlen(s), b = strlen(tail);
+    return a >= b && !strcmp(s + a - b, tail);
+}
+
+#ifndef R8_HOST_DIR
+#define R8_HOST_DIR "host"
+#endif
+
+int r8_scene_open(const char *name, const r8_demo **out, char *err, unsigned errlen)
+{
+    static char cmd[1200], tmp[64];
+    static unsigned serial;
+    FILE *f;
+    int id = r8_demo_by_name(name), rc;
+    if (id >= 0) {
+        *out = r8_demo_get((r8_u8)id);
+        return *out ? 0 : fail(err, errlen, name, "scene not linked");
+    }
+    f = fopen(name, "rb");
+    if (!f)
+        return fail(err, errlen, name, "no such scene or file");
+    fclose(f);
+    if (!ends_with(name, ".r8s") && !ends_with(name, ".obj") &&
+        !ends_with(name, ".R8S") && !ends_with(name, ".OBJ"))
+        return r8_blob_load(name, out, err, errlen);
+    if (strlen(name) > 900 || strchr(name, '\'') || strchr(name, '"'))
+        return fail(err, errlen, name, "path too long or with quotes");
+    sprintf(tmp, "/tmp/r8scene-%lu-%u.blob", (unsigned long)clock(), serial++);
+    sprintf(cmd, "PYTHONPATH='%s' python3 -m rast8.scene blob '%s' '%s' >/dev/null",
+            R8_HOST_DIR, name, tmp);
+    rc = system(cmd);
+    if (rc != 0) {
+        remove(tmp);
+        /* the converter printed its one line (file:line: what) on stderr */
+        return fail(err, errlen, name, "the scene converter rejected it (see above)");
+    }
+    rc = r8_blob_load(tmp, out, err, errlen);
+    remove(tmp);
+    return rc;
 }

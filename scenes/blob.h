@@ -10,4 +10,10 @@
 /* 0 and *out set, or -1 with a one-line reason in err[errlen]. */
 int r8_blob_load(const char *path, const r8_demo **out, char *err, unsigned errlen);
 
+/* A scene by name: a built-in scene's name, or a file: a blob, or a
+ * .r8s or .obj file (converted to a blob by the scene converter,
+ * `python3 -m rast8.scene blob`, from this source tree's host/).  0 and
+ * *out set, or -1 with a one-line reason in err[errlen]. */
+int r8_scene_open(const char *name, const r8_demo **out, char *err, unsigned errlen);
+
 #endif

@@ -1,8 +1,9 @@
-/* r8dump.c - render frames of a built-in scene on the host and write
- * them as raw framebuffer bytes or as a PGM picture.  A test and tooling
- * helper (golden frames, reference comparisons, stability runs).
+/* r8dump.c - render frames of a built-in scene, or of a scene file
+ * (.r8s, .obj or a scene blob), on the host and write them as raw
+ * framebuffer bytes or as a PGM picture.  A test and tooling helper
+ * (golden frames, reference comparisons, stability runs, previews).
  *
- *   r8dump [--scene S] [--method M] [--shading flat|lambert|gouraud]
+ *   r8dump [--scene S|FILE] [--method M] [--shading flat|lambert|gouraud]
  *          [--cull normal|judd] [--format page1|row1|idx8] [--width W]
  *          [--height H] [--band B] [--frame N] [--count K]
  *          [--pgm FILE | --raw FILE]
@@ -12,6 +13,7 @@
 #include <string.h>
 #include "r8render.h"
 #include "demo.h"
+#include "blob.h"
 
 static unsigned char work[1 << 20];
 static unsigned char frame_buf[1024 * 1024];
@@ -35,7 +37,8 @@ int main(int argc, char **argv)
     r8_render_cfg cfg;
     r8_render r;
     static r8_demo_run run;
-    int scene = R8_DEMO_CUBE;
+    const r8_demo *scene = r8_demo_get(R8_DEMO_CUBE);
+    char err[200];
     r8_fb band, full;
     const char *pgm = 0, *raw = 0;
     int frame = 0, count = 1, i, f;
@@ -45,13 +48,14 @@ int main(int argc, char **argv)
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : "";
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             int k;
-            printf("usage: r8dump [--scene S] [--method M] [--shading flat|lambert|gouraud]\n"
+            printf("usage: r8dump [--scene S|FILE] [--method M] [--shading flat|lambert|gouraud]\n"
                    "  [--cull normal|judd] [--format page1|row1|idx8] [--width W] [--height H]\n"
                    "  [--band B] [--frame N] [--count K] [--pgm FILE | --raw FILE]\n"
-                   "Renders frames of a built-in scene on the host (PGM picture or raw bytes).\n"
+                   "Renders frames of a built-in scene, or of a .r8s/.obj/blob scene file,\n"
+                   "on the host (PGM picture or raw bytes).\n"
                    "scenes:");
-            for (k = 0; k < R8_SCENE_COUNT; k++)
-                printf(" %s", r8_scene_name((r8_u8)k));
+            for (k = 0; k < R8_DEMO_COUNT; k++)
+                printf(" %s", r8_demo_name((r8_u8)k));
             printf("\nmethods: auto (the analyser picks)");
             for (k = 0; k < R8_VIS_COUNT; k++)
                 printf(" %s", r8_method_name((r8_u8)k));
@@ -60,7 +64,7 @@ int main(int argc, char **argv)
         }
         i++;
         if (!strcmp(a, "--scene")) {
-            if ((scene = r8_demo_by_name(v)) < 0) { fprintf(stderr, "r8dump: unknown scene %s\n", v); return 2; }
+            if (r8_scene_open(v, &scene, err, sizeof err)) { fprintf(stderr, "r8dump: %s\n", err); return 2; }
         } else if (!strcmp(a, "--method")) {
             if (r8_method_by_name(v) < 0) { fprintf(stderr, "r8dump: unknown method %s\n", v); return 2; }
             cfg.method = (r8_u8)r8_method_by_name(v);
@@ -76,18 +80,18 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--raw")) raw = v;
         else { fprintf(stderr, "r8dump: unknown option %s\n", a); return 2; }
     }
+    r8_demo_setup(&run, scene, cfg.width);
+    cfg.scene = &run.scene;
     if (cfg.method == R8_VIS_AUTO) {
         r8_analysis an;
         r8_s16 band = cfg.band;
-        if (r8_analyse(&cfg, 16384u, &an)) {
+        if (r8_analyse(&cfg, &run.cam, 0, 16384u, &an)) {
             fprintf(stderr, "r8dump: --method auto: nothing fits 16 KB for this scene\n");
             return 2;
         }
         cfg.band = band; /* the picture does not depend on the band */
         fprintf(stderr, "r8dump: analyser: method %s\n", r8_method_name(cfg.method));
     }
-    r8_demo_setup(&run, r8_demo_get((r8_u8)scene), cfg.width);
-    cfg.scene = &run.scene;
     need = r8_render_ram(&cfg);
     if (!need || r8_render_init(&r, &cfg, work, sizeof work)) {
         fprintf(stderr, "r8dump: invalid configuration\n");

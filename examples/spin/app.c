@@ -20,6 +20,7 @@ static const r8_u8 grey17[17 * 3] = {
 void app_defaults(app_cfg *cfg)
 {
     cfg->scene = R8_DEMO_CUBE;
+    cfg->demo = 0;
     r8_render_defaults(&cfg->render);
     cfg->frames = 64;
     cfg->first_frame = 0;
@@ -52,7 +53,8 @@ static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
 
 r8_demo_run *app_demo(const app_cfg *cfg)
 {
-    if (r8_demo_setup(&run, r8_demo_get(cfg->scene), cfg->render.width))
+    if (r8_demo_setup(&run, cfg->demo ? cfg->demo : r8_demo_get(cfg->scene),
+                      cfg->render.width))
         return 0;
     return &run;
 }

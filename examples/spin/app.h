@@ -34,6 +34,7 @@
 
 typedef struct app_cfg {
     r8_u8 scene;            /* R8_DEMO_*: the built-in scene to spin */
+    const r8_demo *demo;    /* or this one (0: the built-in `scene`) */
     r8_render_cfg render;   /* method, shading, format, size, band (the app
                                sets render.scene to its demo's scene) */
     r8_u16 frames;          /* frames to send; 0 = forever */
