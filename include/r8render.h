@@ -13,15 +13,16 @@
  * r8_fb.  The renderer computes nothing from time: poses and camera are
  * the application's.
  *
- * Leaving parts out: a firmware that does not use a visibility method can
- * leave it out at compile time with -DR8_NO_PAINTER, -DR8_NO_ZBUF (8 and
- * 16-bit), -DR8_NO_BLOCK (both block methods), -DR8_NO_SBUF, and the
- * shadings with -DR8_NO_GOURAUD; r8_render_init then rejects them.
+ * Leaving parts out: a firmware that does not use a visibility method,
+ * Gouraud shading, the clipper or run-time normals can leave them out at
+ * compile time (r8config.h lists the switches); r8_render_init then
+ * rejects a configuration that needs them.
  */
 #ifndef R8RENDER_H
 #define R8RENDER_H
 
 #include "r8types.h"
+#include "r8config.h"
 #include "r8fb.h"
 #include "r8scene.h"
 

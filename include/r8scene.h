@@ -16,6 +16,7 @@
 
 #include "r8types.h"
 #include "r8fixed.h"
+#include "r8flash.h"
 
 #define R8_MAX_FACE_VERTS 4
 

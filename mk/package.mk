@@ -61,6 +61,7 @@ $(ARDUINO_ZIP): $(ARDUINO_DEPS)
 	@rm -rf $(ARDUINO_DIR)/rast8 $@ && mkdir -p $(ARDUINO_DIR)/rast8/src
 	@cp library.properties LICENSE README.md $(ARDUINO_DIR)/rast8/
 	@cp $(LIB_SRC) $(wildcard src/*.h) $(PUB_HDR) $(ARDUINO_DIR)/rast8/src/
+	@sed -i 's/^#define R8CONFIG_H$$/&\n#define R8_ARDUINO_PRESET/' $(ARDUINO_DIR)/rast8/src/r8config.h
 	@set -e; $(foreach s,$(ARDUINO_SKETCHES),d=$(ARDUINO_DIR)/rast8/examples/$(s); mkdir -p $$d; \
 	  cp examples/$(s)/*.ino $(ARDUINO_FILES_$(s)) $$d/; \
 	  $(if $(ARDUINO_SCENE_$(s)),python3 ports/scene_strip.py $(ARDUINO_SCENE_$(s)) --inline > $$d/scene.c;))

@@ -150,7 +150,7 @@ XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))
 
 $(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): tests/targets/fw_sizes.c ports/fw_trim.c $(XB)/$(1)/obj/scene_%.$(OBJ_$(1)) $$(XDEPS_$(1))
 	@mkdir -p $$(dir $$@)
-	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$*.$(OBJ_$(1)) -- $(FW_DEFS) -DFW_SCENE=$$* -Isrc -DFW_TRIM_LZ77 -DFW_TRIM_SBUF
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$*.$(OBJ_$(1)) -- $(FW_DEFS) -DFW_SCENE=$$* -Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_PLAN_ONLY
 
 $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) ports/fwdefs.sh
 	@mkdir -p $$(dir $$@)

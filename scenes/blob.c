@@ -141,7 +141,7 @@ int r8_scene_open(const char *name, const r8_demo **out, char *err, unsigned err
     }
     f = fopen(name, "rb");
     if (!f)
-        return fail(err, errlen, name, "no such scene or file");
+        return fail(err, errlen, name, "unknown scene and no such file");
     fclose(f);
     if (!ends_with(name, ".r8s") && !ends_with(name, ".obj") &&
         !ends_with(name, ".R8S") && !ends_with(name, ".OBJ"))

@@ -11,13 +11,8 @@
 
 #define NO_SRC 0xFFFFu
 
-typedef struct clipv {
-    r8_s32 x, y, z;     /* camera space, << R8_CFRAC >> the polygon's shift */
-    r8_s16 s;           /* Gouraud shade */
-    r8_u16 src;         /* screen vertex it came from, or NO_SRC */
-} clipv;
 
-static r8_s32 plane_dist(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv *v)
+static r8_s32 plane_dist(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const r8_clipv *v)
 {
     r8_s32 gz = v->z * cam->guard;
     switch (plane) {
@@ -35,19 +30,19 @@ static r8_s32 plane_dist(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv
 }
 
 /* One Sutherland-Hodgman pass; returns the output vertex count. */
-static r8_u8 clip_pass(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv *in,
-                       r8_u8 n, clipv *out)
+static r8_u8 clip_pass(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const r8_clipv *in,
+                       r8_u8 n, r8_clipv *out)
 {
     r8_u8 i, m = 0;
     for (i = 0; i < n; i++) {
-        const clipv *a = &in[i], *b = &in[i + 1 == n ? 0 : i + 1];
+        const r8_clipv *a = &in[i], *b = &in[i + 1 == n ? 0 : i + 1];
         r8_s32 da = plane_dist(cam, zn, plane, a), db = plane_dist(cam, zn, plane, b);
         if (da >= 0)
             out[m++] = *a;
         if ((da >= 0) != (db >= 0)) {
             /* intersection a + (b - a) * da / (da - db) */
             r8_s32 den = da - db;
-            clipv *c = &out[m++];
+            r8_clipv *c = &out[m++];
             c->x = a->x + r8_muldiv(b->x - a->x, da, den);
             c->y = a->y + r8_muldiv(b->y - a->y, da, den);
             c->z = a->z + r8_muldiv(b->z - a->z, da, den);
@@ -60,11 +55,6 @@ static r8_u8 clip_pass(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const clipv *
     return m;
 }
 
-unsigned r8_clip_bytes(void)
-{
-    return 2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(clipv);
-}
-
 static r8_s32 absmax(r8_s32 m, r8_s32 v)
 {
     if (v < 0)
@@ -75,8 +65,8 @@ static r8_s32 absmax(r8_s32 m, r8_s32 v)
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
                  const r8_u8 *vi, r8_u8 n, r8_cpoly *cp)
 {
-    clipv *a = (clipv *)st->clipbuf, *b = a + R8_MAX_CLIP_POLY;  /* work memory, not stack */
-    clipv *in = a, *out = b, *t;
+    r8_clipv *a = (r8_clipv *)st->clipbuf, *b = a + R8_MAX_CLIP_POLY;  /* work memory, not stack */
+    r8_clipv *in = a, *out = b, *t;
     r8_u8 i, plane, sh = 0;
     r8_s32 big = 0, zn = st->zn16;
     const r8_mesh *me = ob->mesh;

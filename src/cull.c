@@ -67,28 +67,24 @@ static void normal_of(const r8_objx *o, r8_u16 f, r8_vec3 *n)
     }
 }
 
-/* Front iff n . (eye - v0) > 0 in model space (eye in 1/16 units).
- * eye - v0 is scaled down by a power of two to 15 bits so the dot
- * product fits 32 bits. */
-int r8_cull_front(const r8_objx *o, const r8_mesh *me, r8_u16 f)
+/* Front iff n . (eye - v0) > 0 in model space (eye in 1/16 units), v0
+ * the face's first vertex (flash).  eye - v0 fits 16 bits for anything
+ * nearer than 2048 units; beyond, it is scaled down by a power of two so
+ * the dot product fits 32 bits. */
+int r8_cull_front(const r8_objx *o, const r8_s16 *v0, r8_u16 f)
 {
-    const r8_face *fc = &me->faces[f];
-    const r8_s16 *a = me->verts + R8_RDU8(&fc->v[0]) * 3;
-    r8_s32 dx = o->eye.x - (r8_s32)R8_RDS16(a) * R8_CSCALE;
-    r8_s32 dy = o->eye.y - (r8_s32)R8_RDS16(a + 1) * R8_CSCALE;
-    r8_s32 dz = o->eye.z - (r8_s32)R8_RDS16(a + 2) * R8_CSCALE;
-    r8_vec3 d, n;
-    while (dx > 32767 || dx < -32767 || dy > 32767 || dy < -32767 ||
-           dz > 32767 || dz < -32767) {
-        dx = r8_asr32(dx, 1);
-        dy = r8_asr32(dy, 1);
-        dz = r8_asr32(dz, 1);
-    }
-    d.x = (r8_s16)dx;
-    d.y = (r8_s16)dy;
-    d.z = (r8_s16)dz;
+    r8_s32 dx = o->eye.x - (r8_s32)R8_RDS16(v0) * R8_CSCALE;
+    r8_s32 dy = o->eye.y - (r8_s32)R8_RDS16(v0 + 1) * R8_CSCALE;
+    r8_s32 dz = o->eye.z - (r8_s32)R8_RDS16(v0 + 2) * R8_CSCALE;
+    r8_vec3 n;
     normal_of(o, f, &n);
-    return r8_dot3(&n, &d) > 0;
+    while ((r8_u32)(dx + 32767) > 65534UL || (r8_u32)(dy + 32767) > 65534UL ||
+           (r8_u32)(dz + 32767) > 65534UL) {
+        dx = R8_ASR32C(dx, 1);
+        dy = R8_ASR32C(dy, 1);
+        dz = R8_ASR32C(dz, 1);
+    }
+    return R8_MUL16(n.x, dx) + R8_MUL16(n.y, dy) + R8_MUL16(n.z, dz) > 0;
 }
 
 /* Dither level 0..16 of face f of object ob: its colour (or the pose's),

@@ -1,5 +1,6 @@
 /* fb.c - framebuffer bands: clear, pixel, span fill, dithered spans.
  * Layouts are described in r8fb.h. */
+#include <string.h>
 #include "r8fb.h"
 #include "r8flash.h"
 
@@ -52,12 +53,10 @@ static r8_s16 band_rows(const r8_fb *fb)
 
 void r8_fb_clear(r8_fb *fb, r8_u8 c)
 {
-    r8_u8 *p = fb->buf, *end = p + r8_fb_bytes(fb->format, fb->width, fb->rows);
     r8_u8 v = c;
     if (fb->format != R8_FMT_IDX8)
         v = (r8_u8)(c ? 0xFF : 0x00);
-    while (p < end)
-        *p++ = v;
+    memset(fb->buf, v, r8_fb_bytes(fb->format, fb->width, fb->rows));
 }
 
 void r8_fb_pixel(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 c)

@@ -44,6 +44,16 @@ typedef struct r8_objx {
     r8_u16 fbase;       /* first face id of this object */
 } r8_objx;
 
+/* A vertex in the clipper (clip.c): camera space, << R8_CFRAC >> the
+ * polygon's shift; Gouraud shade; the screen vertex it came from or
+ * 0xFFFF.  The clipper works on two polygons of these. */
+typedef struct r8_clipv {
+    r8_s32 x, y, z;
+    r8_s16 s;
+    r8_u16 src;
+} r8_clipv;
+#define R8_CLIP_BYTES (2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(r8_clipv))
+
 /* A polygon made by the clipper: its vertices (some appended to the
  * vertex array) and its shade level. */
 typedef struct r8_cpoly {
@@ -139,10 +149,9 @@ r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light, r
 void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g);
 /* cull.c */
 void r8_cull_normals(const r8_mesh *me, r8_s16 *out);
-int r8_cull_front(const r8_objx *o, const r8_mesh *me, r8_u16 f);
+int r8_cull_front(const r8_objx *o, const r8_s16 *v0, r8_u16 f);
 r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f);
 /* clip.c */
-unsigned r8_clip_bytes(void);
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
                  const r8_u8 *vi, r8_u8 n, r8_cpoly *cp);
 /* vis_zbuf.c, vis_sbuf.c: draw one span of a face at `level` */

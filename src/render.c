@@ -22,6 +22,7 @@
  * link) and with the scan states kept (cfg.pool), not with the faces on
  * screen. */
 #include <stddef.h>
+#include <string.h>
 #include "r8int.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
@@ -87,26 +88,13 @@ void r8_camera_defaults(r8_camera *c, r8_s16 width)
     c->zfar = 4096;
 }
 
-r8_s16 r8_camera_fov(r8_s16 width, r8_u8 fov)
-{
-    /* (width / 2) / tan(fov / 2) */
-    r8_u8 h = (r8_u8)(fov >> 1);
-    r8_s16 s = r8_sin(h), c = r8_cos(h);
-    r8_s32 f;
-    if (s < 1)
-        s = 1;
-    f = r8_divround(r8_mul16(width, c) / 2, s);
-    if (f < 1)
-        f = 1;
-    if (f > 2047)
-        f = 2047;
-    return (r8_s16)f;
-}
-
 /* ---- which methods this build carries ---- */
 
 static int method_built(r8_u8 m)
 {
+#ifdef R8_PLAN_ONLY
+    return m < R8_VIS_COUNT;   /* sizing only: every method is planned */
+#endif
     switch (m) {
     case R8_VIS_CULL:
         return 1;
@@ -286,7 +274,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     frame_t = 0;
 #ifndef R8_NO_CLIP
     if (cfg->clip)
-        frame_t = align_up(r8_clip_bytes());
+        frame_t = align_up(R8_CLIP_BYTES);
 #endif
     if (cfg->method == R8_VIS_PAINTER) {
         /* depth buckets: only while the frame is set up */
@@ -313,6 +301,24 @@ unsigned r8_render_ram(const r8_render_cfg *cfg)
         return 0;
     make_plan(cfg, &pl);
     return pl.total;
+}
+
+#ifndef R8_PLAN_ONLY   /* a sizing build (R8_PLAN_ONLY) stops here */
+
+r8_s16 r8_camera_fov(r8_s16 width, r8_u8 fov)
+{
+    /* (width / 2) / tan(fov / 2) */
+    r8_u8 h = (r8_u8)(fov >> 1);
+    r8_s16 s = r8_sin(h), c = r8_cos(h);
+    r8_s32 f;
+    if (s < 1)
+        s = 1;
+    f = r8_divround(r8_mul16(width, c) / 2, s);
+    if (f < 1)
+        f = 1;
+    if (f > 2047)
+        f = 2047;
+    return (r8_s16)f;
 }
 
 #ifndef R8_NO_GOURAUD
@@ -564,7 +570,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             r8_u16 key;
             if (n < 3 || n > R8_MAX_FACE_VERTS)
                 continue;
-            if (r->cfg.cull == R8_CULL_NORMAL && !r8_cull_front(o, me, f))
+            vi[0] = R8_RDU8(&fc->v[0]);
+            if (r->cfg.cull == R8_CULL_NORMAL &&
+                !r8_cull_front(o, me->verts + 3u * vi[0], f))
                 continue;
             for (j = 0; j < n; j++) {
                 vi[j] = R8_RDU8(&fc->v[j]);
@@ -766,13 +774,10 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
-    {
-        r8_u8 *z = st->depth, *ze = z + st->depth_bytes;
-        while (z < ze)
-            *z++ = 0;
+    if (st->depth_bytes) {
+        memset(st->depth, 0, st->depth_bytes);
         if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
-            for (z = st->depth + st->depth_bytes / 2u; z < ze; z++)
-                *z = 0xFF;
+            memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
     }
     if (st->method == R8_VIS_SBUF) {
         /* the row lists share memory with the frame set-up: start empty */
@@ -814,3 +819,5 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         r8_vis_sbuf_flush(st, fb);
 #endif
 }
+
+#endif /* R8_PLAN_ONLY */

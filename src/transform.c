@@ -33,29 +33,34 @@ static void rot_offset(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int tra
     }
 }
 
+/* World -> camera rotation of cam into c; 0 when it is the identity. */
+static int cam_rotation(const r8_camera *cam, r8_mat3 *c)
+{
+    r8_mat3 ry, t;
+    if ((cam->flags & R8_CAM_MATRIX) && cam->m) {
+        *c = *cam->m;
+        return 1;
+    }
+    if (!cam->yaw && !cam->pitch && !cam->roll)
+        return 0;
+    /* camera -> world is Ry(yaw) Rx(pitch) Rz(roll); c its transpose */
+    r8_mat_rotate(&ry, 0, cam->yaw, 0);
+    r8_mat_rotate(c, cam->pitch, 0, cam->roll);      /* Rx Rz */
+    r8_mat_mul(&ry, c, &t);
+    r8_mat_transpose(&t, c);
+    return 1;
+}
+
 void r8_tf_frame(r8_state *st, const r8_camera *cam)
 {
     const r8_scene *sc = st->scene;
-    r8_mat3 c, r, t;
+    r8_mat3 c, r;
     r8_s32 zn, zf;
     r8_u8 i;
+    int turned;
     r8_proj_init(&st->cam, st->width, st->height, cam->focal,
                  (r8_s32)cam->znear * R8_CSCALE);
-    /* world -> camera */
-    if ((cam->flags & R8_CAM_MATRIX) && cam->m) {
-        c = *cam->m;
-    } else {
-        /* camera -> world is Ry(yaw) Rx(pitch) Rz(roll) */
-        {
-            r8_mat3 ry, rx, rz, a;
-            r8_mat_rotate(&ry, 0, cam->yaw, 0);
-            r8_mat_rotate(&rx, cam->pitch, 0, 0);
-            r8_mat_rotate(&rz, 0, 0, cam->roll);
-            r8_mat_mul(&rx, &rz, &a);
-            r8_mat_mul(&ry, &a, &t);
-        }
-        r8_mat_transpose(&t, &c);
-    }
+    turned = cam_rotation(cam, &c);
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];
         r8_objx *o = &st->obj[i];
@@ -65,24 +70,34 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
             r = *ob->pose.m;
         else
             r8_mat_rotate(&r, ob->pose.ax, ob->pose.ay, ob->pose.az);
-        r8_mat_mul(&c, &r, &o->m);
         d[0] = (r8_s32)ob->pose.x - cam->x;
         d[1] = (r8_s32)ob->pose.y - cam->y;
         d[2] = (r8_s32)ob->pose.z - cam->z;
-        rot_offset(&c, d, &o->t, 0);
+        if (turned) {
+            r8_mat_mul(&c, &r, &o->m);
+            rot_offset(&c, d, &o->t, 0);
+        } else {
+            o->m = r;
+            o->t.x = d[0] * R8_CSCALE;
+            o->t.y = d[1] * R8_CSCALE;
+            o->t.z = d[2] * R8_CSCALE;
+        }
         d[0] = -d[0];
         d[1] = -d[1];
         d[2] = -d[2];
         rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
-        r8_mat_apply_t14(&r, &sc->light, &o->light);
+        if (st->shading != R8_SHADE_FLAT)
+            r8_mat_apply_t14(&r, &sc->light, &o->light);
     }
-    /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
     zn = (r8_s32)cam->znear * R8_CSCALE;
     zf = (r8_s32)cam->zfar * R8_CSCALE;
     if (zf < zn + (zn >> 3) + 16)
         zf = zn + (zn >> 3) + 16;      /* keeps 1 - zn/zf >= 1/9 */
     st->zn16 = zn;
     st->zf16 = zf;
+    if (!(st->attrs & R8_ATTR_D) && !st->vkey)
+        return;                        /* no vertex depth this frame */
+    /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
     st->zne = 0;
     while (zn >= 0x8000L) {
         zn >>= 1;

@@ -4,10 +4,12 @@
 #include "app.h"
 #include "plat.h"
 
+static r8_demo_run run;
+#ifndef R8_PLAN_ONLY
 static r8_tx tx;
 static r8_render ren;
 static r8_fb band_fb;
-static r8_demo_run run;
+#endif
 
 /* Default IDX8 palette: 17 grey levels for shade indices 0..16. */
 static const r8_u8 grey17[17 * 3] = {
@@ -92,6 +94,7 @@ unsigned app_ram(const app_cfg *cfg)
     return app_plan(cfg, &lay) ? 0u : lay.total;
 }
 
+#ifndef R8_PLAN_ONLY   /* a sizing build (tests/targets/fw_sizes.c) stops here */
 static void put(void *ctx, const r8_u8 *p, unsigned n)
 {
     (void)ctx;
@@ -159,3 +162,4 @@ r8_u32 app_bytes_out(void)
 {
     return tx.bytes;
 }
+#endif

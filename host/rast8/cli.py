@@ -274,10 +274,8 @@ def cmd_scene(args):
             print("%d objects" % len(sc.objects))
         elif args.scene_cmd == "c":
             scenes = [load(p) for p in args.scenes] or [S.builtin(n) for n in S.BUILTIN_ORDER]
-            text = S.to_c(scenes)
-            with open(args.out, "w", encoding="utf-8") as f:
-                f.write(text)
-            print("wrote %s: %d scenes" % (args.out, len(scenes)))
+            paths = S.to_c(scenes, args.out)
+            print("wrote %s: %d scenes in %d file(s)" % (args.out, len(scenes), len(paths)))
         elif args.scene_cmd == "blob":
             data = S.to_blob(load(args.scene))
             with open(args.out, "wb") as f:
@@ -400,7 +398,7 @@ def build_parser():
     x = ss.add_parser("check", help="parse a scene and report its meshes")
     x.add_argument("scene", metavar="SCENE", help="built-in name, .r8s or .obj file")
     x = ss.add_parser("c", help="C arrays for firmware (default: every built-in scene)")
-    x.add_argument("out", metavar="OUT.c", help="the C file to write")
+    x.add_argument("out", metavar="OUT", help="a .c file to write, or a directory for one file per scene")
     x.add_argument("scenes", metavar="SCENE", nargs="*", help="built-in names or files")
     x = ss.add_parser("blob", help="the binary scene blob (docs/scene-format.md)")
     x.add_argument("scene", metavar="SCENE", help="built-in name, .r8s or .obj file")

@@ -597,11 +597,17 @@ def to_c_scene(sc):
     return "\n".join(out) + "\n"
 
 
-def to_c(scenes, outdir):
-    """Write scenes/<name>.c for each scene into outdir."""
+def to_c(scenes, out):
+    """Write the scenes as C: one file per scene (<name>.c) into the
+    directory `out`, or all of them into one file when `out` ends in .c.
+    Returns the paths written."""
+    if out.endswith(".c"):
+        with open(out, "w", encoding="utf-8") as f:
+            f.write("\n".join(to_c_scene(sc) for sc in scenes))
+        return [out]
     names = []
     for sc in scenes:
-        path = os.path.join(outdir, _cname(sc.name) + ".c")
+        path = os.path.join(out, _cname(sc.name) + ".c")
         with open(path, "w", encoding="utf-8") as f:
             f.write(to_c_scene(sc))
         names.append(path)
@@ -654,7 +660,7 @@ def main(argv=None):
         if cmd == "c" and args:
             scenes = [load_any(p) for p in args[1:]] or [builtin(n) for n in BUILTIN_ORDER]
             paths = to_c(scenes, args[0])
-            print(f"wrote {len(paths)} scene files to {args[0]}: "
+            print(f"wrote {args[0]}: {len(scenes)} scenes in {len(paths)} file(s), "
                   f"{sum(len(m.faces) for s in scenes for m in s.meshes.values())} faces")
         elif cmd == "blob" and len(args) == 2:
             data = to_blob(load_any(args[0]))

@@ -160,5 +160,5 @@ def test_scene_subcommand(tmp_path):
     r = _run(["scene", "blob", "cube", str(tmp_path / "c.bin")])
     assert r.returncode == 0 and (tmp_path / "c.bin").read_bytes()[:4] == b"R8SC"
     r = _run(["scene", "c", str(tmp_path / "s.c"), "cube"])
-    assert r.returncode == 0 and "r8_scene_get" in (tmp_path / "s.c").read_text()
+    assert r.returncode == 0 and "r8_demo_cube" in (tmp_path / "s.c").read_text()
     _one_line_error(_run(["scene", "check", "nosuch"]), "not a built-in scene")

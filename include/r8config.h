@@ -1,0 +1,33 @@
+/* r8config.h - what this build of the library carries.  Leave parts out
+ * to save flash (docs/benchmarks.md lists what each costs): define the
+ * switches here, or on the compiler's command line (-DR8_NO_SBUF ...).
+ * A configuration that asks for a part left out is refused by
+ * r8_render_init / r8_render_ram (they return -1 / 0).
+ *
+ *   R8_NO_PAINTER     painter's algorithm
+ *   R8_NO_ZBUF        8- and 16-bit z-buffers
+ *   R8_NO_BLOCK       4x4-block z-buffers (both)
+ *   R8_NO_SBUF        S-buffer
+ *   R8_NO_GOURAUD     Gouraud shading
+ *   R8_NO_CLIP        the clipper: faces crossing the near plane or the
+ *                     guard band are dropped (and counted) instead
+ *   R8_NO_RT_NORMALS  meshes must carry their face normals (the scene
+ *                     converter writes them); none are computed
+ *   R8_SMALL_SCENE    8-bit face ids: at most 254 faces and clipped
+ *                     polygons per scene, 1 byte per face less RAM
+ *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
+ */
+#ifndef R8CONFIG_H
+#define R8CONFIG_H
+
+#ifdef R8_ARDUINO_PRESET
+/* the Arduino library zip (make arduino): on an ATmega328P (32 KB of
+ * flash, 2 KB of RAM: no room for a z-buffer band anyway) cull and
+ * painter's with flat and Lambert shading; edit here for more */
+#define R8_NO_ZBUF
+#define R8_NO_BLOCK
+#define R8_NO_SBUF
+#define R8_NO_GOURAUD
+#endif
+
+#endif
