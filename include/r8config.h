@@ -16,6 +16,7 @@
  *   R8_SMALL_SCENE    8-bit face ids: at most 254 faces and clipped
  *                     polygons per scene, 1 byte per face less RAM
  *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
+ *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H

@@ -38,7 +38,7 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC)
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Oirs $(INC) $(XINC)
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 MCU_avr328  := atmega328p

@@ -33,5 +33,6 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
  * not use): the archive's render.o is then not linked, nor are the
  * visibility methods, clipper or run-time normals it would pull in. */
 #include "render.c"
+#include "scan.c"
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

@@ -12,7 +12,7 @@
 IFS=- read -r s m f <<< "$1"
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$2")
 case "$ram" in ''|0) ram=1 ;; esac
-trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP"
+trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY"
 [ "$m" != 1 ] && trim="$trim -DR8_NO_PAINTER"
 [ "$m" != 2 ] && [ "$m" != 3 ] && trim="$trim -DR8_NO_ZBUF"
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"

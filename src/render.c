@@ -151,6 +151,10 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if (cfg->shading == R8_SHADE_GOURAUD)
         return 0;
 #endif
+#ifdef R8_PAGE1_ONLY
+    if (cfg->format != R8_FMT_PAGE1)
+        return 0;
+#endif
 #ifdef R8_NO_RT_NORMALS
     for (i = 0; i < sc->nobjects; i++)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
