@@ -116,6 +116,7 @@ typedef struct r8_state {
     r8_fid first;       /* painter's: the draw list; else the faces that
                            go on from the band above */
     r8_u8 *slot;        /* pool slot per face id (0 when there is no pool) */
+    r8_u8 *ftop;        /* painter's with a pool: first band per face id */
     r8_u8 *pool;        /* pool entries (r8_actx or r8_act) */
     r8_u8 *tmp;         /* one entry for faces without a slot */
     unsigned esize;     /* bytes per entry */

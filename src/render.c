@@ -131,7 +131,7 @@ static unsigned align_up(unsigned n)
 }
 
 typedef struct plan {
-    unsigned obj, sv, vkey, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
+    unsigned obj, sv, vkey, ftop, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
         pool, tmp, depth, snode, shead, total;
     r8_u16 nverts, nfaces, nbands, nheads, sv_cap;
     unsigned esize;
@@ -267,6 +267,9 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
         o += align_up(sizeof(r8_fid) * pl->nbands);
     pl->slot = o;
     if (pl->npool)
+        o += align_up(nid);
+    pl->ftop = o;         /* painter's with a pool: each face's first band */
+    if (pl->npool && cfg->method == R8_VIS_PAINTER)
         o += align_up(nid);
     pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
     /* One region for memory that is never live at the same time: the
@@ -411,6 +414,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
     st->next = (r8_fid *)(void *)(base + pl.next);
     st->slot = pl.npool ? base + pl.slot : 0;
+    st->ftop = pl.npool && cfg->method == R8_VIS_PAINTER ? base + pl.ftop : 0;
     st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
     st->nclip = cfg->clip;
     st->heads = (r8_fid *)(void *)(base + pl.heads);
@@ -526,14 +530,14 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
 /* ceil(65536 / n), n = 3..9: the mean of n depth keys by a product */
 static const r8_u16 recip_n[7] R8_FLASH = { 21846, 16384, 13108, 10923, 9363, 8192, 7282 };
 
-/* Painter's key of polygon idx[0..n): the mean of its vertices' depth
+/* Painter's key of polygon vp[0..n): the mean of its vertices' depth
  * (affine in 1/z, 8 bits) over 4, 0 = far .. 63 = near. */
-static r8_u8 depth_key(const r8_state *st, const r8_u16 *idx, r8_u8 n)
+static r8_u8 depth_key(const r8_state *st, const r8_s16 *const *vp, r8_u8 n)
 {
     r8_u16 sum = 0;
     r8_u8 i;
     for (i = 0; i < n; i++)
-        sum = (r8_u16)(sum + st->vkey[idx[i]]);
+        sum = (r8_u16)(sum + st->vkey[(unsigned)(vp[i] - st->sv) >> st->vsh]);
     return (r8_u8)(((r8_u32)sum * R8_RDU16(&recip_n[n - 3]) >> 16) >> 2);
 }
 
@@ -560,14 +564,14 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
         const r8_object *ob = &sc->objects[i];
         const r8_mesh *me = ob->mesh;
         const r8_objx *o = &st->obj[i];
+        const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
+        r8_u8 vsh = st->vsh, normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
         r8_u16 f;
         if (o->hidden)
             continue;
         for (f = me->nfaces; f-- > 0;) {
             const r8_face *fc = &me->faces[f];
             r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
-            r8_u16 gi[R8_MAX_FACE_VERTS];
-            const r8_u16 *list = gi;
             const r8_s16 *vp[R8_SCAN_MAXV];
             r8_s16 top, bot;
             r8_fid id;
@@ -575,13 +579,14 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             if (n < 3 || n > R8_MAX_FACE_VERTS)
                 continue;
             vi[0] = R8_RDU8(&fc->v[0]);
-            if (r->cfg.cull == R8_CULL_NORMAL &&
-                !r8_cull_front(o, me->verts + 3u * vi[0], f))
+            if (normal && !r8_cull_front(o, me->verts + 3u * vi[0], f))
                 continue;
+            /* vertex pointers; a marked vertex sends the face to the clipper */
             for (j = 0; j < n; j++) {
-                vi[j] = R8_RDU8(&fc->v[j]);
-                gi[j] = (r8_u16)(o->vbase + vi[j]);
-                if (st->sv[(unsigned)gi[j] << st->vsh] == R8_VX_CLIP)
+                if (j)
+                    vi[j] = R8_RDU8(&fc->v[j]);
+                vp[j] = base + ((unsigned)vi[j] << vsh);
+                if (vp[j][0] == R8_VX_CLIP)
                     clip = 1;
             }
             if (clip) {
@@ -597,20 +602,23 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
                 cp = &st->cpoly[st->nclipped];
                 if (!r8_clip_face(st, o, ob, f, vi, n, cp))
                     continue;
-                list = cp->idx;
                 n = cp->n;
+                face_vp(st, cp->idx, n, vp);
                 id = (r8_fid)(st->nfaces + st->nclipped);
 #endif
             } else {
                 id = (r8_fid)(o->fbase + f);
             }
-            face_vp(st, list, n, vp);
             if (!face_rows(st, vp, n, &top, &bot))
                 continue;
             if (clip)
                 st->nclipped++;
             if (painter) {
-                key = depth_key(st, list, n);
+                key = depth_key(st, vp, n);
+                if (st->ftop) {
+                    r8_u16 b = band_of(st, top, r->cfg.band);
+                    st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
+                }
             } else {
                 key = band_of(st, top, r->cfg.band);
             }
@@ -642,32 +650,41 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 
 /* ---- per band ---- */
 
-/* The vertex pointers and level of face id g into vp / *level;
- * returns n. */
-static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *level)
+/* The vertex pointers of face id g into vp; returns n (and the object
+ * it belongs to in *oi, 255 for a clipped polygon). */
+static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *oi)
 {
     const r8_scene *sc = st->scene;
     r8_u8 i = 0, n, j;
     if (g >= st->nfaces) {
         const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
         face_vp(st, cp->idx, cp->n, vp);
-        *level = cp->level;
+        *oi = 255;
         return cp->n;
     }
     while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
         i++;
     {
         const r8_objx *o = &st->obj[i];
-        const r8_object *ob = &sc->objects[i];
-        r8_u16 f = (r8_u16)(g - o->fbase);
-        const r8_face *fc = &ob->mesh->faces[f];
+        const r8_face *fc = &sc->objects[i].mesh->faces[g - o->fbase];
         const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
+        r8_u8 vsh = st->vsh;
         n = R8_RDU8(&fc->n);
         for (j = 0; j < n; j++)
-            vp[j] = base + ((unsigned)R8_RDU8(&fc->v[j]) << st->vsh);
-        *level = r8_face_level(st, o, ob, f);
+            vp[j] = base + ((unsigned)R8_RDU8(&fc->v[j]) << vsh);
     }
+    *oi = i;
     return n;
+}
+
+/* The dither level of face id g of object oi (face_setup). */
+static r8_u8 face_level(const r8_state *st, r8_fid g, r8_u8 oi)
+{
+    const r8_objx *o;
+    if (oi == 255)
+        return st->cpoly[g - st->nfaces].level;
+    o = &st->obj[oi];
+    return r8_face_level(st, o, &st->scene->objects[oi], (r8_u16)(g - o->fbase));
 }
 
 #ifndef R8_FAST_ONLY
@@ -713,41 +730,37 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     if (k != R8_NO_SLOT) {
         e = (r8_acthead *)(void *)ENTRY(st, k);
     } else {
-        const r8_s16 **vp = ((r8_acthead *)(void *)st->tmp)->c.vp;
-        r8_u8 n, level, j;
-        r8_s16 top, bot;
-        n = face_setup(st, g, vp, &level);
-        face_rows(st, vp, n, &top, &bot);
-        if (top >= y1)
-            return 2;
-        if (bot <= y0)
-            return 1;
+        r8_u8 n, oi;
+        /* a pool entry if one is free (kept if the face goes on below
+         * this band), else the one-off entry */
         e = (r8_acthead *)(void *)st->tmp;
-        if (bot > y1 && st->pool_used < st->npool) {
-            /* it goes on below this band: keep its state */
-            for (k = 0; k < st->npool; k++)
-                if (!((r8_acthead *)(void *)ENTRY(st, k))->used)
-                    break;
+        if (st->pool_used < st->npool) {
+            for (k = 0; ((r8_acthead *)(void *)ENTRY(st, k))->used; k++)
+                ;
             e = (r8_acthead *)(void *)ENTRY(st, k);
-            for (j = 0; j < n; j++)
-                e->c.vp[j] = vp[j];
+        }
+        n = face_setup(st, g, e->c.vp, &oi);
+        if (st->method == R8_VIS_PAINTER) {
+            r8_s16 top, bot;
+            face_rows(st, e->c.vp, n, &top, &bot);
+            if (top >= y1)
+                return 2;          /* starts lower down */
+        }
+        if (!r8_scanx_begin(&e->c, n, y0))
+            return 1;              /* nothing from this band on */
+        e->level = face_level(st, g, oi);
+        if (k != R8_NO_SLOT) {
+            e->used = 1;
             st->slot[g] = k;
             st->pool_used++;
         }
-        e->level = level;
-        e->used = 1;
 #ifndef R8_FAST_ONLY
         if (!st->fast) {
             r8_act *a = (r8_act *)(void *)e;
             a->s.attrs = st->attrs;
-            if (!r8_scanx_begin(&a->s.c, n, y0))
-                a->s.c.ybot = a->s.c.y;
-            else
-                r8_scan_attrs(&a->s);
-        } else
+            r8_scan_attrs(&a->s);
+        }
 #endif
-        if (!r8_scanx_begin(&e->c, n, y0))
-            e->c.ybot = e->c.y;
     }
     c = &e->c;
 #ifndef R8_FAST_ONLY
@@ -760,12 +773,10 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 #endif
         r8_scanx_fill(c, y1, st->judd, fb, e->level);
     done = c->y >= c->ybot || c->backface;
-    if (done || k == R8_NO_SLOT) {
+    if (done && k != R8_NO_SLOT) {
         e->used = 0;
-        if (k != R8_NO_SLOT) {
-            st->slot[g] = R8_NO_SLOT;
-            st->pool_used--;
-        }
+        st->slot[g] = R8_NO_SLOT;
+        st->pool_used--;
     }
     return done;
 }
@@ -791,7 +802,13 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         st->sused = 0;
     }
     if (st->method == R8_VIS_PAINTER) {
+        r8_u16 b = band_of(st, y0, r->cfg.band);
+        r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
         for (g = *link; g != (r8_fid)R8_FID_END; g = *link) {
+            if (st->ftop && st->ftop[g] > b8) {
+                link = &st->next[g];      /* starts lower down */
+                continue;
+            }
             if (draw_face(st, g, y0, y1, fb) == 1)
                 *link = st->next[g];      /* finished: leaves the list */
             else
