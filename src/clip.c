@@ -63,7 +63,7 @@ static r8_s32 absmax(r8_s32 m, r8_s32 v)
 }
 
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
-                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp)
+                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp, r8_s32 *zsum)
 {
     r8_clipv *a = (r8_clipv *)st->clipbuf, *b = a + R8_MAX_CLIP_POLY;  /* work memory, not stack */
     r8_clipv *in = a, *out = b, *t;
@@ -114,12 +114,14 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
         return 0;
     wide = st->cam;
     wide.guard = 1400;   /* intersections lie on the 900 px planes */
+    *zsum = 0;
     for (i = 0; i < n; i++) {
         r8_vec3l c;
         r8_s16 *s;
         c.x = in[i].x;
         c.y = in[i].y;
         c.z = (r8_s32)((r8_u32)in[i].z << sh);
+        *zsum += c.z;
         if (in[i].src != NO_SRC) {
             cp->idx[i] = in[i].src;
             continue;
@@ -140,8 +142,6 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
                 s[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
                 s[3] = in[i].s;
             }
-            if (st->vkey)
-                st->vkey[st->sv_used] = (r8_u8)(r8_tf_depth(st, m, e) >> 7);
         }
         cp->idx[i] = st->sv_used++;
     }

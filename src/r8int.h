@@ -107,7 +107,6 @@ typedef struct r8_state {
     r8_u16 nbands;
     r8_objx *obj;
     r8_s16 *sv;         /* screen vertices (nverts + clip vertices) */
-    r8_u8 *vkey;        /* painter's: depth >> 7 per screen vertex */
     r8_s16 *vnorm;      /* Gouraud: unit vertex normals, 3 per vertex */
     r8_fid *next;       /* draw-order links, per face id */
     r8_fid *heads;      /* buckets: per band, or painter's depth (frame
@@ -133,6 +132,8 @@ typedef struct r8_state {
     r8_s8 zne;          /* ... znear = znm * 2^zne */
     r8_u32 wf, gh;
     r8_s32 zn16, zf16;  /* znear, zfar << R8_CFRAC */
+    r8_u32 kmul, kmul3; /* painter's keys: (z - zn16) * kmul >> 16 over
+                           zn16..zf16 in 64 buckets; kmul3 for z sums of 3 */
     r8_u8 *depth;       /* the method's depth memory for one band */
     unsigned depth_bytes;
     r8_snode *snode;    /* S-buffer nodes */
@@ -154,7 +155,7 @@ int r8_cull_front(const r8_objx *o, const r8_s16 *v0, r8_u16 f);
 r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f);
 /* clip.c */
 int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
-                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp);
+                 const r8_u8 *vi, r8_u8 n, r8_cpoly *cp, r8_s32 *zsum);
 /* vis_zbuf.c, vis_sbuf.c: draw one span of a face at `level` */
 r8_u8 r8_vis_level(r8_s16 s);
 void r8_vis_plain(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);

@@ -131,7 +131,7 @@ static unsigned align_up(unsigned n)
 }
 
 typedef struct plan {
-    unsigned obj, sv, vkey, ftop, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
+    unsigned obj, sv, ftop, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
         pool, tmp, depth, snode, shead, total;
     r8_u16 nverts, nfaces, nbands, nheads, sv_cap;
     unsigned esize;
@@ -254,9 +254,6 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->esize = align_up(pl->fast ? sizeof(r8_actx) : sizeof(r8_act));
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
-    pl->vkey = o;
-    if (cfg->method == R8_VIS_PAINTER)
-        o += align_up(pl->sv_cap);
     pl->vnorm = o;
     if (cfg->shading == R8_SHADE_GOURAUD)
         o += align_up(6u * nv);
@@ -410,7 +407,6 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->obj = (r8_objx *)(void *)(base + pl.obj);
     st->sv = (r8_s16 *)(void *)(base + pl.sv);
     st->sv_cap = pl.sv_cap;
-    st->vkey = cfg->method == R8_VIS_PAINTER ? base + pl.vkey : 0;
     st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
     st->next = (r8_fid *)(void *)(base + pl.next);
     st->slot = pl.npool ? base + pl.slot : 0;
@@ -527,18 +523,50 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
         vp[i] = st->sv + ((unsigned)idx[i] << st->vsh);
 }
 
-/* ceil(65536 / n), n = 3..9: the mean of n depth keys by a product */
-static const r8_u16 recip_n[7] R8_FLASH = { 21846, 16384, 13108, 10923, 9363, 8192, 7282 };
-
-/* Painter's key of polygon vp[0..n): the mean of its vertices' depth
- * (affine in 1/z, 8 bits) over 4, 0 = far .. 63 = near. */
-static r8_u8 depth_key(const r8_state *st, const r8_s16 *const *vp, r8_u8 n)
+/* Painter's key of a polygon whose camera-space z summed over its n
+ * vertices is zsum: the centroid's depth in 64 buckets between znear
+ * and zfar, 0 = far .. 63 = near (the seed's midpoint sort). */
+static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
 {
-    r8_u16 sum = 0;
-    r8_u8 i;
-    for (i = 0; i < n; i++)
-        sum = (r8_u16)(sum + st->vkey[(unsigned)(vp[i] - st->sv) >> st->vsh]);
-    return (r8_u8)(((r8_u32)sum * R8_RDU16(&recip_n[n - 3]) >> 16) >> 2);
+    r8_s32 z = zsum - st->zn16 * n;   /* n (centroid z - znear) */
+    r8_u32 k;
+    if (z < 0)
+        z = 0;
+    if (z >= (st->zf16 - st->zn16) * n)
+        return 0;
+    if (n == 4)
+        k = ((r8_u32)z * st->kmul) >> 18;
+    else if (n == 3)
+        k = ((r8_u32)z * st->kmul3) >> 16;
+    else
+        k = ((r8_u32)z / n * st->kmul) >> 16;
+    if (k > R8_JEFF_BUCKETS - 1)
+        k = R8_JEFF_BUCKETS - 1;
+    return (r8_u8)(R8_JEFF_BUCKETS - 1 - k);
+}
+
+/* Camera-space z summed over face vi[0..n) of object o: the vertices
+ * added in model space (flash), then the one product row. */
+static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8_u8 n)
+{
+    r8_s32 sx = 0, sy = 0, sz = 0;
+    r8_u8 k, sh = 0;
+    for (k = 0; k < n; k++) {
+        const r8_s16 *mv = me->verts + 3u * vi[k];
+        sx += R8_RDS16(mv);
+        sy += R8_RDS16(mv + 1);
+        sz += R8_RDS16(mv + 2);
+    }
+    while ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
+           (r8_u32)(sz + 32767) > 65534UL) {
+        sx = R8_ASR32C(sx, 1);
+        sy = R8_ASR32C(sy, 1);
+        sz = R8_ASR32C(sz, 1);
+        sh++;
+    }
+    sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
+                   R8_MUL16(o->m.m[8], sz) + 512, 10);
+    return (r8_s32)((r8_u32)sx << sh) + o->t.z * n;
 }
 
 void r8_render_frame(r8_render *r, const r8_camera *cam)
@@ -574,6 +602,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
             const r8_s16 *vp[R8_SCAN_MAXV];
             r8_s16 top, bot;
+            r8_s32 zsum = 0;
             r8_fid id;
             r8_u16 key;
             if (n < 3 || n > R8_MAX_FACE_VERTS)
@@ -600,7 +629,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
                     continue;
                 }
                 cp = &st->cpoly[st->nclipped];
-                if (!r8_clip_face(st, o, ob, f, vi, n, cp))
+                if (!r8_clip_face(st, o, ob, f, vi, n, cp, &zsum))
                     continue;
                 n = cp->n;
                 face_vp(st, cp->idx, n, vp);
@@ -614,7 +643,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             if (clip)
                 st->nclipped++;
             if (painter) {
-                key = depth_key(st, vp, n);
+                if (!clip)
+                    zsum = face_zsum(o, me, vi, n);
+                key = depth_key(st, zsum, n);
                 if (st->ftop) {
                     r8_u16 b = band_of(st, top, r->cfg.band);
                     st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);

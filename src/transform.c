@@ -95,7 +95,11 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
         zf = zn + (zn >> 3) + 16;      /* keeps 1 - zn/zf >= 1/9 */
     st->zn16 = zn;
     st->zf16 = zf;
-    if (!(st->attrs & R8_ATTR_D) && !st->vkey)
+    if (st->method == R8_VIS_PAINTER) {
+        st->kmul = (r8_u32)r8_muldiv(R8_JEFF_BUCKETS, 1L << 16, zf - zn);
+        st->kmul3 = st->kmul / 3u;
+    }
+    if (!(st->attrs & R8_ATTR_D))
         return;                        /* no vertex depth this frame */
     /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
     st->zne = 0;
@@ -165,8 +169,6 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
     }
     if (st->vsh == 2)
         out[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
-    if (st->vkey)
-        st->vkey[g] = (r8_u8)(r8_tf_depth(st, m, e) >> 7);
 }
 
 void r8_tf_vertices(r8_state *st)
