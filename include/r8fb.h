@@ -17,6 +17,7 @@
 #define R8FB_H
 
 #include "r8types.h"
+#include "r8flash.h"
 
 #define R8_FMT_PAGE1 0
 #define R8_FMT_ROW1 1
@@ -74,6 +75,12 @@ const r8_u8 *r8_fb_dither_thresholds(r8_s16 y);
 /* Page-layout run: n column bytes from p, bit mask m, 4-periodic
  * pattern pat starting at phase ph (x & 3): the inner loop of page fills. */
 void r8_fb_page_run(r8_u8 *p, unsigned n, r8_u8 m, r8_u8 pat, r8_u8 ph);
+
+/* The page-layout bit of row r (0..7): 1 << r, from a table in flash
+ * (cc65 2.19 -O miscompiles (r8_u8)(1u << (n & 7)) stored to a struct
+ * member; a lookup is also faster than a variable shift on 8-bit CPUs). */
+extern const r8_u8 r8_fb_bit[8];
+#define R8_FB_BIT(r) R8_RDU8(&r8_fb_bit[(r) & 7])
 
 /* One pixel of shade level s through the same dither (8 bpp: base + s). */
 void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base);

@@ -65,6 +65,8 @@ const r8_u8 *r8_fb_dither_thresholds(r8_s16 y)
     return bayer4 + ((y & 3) << 2);
 }
 
+const r8_u8 r8_fb_bit[8] R8_FLASH = { 1, 2, 4, 8, 16, 32, 64, 128 };
+
 /* dither_rows[4 s + (y & 3)]: the pattern of level s on row y */
 static const r8_u8 dither_rows[17 * 4] R8_FLASH = {
     0x00, 0x00, 0x00, 0x00,

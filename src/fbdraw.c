@@ -22,7 +22,7 @@ void r8_fb_pixel(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 c)
     switch (fb->format) {
     case R8_FMT_PAGE1:
         p = fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x;
-        m = (r8_u8)(1u << (y & 7));
+        m = R8_FB_BIT(y);
         break;
     case R8_FMT_ROW1:
         p = fb->buf + (unsigned)y * (((unsigned)fb->width + 7u) >> 3) + ((unsigned)x >> 3);
@@ -90,7 +90,7 @@ static void row1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
 static void page1_pattern(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 pat)
 {
     r8_fb_page_run(fb->buf + (unsigned)(y >> 3) * (unsigned)fb->width + (unsigned)x0,
-                   (unsigned)(x1 - x0), (r8_u8)(1u << (y & 7)), pat, (r8_u8)(x0 & 3));
+                   (unsigned)(x1 - x0), R8_FB_BIT(y), pat, (r8_u8)(x0 & 3));
 }
 
 static void idx8_fill(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c)

@@ -312,7 +312,7 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
      * neither edge ends, filled by the kernel (r8kern.h) */
     by = (r8_s16)(y - fb->y0);
     t.page = fb->buf + (unsigned)(by >> 3) * (unsigned)w;
-    t.m = (r8_u8)(1u << (by & 7));
+    t.m = R8_FB_BIT(by);
     t.k = 0;
     t.w = w;
     for (k = 0; k < 4; k++)

@@ -36,7 +36,7 @@ static void pixw_init(pixw *w, r8_fb *fb, r8_s16 y)
     if (fb->format == R8_FMT_PAGE1) {
         r8_s16 by = (r8_s16)(y - fb->y0);
         w->row = fb->buf + (unsigned)(by >> 3) * (unsigned)fb->width;
-        w->m = (r8_u8)(1u << (by & 7));
+        w->m = R8_FB_BIT(by);
         w->nm = (r8_u8)~w->m;
         w->thr = r8_fb_dither_thresholds(y);
     }
