@@ -48,6 +48,8 @@ r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
  * on v + 2^31 as unsigned (a byte move for n >= 8), then the bias comes
  * off.  v + 2^31 must not pass 2^32: any r8_s32 v. */
 #define R8_ASR32C(v, n) ((r8_s32)((r8_u32)((r8_u32)(v) + 0x80000000UL) >> (n)) - (r8_s32)(0x80000000UL >> (n)))
+/* p >> 14 for 0 <= p < 2^30, as 16 bits: byte moves and two shifts. */
+#define R8_SHR14U(p) ((r8_u16)((r8_u16)((r8_u32)(p) >> 16) << 2) | (r8_u16)((r8_u8)((r8_u32)(p) >> 8) >> 6))
 /* floor(v / 16) for |v| < 32768 - 16: the row or column of a 12.4 value. */
 #define R8_FLOOR16(v) ((r8_s16)(((r8_u16)((v) + 32768u)) >> 4) - 2048)
 /* (a * b) >> frac, rounded to nearest (ties away from zero), saturated

@@ -7,6 +7,7 @@
  *   r8k_trap    fill the rows of a trapezoid between two column DDAs
  *               into an SSD1306 page band (R8_ASM_TRAP)
  *   r8k_xform   a model vertex (flash) into camera space (R8_ASM_XFORM)
+ *   r8k_project a camera-space point to screen coordinates (R8_ASM_PROJECT)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -39,5 +40,11 @@ void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
  * summed exactly (32 bits), plus 512, shifted right 10 with floor, plus
  * t.  v points at three r8_s16 in R8_FLASH (a mesh vertex). */
 void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
+
+/* c (camera space, z >= 1) to 12.4 screen coordinates out[0], out[1]
+ * through p, exactly as r8_project (r8fixed.h); *m, *e get the
+ * reciprocal of c->z as r8_recip gives it (the depth is taken from it).
+ * Returns 1, out[] unset, when c lies outside the guard band. */
+int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 
 #endif

@@ -31,16 +31,23 @@ static void normal_of(const r8_objx *o, r8_u16 f, r8_vec3 *n)
 }
 
 /* Front iff n . (eye - v0) > 0 in model space (eye in 1/16 units), v0
- * the face's first vertex (flash).  eye - v0 fits 16 bits for anything
- * nearer than 2048 units; beyond, it is scaled down by a power of two so
- * the dot product fits 32 bits. */
+ * the face's first vertex (flash).  In 16 bits when the eye is within
+ * 1024 units and v0 within 1023 units of the model origin; else eye - v0
+ * is scaled down by a power of two so the dot product fits 32 bits. */
 int r8_cull_front(const r8_objx *o, const r8_s16 *v0, r8_u16 f)
 {
-    r8_s32 dx = o->eye.x - (r8_s32)R8_RDS16(v0) * R8_CSCALE;
-    r8_s32 dy = o->eye.y - (r8_s32)R8_RDS16(v0 + 1) * R8_CSCALE;
-    r8_s32 dz = o->eye.z - (r8_s32)R8_RDS16(v0 + 2) * R8_CSCALE;
+    r8_s16 x = R8_RDS16(v0), y = R8_RDS16(v0 + 1), z = R8_RDS16(v0 + 2);
+    r8_s32 dx, dy, dz;
     r8_vec3 n;
     normal_of(o, f, &n);
+    if (o->eye16 && (r8_u16)(x + 1023) <= 2046u && (r8_u16)(y + 1023) <= 2046u &&
+        (r8_u16)(z + 1023) <= 2046u)
+        return R8_MUL16(n.x, (r8_s16)o->eye.x - (r8_s16)(x * R8_CSCALE)) +
+               R8_MUL16(n.y, (r8_s16)o->eye.y - (r8_s16)(y * R8_CSCALE)) +
+               R8_MUL16(n.z, (r8_s16)o->eye.z - (r8_s16)(z * R8_CSCALE)) > 0;
+    dx = o->eye.x - (r8_s32)x * R8_CSCALE;
+    dy = o->eye.y - (r8_s32)y * R8_CSCALE;
+    dz = o->eye.z - (r8_s32)z * R8_CSCALE;
     while ((r8_u32)(dx + 32767) > 65534UL || (r8_u32)(dy + 32767) > 65534UL ||
            (r8_u32)(dz + 32767) > 65534UL) {
         dx = R8_ASR32C(dx, 1);

@@ -16,6 +16,14 @@ void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *o
 }
 #endif
 
+#ifndef R8_ASM_PROJECT
+int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e)
+{
+    *m = r8_recip(c->z, e);
+    return r8_project_recip(p, c, *m, *e, &out[0], &out[1]);
+}
+#endif
+
 #ifndef R8_ASM_TRAP
 void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows)
 {

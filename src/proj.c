@@ -113,28 +113,52 @@ static r8_s32 rshift_do(const rshift *r, r8_s32 v)
     return (r8_s32)(u - r->bias);
 }
 
-/* round(c * kk * 2^-sh) for one coordinate c; 1 if beyond `lim`. */
-static int proj1(r8_s32 c, r8_s16 kk, const rshift *rs, r8_s16 lim, r8_s16 *q)
+/* round(c * kk * 2^-sh) for a coordinate over 2047 units: c and the
+ * shift are scaled down first; 1 if beyond `lim`. */
+static int proj_wide(r8_s32 c, r8_s16 kk, int sh, r8_s16 lim, r8_s16 *q)
 {
+    rshift r2;
     r8_s32 v;
-    if ((r8_u32)(c + 32767) > 65534UL) {
-        /* a coordinate over 2047 units: scale it (and the shift) down */
-        int sh = rs->sh;
-        rshift r2;
-        while (c >= 32768L || c < -32768L) {
-            c = R8_ASR32C(c, 1);
-            sh--;
-        }
-        if (sh <= 0)
-            return 1;           /* |q| >= 2^14: far outside any guard band */
-        rshift_init(&r2, (r8_u8)sh);
-        v = rshift_do(&r2, R8_MUL16(c, kk));
-    } else {
-        v = rshift_do(rs, R8_MUL16(c, kk));
+    while (c >= 32768L || c < -32768L) {
+        c = R8_ASR32C(c, 1);
+        sh--;
     }
+    if (sh <= 0)
+        return 1;           /* |q| >= 2^14: far outside any guard band */
+    rshift_init(&r2, (r8_u8)sh);
+    v = rshift_do(&r2, R8_MUL16(c, kk));
     if (v > lim || v < -lim)
         return 1;
     *q = (r8_s16)v;
+    return 0;
+}
+
+/* round(p * 2^-(k+1)) = floor((floor(p / 2^k) + 1) / 2), the same as
+ * floor((p + 2^k) / 2^(k+1)), for |result| < 2^14 (else 1: outside any
+ * guard band).  Floor of a negative p through its complement
+ * (floor(p / 2^k) = ~(~p >> k)), whole bytes first: no 32-bit
+ * constants per shift count. */
+static int proj_round(r8_s32 p, r8_u8 k, r8_s16 lim, r8_s16 *q)
+{
+    r8_u8 neg = (r8_u8)(p < 0);
+    r8_u32 u = neg ? ~(r8_u32)p : (r8_u32)p;
+    r8_s16 t;
+    if (k & 16)
+        u >>= 16;
+    if (k & 8)
+        u >>= 8;
+    k &= 7;
+    while (k--)
+        u >>= 1;
+    if (u >= 0x7FFEu)
+        return 1;
+    t = (r8_s16)u;
+    if (neg)
+        t = (r8_s16)~t;                     /* -0x7FFE < t < 0x7FFE */
+    t = (r8_s16)((r8_s16)((r8_u16)((r8_u16)t + 0x8001u) >> 1) - 0x4000);
+    if (t > lim || t < -lim)
+        return 1;
+    *q = t;
     return 0;
 }
 
@@ -150,14 +174,15 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
 {
     r8_u32 k = (r8_u32)m * (r8_u16)p->fn;   /* [2^29, 2^31) */
     r8_s16 kk, qx, qy, lim = (r8_s16)(p->guard * R8_SUBPX);
+    r8_u16 kh;
     int sh = 31 + p->fsh - e;
-    rshift rs;
     /* 16 * focal / z = kk * 2^-sh with kk in [2^14, 2^15) */
-    if (k >= 0x40000000UL) {
-        kk = (r8_s16)(k >> 16);
+    kh = (r8_u16)(k >> 16);
+    if (kh >= 0x4000u) {
+        kk = (r8_s16)kh;
         sh -= 16;
     } else {
-        kk = (r8_s16)(k >> 15);
+        kk = (r8_s16)((r8_u16)(kh << 1) | (r8_u16)((r8_u16)k >> 15));   /* k >> 15 */
         sh -= 15;
     }
     if (sh <= 0) {
@@ -171,9 +196,15 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
     }
     if (sh > 31)
         sh = 31;
-    rshift_init(&rs, (r8_u8)sh);
-    if (proj1(v->x, kk, &rs, lim, &qx) || proj1(v->y, kk, &rs, lim, &qy))
+    if ((r8_u32)(v->x + 32767) <= 65534UL && (r8_u32)(v->y + 32767) <= 65534UL && lim < 0x3FFF) {
+        /* the usual case: 16-bit coordinates (and a guard band under
+         * 1024 px, as r8_proj_init sets it) */
+        if (proj_round(R8_MUL16(v->x, kk), (r8_u8)(sh - 1), lim, &qx) ||
+            proj_round(R8_MUL16(v->y, kk), (r8_u8)(sh - 1), lim, &qy))
+            return 1;
+    } else if (proj_wide(v->x, kk, sh, lim, &qx) || proj_wide(v->y, kk, sh, lim, &qy)) {
         return 1;
+    }
     *sx = (r8_s16)(p->cx + qx);
     *sy = (r8_s16)(p->cy + qy);
     return 0;

@@ -31,11 +31,15 @@ typedef r8_u16 r8_fid;
  * marks a vertex behind the near plane or outside the guard band: its
  * faces go through the clipper. */
 #define R8_VX_CLIP (-32767 - 1)
+/* x == R8_VX_TODO: not transformed yet this frame (normal cull: only the
+ * vertices of front faces are, as the faces come). */
+#define R8_VX_TODO (-32767)
 
 typedef struct r8_objx {
     r8_mat3 m;          /* model -> camera rotation this frame */
     r8_vec3l t;         /* model origin in camera space (<< R8_CFRAC) */
     r8_vec3l eye;       /* camera in model space (<< R8_CFRAC) */
+    r8_u8 eye16;        /* |eye| components <= 16383: 16-bit cull */
     r8_vec3 light;      /* light direction in model space, Q1.14 */
     const r8_s16 *normals;  /* face normals: the mesh's (flash) or work memory */
     r8_u8 nflash;       /* normals are R8_FLASH data */
@@ -145,7 +149,8 @@ typedef struct r8_state {
 
 /* transform.c */
 void r8_tf_frame(r8_state *st, const r8_camera *cam);
-void r8_tf_vertices(r8_state *st);
+void r8_tf_vertices(r8_state *st, int lazy);
+void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g);
 r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e);
 r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light, r8_u8 colour);
 void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g);

@@ -583,7 +583,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     st->dropped = 0;
     st->pool_used = 0;
     r8_tf_frame(st, cam);
-    r8_tf_vertices(st);
+    /* with the normal cull, vertices are transformed as front faces need
+     * them (a closed mesh shows about half its faces) */
+    r8_tf_vertices(st, r->cfg.cull == R8_CULL_NORMAL);
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
     /* faces last to first, each put at the front of its bucket: every
@@ -615,6 +617,8 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
                 if (j)
                     vi[j] = R8_RDU8(&fc->v[j]);
                 vp[j] = base + ((unsigned)vi[j] << vsh);
+                if (vp[j][0] == R8_VX_TODO)
+                    r8_tf_vertex(st, o, me->verts + 3u * vi[j], (r8_u16)(o->vbase + vi[j]));
                 if (vp[j][0] == R8_VX_CLIP)
                     clip = 1;
             }

@@ -86,6 +86,9 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
         d[1] = -d[1];
         d[2] = -d[2];
         rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
+        o->eye16 = (r8_u8)((r8_u32)(o->eye.x + 16383) <= 32766UL &&
+                           (r8_u32)(o->eye.y + 16383) <= 32766UL &&
+                           (r8_u32)(o->eye.z + 16383) <= 32766UL);
         if (st->shading != R8_SHADE_FLAT)
             r8_mat_apply_t14(&r, &sc->light, &o->light);
     }
@@ -142,14 +145,24 @@ r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
 r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light,
                    r8_u8 colour)
 {
-    r8_s32 i = r8_asr14(r8_dot3(n, light));   /* Q1.14 cosine */
-    r8_s32 amb = st->scene->ambient, k;
-    if (i < 0)
-        i = 0;
-    if (i > R8_ONE14)
-        i = R8_ONE14;
-    k = amb + r8_asr14((R8_ONE14 - amb) * i);  /* Q1.14 intensity */
-    return (r8_s16)r8_asr14(k * ((r8_s32)colour << 8) + 8192);
+    /* Q1.14 cosine, clamped to [0, 1]: 16-bit from here on */
+    r8_s32 d = R8_MUL16(n->x, light->x) + R8_MUL16(n->y, light->y) +
+               R8_MUL16(n->z, light->z);
+    r8_s16 i = 0, amb = st->scene->ambient;
+    r8_u32 p;
+    if (d > 0) {
+        i = (r8_s16)R8_SHR14U(d);          /* d < 3 * 2^28 */
+        if (i > R8_ONE14)
+            i = R8_ONE14;
+    }
+    if (amb < 0)
+        amb = 0;                          /* an ambient outside [0, 1] */
+    if (amb > R8_ONE14)
+        amb = R8_ONE14;                   /* is taken as 0 or 1 */
+    p = R8_MUL16(R8_ONE14 - amb, i);
+    p = (r8_u16)(amb + R8_SHR14U(p));     /* Q1.14 intensity */
+    p *= (r8_u16)((r8_u16)colour << 8);
+    return (r8_s16)R8_SHR14U(p + 8192u);  /* < 2^30 */
 }
 
 /* Camera point c (<< R8_CFRAC) to screen vertex g: x, y (and depth). */
@@ -162,8 +175,7 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
         out[0] = R8_VX_CLIP;
         return;
     }
-    m = r8_recip(c->z, &e);
-    if (r8_project_recip(&st->cam, c, m, e, &out[0], &out[1])) {
+    if (r8k_project(&st->cam, c, out, &m, &e)) {
         out[0] = R8_VX_CLIP;
         return;
     }
@@ -171,10 +183,28 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
         out[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
 }
 
-void r8_tf_vertices(r8_state *st)
+/* Model vertex mv (flash) of object o to screen vertex g. */
+void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    r8_vec3l c;
+    r8k_xform(&o->m, &o->t, mv, &c);
+    r8_tf_camera(&c, st, g);
+    if (st->attrs & R8_ATTR_S) {
+        r8_vec3 n;
+        const r8_s16 *vn = st->vnorm + 3u * g;
+        n.x = vn[0];
+        n.y = vn[1];
+        n.z = vn[2];
+        st->sv[((unsigned)g << 2) + 3u] = r8_tf_shade(st, &n, &o->light, 16);
+    }
+}
+
+/* Every vertex of every shown object, or (lazy) only marked R8_VX_TODO:
+ * the frame loop then transforms the vertices of the faces it keeps. */
+void r8_tf_vertices(r8_state *st, int lazy)
 {
     const r8_scene *sc = st->scene;
-    r8_u8 i;
+    r8_u8 i, vsh = st->vsh;
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         const r8_objx *o = &st->obj[i];
@@ -182,20 +212,13 @@ void r8_tf_vertices(r8_state *st)
         r8_u16 k, g = o->vbase;
         if (o->hidden)
             continue;
-        for (k = 0; k < me->nverts; k++) {
-            r8_vec3l c;
-            r8k_xform(&o->m, &o->t, mv, &c);
-            mv += 3;
-            r8_tf_camera(&c, st, g);
-            if (st->attrs & R8_ATTR_S) {
-                r8_vec3 n;
-                const r8_s16 *vn = st->vnorm + 3u * g;
-                n.x = vn[0];
-                n.y = vn[1];
-                n.z = vn[2];
-                st->sv[((unsigned)g << 2) + 3u] = r8_tf_shade(st, &n, &o->light, 16);
-            }
-            g++;
+        if (lazy) {
+            r8_s16 *out = st->sv + ((unsigned)g << vsh);
+            for (k = 0; k < me->nverts; k++, out += 1u << vsh)
+                *out = R8_VX_TODO;
+            continue;
         }
+        for (k = 0; k < me->nverts; k++, mv += 3)
+            r8_tf_vertex(st, o, mv, g++);
     }
 }
