@@ -13,6 +13,8 @@
  *     -P FILE      profile: cycles per function (ELF symbols) spent inside
  *                  frames (between markers 2 and 3), written to FILE
  *     -F N         profile only frames N and later (default 0)
+ *     -H FILE      per instruction: "addr cycles executions" (hex address)
+ *                  inside the profiled frames, for avr-objdump annotation
  *
  * Markers: every write to GPIOR0 (0x3E) logs
  *     MARK id cycle=C delta=D wait=W
@@ -62,6 +64,8 @@ typedef struct { uint32_t addr; const char *name; unsigned long long cyc; } prof
 static prof_fn *prof;
 static int nprof;
 static unsigned prof_from;
+static unsigned long long *hist_cyc;   /* -H: per byte address */
+static unsigned long *hist_n;
 
 static int prof_cmp(const void *a, const void *b)
 {
@@ -197,10 +201,10 @@ int main(int argc, char **argv)
     uint32_t flags = 0, freq = 16000000u;
     int state, opt, use_pty = 0, linger = 2, code;
     unsigned long long maxc = 4000000000ULL;
-    const char *out = NULL, *marks = NULL, *proff = NULL;
+    const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL;
     uint32_t a, static_end, low;
 
-    while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:")) != -1) {
+    while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:H:")) != -1) {
         switch (opt) {
         case 'f': freq = strtoul(optarg, 0, 0); break;
         case 'o': out = optarg; break;
@@ -211,12 +215,13 @@ int main(int argc, char **argv)
         case 'q': quiet = 1; break;
         case 'P': proff = optarg; break;
         case 'F': prof_from = (unsigned)atoi(optarg); break;
+        case 'H': histf = optarg; break;
         default: goto usage;
         }
     }
     if (argc - optind != 2) {
 usage:
-        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] [-P FILE [-F N]] MCU ELF\n", argv[0]);
+        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] [-P FILE [-F N]] [-H FILE] MCU ELF\n", argv[0]);
         return 2;
     }
     uart_fp = stdout;
@@ -246,6 +251,10 @@ usage:
     find_txwait(&fw);
     if (proff)
         prof_init(&fw);
+    if (histf) {
+        hist_cyc = calloc(avr->flashend + 1, sizeof *hist_cyc);
+        hist_n = calloc(avr->flashend + 1, sizeof *hist_n);
+    }
 
     /* paint free RAM: end of .data+.bss .. RAMEND */
     static_end = RAMSTART + fw.datasize + fw.bsssize;
@@ -273,8 +282,14 @@ usage:
         state = avr_run(avr);
         if (pc >= wait_lo && pc < wait_hi)
             wait_since_mark += avr->cycle - prev_cycle;
-        else if (prof && in_frame && frame_no >= prof_from)
-            prof_add(pc, avr->cycle - prev_cycle);
+        else if (in_frame && frame_no >= prof_from) {
+            if (prof)
+                prof_add(pc, avr->cycle - prev_cycle);
+            if (hist_cyc && pc <= avr->flashend) {
+                hist_cyc[pc] += avr->cycle - prev_cycle;
+                hist_n[pc]++;
+            }
+        }
         prev_cycle = avr->cycle;
     } while (state != cpu_Done && state != cpu_Crashed && avr->cycle < maxc);
     fflush(uart_fp);
@@ -308,6 +323,14 @@ usage:
                         prof[i].name);
             fclose(pf);
         }
+    }
+    if (hist_cyc) {
+        FILE *hf = fopen(histf, "w");
+        for (a = 0; hf && a <= avr->flashend; a++)
+            if (hist_n[a])
+                fprintf(hf, "%x %llu %lu\n", (unsigned)a, hist_cyc[a], hist_n[a]);
+        if (hf)
+            fclose(hf);
     }
     if (use_pty) {
         sleep((unsigned)linger);
