@@ -149,7 +149,7 @@ static void test_tx_sizes_and_errors(void)
     r8_tx tx;
     tx_cfg(&c);
     TEST_ASSERT_EQUAL_UINT(16, r8_tx_band_bytes(&c));
-    TEST_ASSERT_EQUAL_UINT(16 + R8_WIRE_BAND_HDR + 2 + 4 * 2, r8_tx_scratch(&c));
+    TEST_ASSERT_EQUAL_UINT(16 + R8_WIRE_BAND_HDR + 2 + 2 + 4 * 2, r8_tx_scratch(&c));
     TEST_ASSERT_EQUAL_INT(R8_E_SPACE, r8_tx_init(&tx, &c, scratch, 10, capture, 0));
     c.band = 4; /* PAGE1 needs multiples of 8 */
     TEST_ASSERT_EQUAL_UINT(0, r8_tx_scratch(&c));
