@@ -11,7 +11,9 @@
 #include "r8crc.h"
 #include "r8flash.h"
 
-r8_u16 r8_crc16_update(r8_u16 crc, const r8_u8 *p, unsigned n)
+/* With R8_ASM_AVR, r8_crc16_update and r8_crc16_mul are the AVR
+ * assembly (ports/avr/wire_avr.S) and these the reference. */
+r8_u16 r8_crc16_update_c(r8_u16 crc, const r8_u8 *p, unsigned n)
 {
     r8_u8 hi = (r8_u8)(crc >> 8), lo = (r8_u8)(crc & 0xFFu);
     while (n--) {
@@ -26,7 +28,7 @@ r8_u16 r8_crc16(const r8_u8 *p, unsigned n)
     return r8_crc16_update((r8_u16)R8_CRC16_INIT, p, n);
 }
 
-r8_u16 r8_crc16_mul(r8_u16 a, r8_u16 b)
+r8_u16 r8_crc16_mul_c(r8_u16 a, r8_u16 b)
 {
     r8_u16 r = 0;
     r8_u8 k, bb = (r8_u8)(b >> 8), half = 2;

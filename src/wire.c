@@ -33,15 +33,7 @@
 
 static const r8_u8 delim = 0;
 
-/* A packet being built: its COBS chain, its CRC, and for a band the
- * running sums of the raw band. */
-typedef struct tx_st {
-    r8_u8 *pkt;              /* the packet: pkt[0] code, body from pkt[1] */
-    r8_u8 *code;             /* last code slot of the COBS chain (0: none) */
-    r8_u8 f1, f2;            /* Fletcher sums of the band so far */
-    r8_u16 crc;              /* packet CRC */
-    r8_u16 g;                /* CRC from 0 of the band so far */
-} tx_st;
+typedef r8_tx_st tx_st;
 
 static void put16(r8_u8 *p, unsigned v)
 {
@@ -73,30 +65,41 @@ static void tx_unlink(tx_st *s)
     s->code = 0;
 }
 
-/* The 0x00 at q (after every zero linked so far) takes the place of a
- * code: the code before it gets the distance.  A block of 254 or more
- * non-zero bytes needs an extra code byte, which does not fit in place:
- * then the chain stops and tx_send streams the packet instead. */
-static void tx_link(tx_st *s, r8_u8 *q)
+/* Link the zeros of q .. end (after every zero linked so far): each
+ * takes the place of a code, the code before it gets the distance.  A
+ * block of 254 or more non-zero bytes needs an extra code byte, which
+ * does not fit in place: then the chain stops and tx_send streams the
+ * packet instead. */
+static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
 {
     r8_u8 *c = s->code;
     if (!c)
         return;
-    if (q - c > 254) {
-        tx_unlink(s);
-        return;
+    for (; q != end; q++) {
+        if (*q)
+            continue;
+        if (q - c > 254) {
+            tx_unlink(s);
+            return;
+        }
+        *c = (r8_u8)(q - c);
+        c = q;
     }
-    *c = (r8_u8)(q - c);
-    s->code = q;
+    s->code = c;
 }
 
-/* Link the zeros of q .. end. */
-static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
-{
-    for (; q != end; q++)
-        if (!*q)
-            tx_link(s, q);
-}
+/* Link the 0x00 at q (a macro: it is on the hot path). */
+#define TX_LINK(s, q)                                          \
+    do {                                                       \
+        if ((s)->code) {                                       \
+            if ((q) - (s)->code > 254) {                       \
+                tx_unlink(s);                                  \
+            } else {                                           \
+                *(s)->code = (r8_u8)((q) - (s)->code);         \
+                (s)->code = (q);                               \
+            }                                                  \
+        }                                                      \
+    } while (0)
 
 /* Send the packet whose body is pkt[1 .. 1+n).  Its zeros up to `from`
  * are linked and s->crc is its CRC up to there; the rest is done here:
@@ -107,7 +110,10 @@ static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 *from)
     r8_u8 *p = s->pkt, *end = p + n + 3;
     s->crc = r8_crc16_update(s->crc, from, (unsigned)(p + n + 1 - from));
     put16(p + n + 1, s->crc);
-    tx_links(s, from, end);
+    tx_links(s, from, p + n + 1);
+    for (from = p + n + 1; from != end; from++)
+        if (!*from)
+            TX_LINK(s, from);
     if (s->code && end - s->code > 255)
         tx_unlink(s);
     if (s->code) {
@@ -296,46 +302,10 @@ static void tx_fletcher(tx_st *s, const r8_u8 *p, unsigned n)
 }
 
 #ifndef R8_NO_RLE
-/* Where the first run of three equal bytes starts among the k >= 1
- * positions from p; k if at none.  Reads p[0 .. k+1]. */
-static r8_u8 TX_NOINLINE tx_scan(const r8_u8 *p, r8_u8 k)
+r8_u8 r8_tx_run_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
 {
-    r8_u8 v = *p++, w, j = k;
-    do {
-        w = *p++;
-        if (w == v && *p == v)
-            return (r8_u8)(k - j);
-        v = w;
-    } while (--j);
-    return k;
-}
-
-/* Copy c >= 1 literal bytes p -> o, feeding the packet CRC, the
- * Fletcher sums and the COBS chain: the hot loop. */
-static void TX_NOINLINE tx_lsum(tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 c)
-{
-    r8_u8 ph = (r8_u8)(s->crc >> 8), pl = (r8_u8)(s->crc & 0xFFu);
-    r8_u8 f1 = s->f1, f2 = s->f2, v;
-    do {
-        v = *p++;
-        *o = v;
-        R8_CRC16_STEP(ph, pl, v);
-        f1 = (r8_u8)(f1 + v);
-        f2 = (r8_u8)(f2 + f1);
-        if (!v)
-            tx_link(s, o);
-        o++;
-    } while (--c);
-    s->crc = (r8_u16)(((r8_u16)ph << 8) | pl);
-    s->f1 = f1;
-    s->f2 = f2;
-}
-
-/* How many of the k bytes from q equal v (stops at the first other);
- * zeros 4 at a time. */
-static r8_u8 TX_NOINLINE tx_same(const r8_u8 *q, r8_u8 k, r8_u8 v)
-{
-    r8_u8 j = k;
+    const r8_u8 *q = p + 3;
+    r8_u8 v = *p, j = (r8_u8)(k - 3u);
     if (!v)
         while (j >= 4u && !(q[0] | q[1] | q[2] | q[3])) {
             q += 4;
@@ -345,7 +315,65 @@ static r8_u8 TX_NOINLINE tx_same(const r8_u8 *q, r8_u8 k, r8_u8 v)
         q++;
         j--;
     }
-    return (r8_u8)(k - j);
+    k = (r8_u8)(k - j);
+    o[0] = k;
+    o[1] = v;
+    s->crc = r8_crc16_update(s->crc, o, 2);
+    if (v) {
+        s->g = r8_crc16_update(s->g, p, k);
+        tx_fletcher(s, p, k);
+    } else {
+        s->g = r8_crc16_shift(s->g, k);
+        s->f2 = (r8_u8)(s->f2 + (r8_u8)(k * s->f1));
+    }
+    return k;
+}
+
+r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
+{
+    const r8_u8 *q = p;
+    r8_u8 ph, pl, f1, f2, v, w, z = 0;
+    r8_u16 pb;
+    if (k) {
+        v = *q++;
+        w = k;
+        do {
+            if (*q == v && q[1] == v) {
+                c = (r8_u8)(k - w);
+                break;
+            }
+            v = *q++;
+        } while (--w);
+    }
+    *o = (r8_u8)(0x80u | c);
+    s->crc = r8_crc16_update(s->crc, o, 1);
+    pb = s->crc;
+    ph = (r8_u8)(pb >> 8);
+    pl = (r8_u8)(pb & 0xFFu);
+    f1 = s->f1;
+    f2 = s->f2;
+    q = p;
+    w = c;
+    do {
+        v = *q++;
+        *++o = v;
+        R8_CRC16_STEP(ph, pl, v);
+        f1 = (r8_u8)(f1 + v);
+        f2 = (r8_u8)(f2 + f1);
+        if (!v)
+            z = 0x80;
+    } while (--w);
+    s->crc = (r8_u16)(((r8_u16)ph << 8) | pl);
+    s->f1 = f1;
+    s->f2 = f2;
+    /* the band's CRC: g * x^(8c) ^ crc(0, literals), where crc(0,
+     * literals) = the packet CRC after them ^ the one before them *
+     * x^(8c); few literals are cheaper one by one */
+    if (c < 8u)
+        s->g = r8_crc16_update(s->g, p, c);
+    else
+        s->g = (r8_u16)(r8_crc16_shift((r8_u16)(s->g ^ pb), c) ^ s->crc);
+    return (r8_u8)(c | z);
 }
 
 /* RLE-encode the band p[0..n) into o (the bytes r8_rle_encode gives, see
@@ -359,8 +387,7 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
     const r8_u8 *end = p + n;
     r8_u8 *o0 = o;
     unsigned room = cap, left;
-    r8_u8 c, k, v;
-    r8_u16 pb;
+    r8_u8 c, k, full;
     s->f1 = s->f2 = 0;
     s->g = 0;
     while (p != end) {
@@ -368,50 +395,39 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
         c = R8_RLE_MAX; /* the most bytes a token takes */
         if (left < R8_RLE_MAX)
             c = (r8_u8)left;
-        v = *p;
-        if (c >= 3u && p[1] == v && p[2] == v) {
+        if (c >= 3u && p[1] == *p && p[2] == *p) {
             /* a run of 3..c equal bytes */
             if (room < 2u)
                 return cap + 1u;
             room -= 2u;
-            c = (r8_u8)(3u + tx_same(p + 3, (r8_u8)(c - 3u), v));
-            o[0] = c;
-            o[1] = v;
-            s->crc = r8_crc16_update(s->crc, o, 2);
-            if (v) {
-                s->g = r8_crc16_update(s->g, p, c);
-                tx_fletcher(s, p, c);
-            } else {
-                tx_link(s, o + 1);
-                s->g = r8_crc16_shift(s->g, c);
-                s->f2 = (r8_u8)(s->f2 + (r8_u8)(c * s->f1));
-            }
+            c = r8_tx_run(s, o, p, c);
+            if (!o[1])
+                TX_LINK(s, o + 1);
             o += 2;
         } else {
-            /* literals up to the next run of 3 (the last 2 bytes of the
-             * band start none), at most c */
-            if (left >= R8_RLE_MAX + 2u) {
-                c = tx_scan(p, R8_RLE_MAX);
-            } else if (left > 3u) {
-                k = (r8_u8)(left - 2u);
-                v = tx_scan(p, k);
-                if (v != k)
-                    c = v;
+            /* literals; k: the positions a run of 3 may start at */
+            k = R8_RLE_MAX;
+            if (left < R8_RLE_MAX + 2u)
+                k = (r8_u8)(left >= 2u ? left - 2u : 0u);
+            full = 0;
+            if (room <= c) {
+                /* at most room - 1 literals fit: if that many come, more
+                 * come after them (or a run, which does not fit either) */
+                if (room < 2u)
+                    return cap + 1u;
+                c = (r8_u8)(room - 1u);
+                if (k > c)
+                    k = c;
+                full = c;
             }
-            if (room <= c)
+            c = r8_tx_lit(s, o, p, k, c);
+            if (c & 0x80u) {
+                c &= 0x7Fu;
+                tx_links(s, o + 1, o + 1 + c);
+            }
+            if (c == full)
                 return cap + 1u;
             room -= c + 1u;
-            *o = (r8_u8)(0x80u | c);
-            s->crc = r8_crc16_update(s->crc, o, 1);
-            pb = s->crc;
-            tx_lsum(s, o + 1, p, c);
-            /* the band's CRC: g * x^(8c) ^ crc(0, literals), where
-             * crc(0, literals) = the packet CRC after them ^ the one
-             * before them * x^(8c); few literals are cheaper one by one */
-            if (c < 8u)
-                s->g = r8_crc16_update(s->g, p, c);
-            else
-                s->g = (r8_u16)(r8_crc16_shift((r8_u16)(s->g ^ pb), c) ^ s->crc);
             o += c + 1u;
         }
         p += c;
@@ -457,7 +473,11 @@ int r8_tx_band(r8_tx *tx, const r8_fb *band)
 #ifndef R8_NO_RLE
     if (b[5] == R8_CODEC_RLE) {
         s.crc = r8_crc16_update(tx->hcrc, b + 3, 3);
-        tx_links(&s, b + 1, b + 5);
+        for (from = b + 1; from != b + 5; from++)
+            if (!*from) {
+                *s.code = (r8_u8)(from - s.code); /* within 5 bytes */
+                s.code = from;
+            }
         from = b + R8_WIRE_BAND_HDR;
         len = tx_rle(&s, src, n, from, n - 1u);
         from += len;
