@@ -46,16 +46,23 @@ r8_u8 r8_tx_run_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k);
  * up to where the first run of 3 starts among the first k positions,
  * else c (k <= c; the other c - k positions, at most 2, start none);
  * [0x80 | L, the L bytes] at o[0..L]; feeds the packet CRC, the band's
- * CRC and Fletcher sums (not the COBS chain).  Returns L, | 0x80 if a
- * 0x00 is among the L bytes.  Reads p[0 .. k+1] and p[0 .. c-1]. */
+ * CRC and Fletcher sums, and links the 0x00 among the L bytes into the
+ * COBS chain.  Returns L, | 0x80 if a block got too long for the chain
+ * (s->code is then the last code linked: the caller undoes the chain).
+ * Reads p[0 .. k+1] and p[0 .. c-1]. */
 r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c);
 
+/* How many bytes of p[0..n) are 0x00 before the first other. */
+unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n);
+
 #if defined(R8_ASM_AVR)
+unsigned r8_tx_zeros(const r8_u8 *p, unsigned n);
 r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k);
 r8_u8 r8_tx_lit(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c);
 r8_u16 r8_crc16_update_c(r8_u16 crc, const r8_u8 *p, unsigned n);
 r8_u16 r8_crc16_mul_c(r8_u16 a, r8_u16 b);
 #else
+#define r8_tx_zeros r8_tx_zeros_c
 #define r8_tx_run r8_tx_run_c
 #define r8_tx_lit r8_tx_lit_c
 #define r8_crc16_update_c r8_crc16_update

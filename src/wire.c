@@ -108,12 +108,15 @@ static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
 static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 *from)
 {
     r8_u8 *p = s->pkt, *end = p + n + 3;
-    s->crc = r8_crc16_update(s->crc, from, (unsigned)(p + n + 1 - from));
-    put16(p + n + 1, s->crc);
-    tx_links(s, from, p + n + 1);
-    for (from = p + n + 1; from != end; from++)
-        if (!*from)
-            TX_LINK(s, from);
+    if (from != end - 2) {
+        s->crc = r8_crc16_update(s->crc, from, (unsigned)(end - 2 - from));
+        tx_links(s, from, end - 2);
+    }
+    put16(end - 2, s->crc);
+    if (!end[-2])
+        TX_LINK(s, end - 2);
+    if (!end[-1])
+        TX_LINK(s, end - 1);
     if (s->code && end - s->code > 255)
         tx_unlink(s);
     if (s->code) {
@@ -360,8 +363,14 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
         R8_CRC16_STEP(ph, pl, v);
         f1 = (r8_u8)(f1 + v);
         f2 = (r8_u8)(f2 + f1);
-        if (!v)
-            z = 0x80;
+        if (!v && !z && s->code) {
+            if (o - s->code > 254)
+                z = 0x80; /* too long: the caller undoes the chain */
+            else {
+                *s->code = (r8_u8)(o - s->code);
+                s->code = o;
+            }
+        }
     } while (--w);
     s->crc = (r8_u16)(((r8_u16)ph << 8) | pl);
     s->f1 = f1;
@@ -382,7 +391,7 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
  * the payload length, or cap + 1 when it does not fit (nothing is
  * written past o + cap). */
 static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
-                       unsigned cap)
+                       unsigned cap, unsigned z)
 {
     const r8_u8 *end = p + n;
     r8_u8 *o0 = o;
@@ -390,6 +399,23 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
     r8_u8 c, k, full;
     s->f1 = s->f2 = 0;
     s->g = 0;
+    /* the z leading zeros: runs of up to 127 (a band's CRC from 0 and its
+     * Fletcher sums stay 0); fewer than 3 left join the next token */
+    while (z >= 3u) {
+        c = R8_RLE_MAX;
+        if (z < R8_RLE_MAX)
+            c = (r8_u8)z;
+        if (room < 2u)
+            return cap + 1u;
+        room -= 2u;
+        o[0] = c;
+        o[1] = 0;
+        s->crc = r8_crc16_update(s->crc, o, 2);
+        TX_LINK(s, o + 1);
+        o += 2;
+        p += c;
+        z -= c;
+    }
     while (p != end) {
         left = (unsigned)(end - p);
         c = R8_RLE_MAX; /* the most bytes a token takes */
@@ -423,7 +449,7 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
             c = r8_tx_lit(s, o, p, k, c);
             if (c & 0x80u) {
                 c &= 0x7Fu;
-                tx_links(s, o + 1, o + 1 + c);
+                tx_unlink(s);
             }
             if (c == full)
                 return cap + 1u;
@@ -436,50 +462,42 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
 }
 #endif
 
-int r8_tx_band(r8_tx *tx, const r8_fb *band)
+unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
 {
-    unsigned idx, n, len, k;
-    r8_u8 *b = tx->pkt + 1, *fp, *from = b, changed = 0, f[4];
-    const r8_u8 *src = band->buf;
-    r8_u16 xn;
+    const r8_u8 *q = p, *end = p + n;
+    while (end - q >= 4 && !(q[0] | q[1] | q[2] | q[3]))
+        q += 4;
+    while (q != end && !*q)
+        q++;
+    return (unsigned)(q - p);
+}
+
+/* Encode and send band src[0..n) at row y0: the packet, the fingerprint
+ * fp[4] (changed: whether it did) and the frame CRC; z = its leading
+ * zeros. */
+static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
+                                unsigned y0, r8_u8 *fp, r8_u16 xn, unsigned z)
+{
+    r8_u8 *b = tx->pkt + 1, *from = b, changed, f[4];
+    unsigned len = n, k;
     tx_st s;
-    if (!tx->in_frame || band->y0 < 0 || band->y0 >= tx->cfg.height ||
-        band->width != tx->cfg.width || band->format != tx->cfg.format)
-        return R8_E_ARG;
-    if (band->y0 == tx->next_y) {
-        idx = tx->next_idx;
-    } else {
-        if (band->y0 % tx->cfg.band)
-            return R8_E_ARG;
-        idx = (unsigned)band->y0 / (unsigned)tx->cfg.band;
-    }
-    tx->next_y = (r8_s16)(band->y0 + tx->cfg.band);
-    tx->next_idx = idx + 1u;
-    n = tx->band_bytes;
-    xn = tx->xn;
-    if (tx->cfg.height - band->y0 < tx->cfg.band) {
-        n = r8_fb_bytes(tx->cfg.format, tx->cfg.width,
-                        (r8_s16)(tx->cfg.height - band->y0));
-        xn = tx->xn_last;
-    }
-    tx->raw_bytes += n;
     /* header; the CRC of bytes 0..2 is tx->hcrc */
     b[0] = R8_PKT_BAND;
     put16(b + 1, tx->frame);
-    put16(b + 3, (unsigned)band->y0);
+    put16(b + 3, y0);
     b[5] = tx->cfg.codec;
     tx_start(tx, &s, (r8_u16)R8_CRC16_INIT);
-    len = n;
 #ifndef R8_NO_RLE
     if (b[5] == R8_CODEC_RLE) {
         s.crc = r8_crc16_update(tx->hcrc, b + 3, 3);
+        /* header zeros (no code is more than 5 bytes back) */
         for (from = b + 1; from != b + 5; from++)
             if (!*from) {
-                *s.code = (r8_u8)(from - s.code); /* within 5 bytes */
+                *s.code = (r8_u8)(from - s.code);
                 s.code = from;
             }
         from = b + R8_WIRE_BAND_HDR;
-        len = tx_rle(&s, src, n, from, n - 1u);
+        len = tx_rle(&s, src, n, from, n - 1u, z);
         from += len;
         if (len >= n) {
             tx_unlink(&s);
@@ -491,24 +509,24 @@ int r8_tx_band(r8_tx *tx, const r8_fb *band)
     if (from == b) {
         /* the fingerprint (leading zeros change it not) */
         s.f1 = s.f2 = 0;
-        for (k = 0; k < n && !src[k]; k++)
-            ;
-        s.g = r8_crc16_update(0, src + k, n - k);
-        tx_fletcher(&s, src + k, n - k);
+        s.g = r8_crc16_update(0, src + z, n - z);
+        tx_fletcher(&s, src + z, n - z);
     }
-    fp = tx->fp + 4u * idx;
-    f[0] = (r8_u8)(s.g >> 8);
-    f[1] = (r8_u8)(s.g & 0xFFu);
-    f[2] = s.f1;
-    f[3] = s.f2;
-    for (k = 0; k < 4u; k++) {
-        changed |= (r8_u8)(fp[k] ^ f[k]);
-        fp[k] = f[k];
+    if (z != n) { /* (a band of zeros is done by the caller) */
+        f[0] = (r8_u8)(s.g >> 8);
+        f[1] = (r8_u8)(s.g & 0xFFu);
+        f[2] = s.f1;
+        f[3] = s.f2;
+        changed = 0;
+        for (k = 0; k < 4u; k++) {
+            changed |= (r8_u8)(fp[k] ^ f[k]);
+            fp[k] = f[k];
+        }
+        /* frame CRC: fcrc * x^(8n) ^ the band's CRC from 0 */
+        tx->fcrc = (r8_u16)(r8_crc16_mul(tx->fcrc, xn) ^ s.g);
+        if (!tx->full && !changed)
+            return;
     }
-    /* frame CRC: fcrc * x^(8n) ^ the band's CRC from 0 */
-    tx->fcrc = (r8_u16)(r8_crc16_mul(tx->fcrc, xn) ^ s.g);
-    if (!tx->full && !changed)
-        return R8_OK;
     if (from == b) {
         k = (unsigned)R8_E_SPACE;
 #ifndef R8_NO_LZ77
@@ -525,6 +543,45 @@ int r8_tx_band(r8_tx *tx, const r8_fb *band)
     }
     tx_send(tx, &s, R8_WIRE_BAND_HDR + len, from);
     tx->sent++;
+}
+
+int r8_tx_band(r8_tx *tx, const r8_fb *band)
+{
+    unsigned idx, n, z;
+    r8_s16 y0 = band->y0;
+    r8_u8 *fp, changed;
+    r8_u16 xn;
+    if (!tx->in_frame || y0 < 0 || y0 >= tx->cfg.height ||
+        band->width != tx->cfg.width || band->format != tx->cfg.format)
+        return R8_E_ARG;
+    if (y0 == tx->next_y) {
+        idx = tx->next_idx;
+    } else {
+        if (y0 % tx->cfg.band)
+            return R8_E_ARG;
+        idx = (unsigned)y0 / (unsigned)tx->cfg.band;
+    }
+    tx->next_y = (r8_s16)(y0 + tx->cfg.band);
+    tx->next_idx = idx + 1u;
+    n = tx->band_bytes;
+    xn = tx->xn;
+    if (tx->cfg.height - y0 < tx->cfg.band) {
+        n = r8_fb_bytes(tx->cfg.format, tx->cfg.width, (r8_s16)(tx->cfg.height - y0));
+        xn = tx->xn_last;
+    }
+    tx->raw_bytes += n;
+    fp = tx->fp + 4u * idx;
+    /* a band of zeros (blank screen): its fingerprint is 0, its CRC from
+     * 0 is 0; unchanged in a delta frame, it costs nothing more */
+    z = r8_tx_zeros(band->buf, n);
+    if (z == n) {
+        changed = (r8_u8)(fp[0] | fp[1] | fp[2] | fp[3]);
+        fp[0] = fp[1] = fp[2] = fp[3] = 0;
+        tx->fcrc = r8_crc16_mul(tx->fcrc, xn);
+        if (!tx->full && !changed)
+            return R8_OK;
+    }
+    tx_band(tx, band->buf, n, (unsigned)y0, fp, xn, z);
     return R8_OK;
 }
 
