@@ -102,7 +102,7 @@ typedef struct r8_tx {
     r8_u8 *fp;               /* 4-byte fingerprint per band */
     unsigned nbands;
     unsigned band_bytes;     /* raw bytes of a full band */
-    r8_u16 xn, xn_last;      /* x^(8n) mod P for a full / the last band */
+    r8_u16 xn;               /* x^(8n) mod P, n = band_bytes */
     r8_s16 next_y;           /* y0 of the band expected next */
     unsigned next_idx;       /* its index */
     r8_u16 frame;            /* current frame number */

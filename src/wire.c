@@ -65,30 +65,41 @@ static void tx_unlink(tx_st *s)
     s->code = 0;
 }
 
-/* Link the zeros of q .. end (after every zero linked so far): each
- * takes the place of a code, the code before it gets the distance.  A
- * block of 254 or more non-zero bytes needs an extra code byte, which
- * does not fit in place: then the chain stops and tx_send streams the
- * packet instead. */
-static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
+/* Link the 0x00 at q, after every zero linked so far: it takes the
+ * place of a code, and the code before it gets the distance.  Returns 1
+ * (nothing done) when that is more than 254: a block of 254 non-zero
+ * bytes needs an extra code byte, which does not fit in place. */
+static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
 {
     r8_u8 *c = s->code;
     if (!c)
-        return;
-    for (; q != end; q++) {
-        if (*q)
-            continue;
-        if (q - c > 254) {
-            tx_unlink(s);
-            return;
-        }
-        *c = (r8_u8)(q - c);
-        c = q;
-    }
-    s->code = c;
+        return 0;
+    if (q - c > 254)
+        return 1;
+    *c = (r8_u8)(q - c);
+    s->code = q;
+    return 0;
 }
 
-/* Link the 0x00 at q (a macro: it is on the hot path). */
+/* Link the 0x00 at q; if that cannot be, the chain stops and tx_send
+ * streams the packet instead. */
+static void tx_link(tx_st *s, r8_u8 *q)
+{
+    if (tx_link1(s, q))
+        tx_unlink(s);
+}
+
+/* Link the zeros of q .. end. */
+static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
+{
+    for (; q != end; q++)
+        if (!*q)
+            tx_link(s, q);
+}
+
+/* tx_link on the hot paths: inline in the AVR build (where the band
+ * walk's glue is the cost), a call elsewhere (where code size is). */
+#ifdef R8_ASM_AVR
 #define TX_LINK(s, q)                                          \
     do {                                                       \
         if ((s)->code) {                                       \
@@ -100,6 +111,9 @@ static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
             }                                                  \
         }                                                      \
     } while (0)
+#else
+#define TX_LINK(s, q) tx_link(s, q)
+#endif
 
 /* Send the packet whose body is pkt[1 .. 1+n).  Its zeros up to `from`
  * are linked and s->crc is its CRC up to there; the rest is done here:
@@ -209,10 +223,7 @@ int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
     tx->fp = scratch + tx->pkt_size;
     for (k = 0; k < 4u * tx->nbands; k++)
         tx->fp[k] = 0;
-    tx->xn = tx->xn_last = r8_crc16_xpow(tx->band_bytes);
-    k = (unsigned)cfg->height % (unsigned)cfg->band; /* rows of a short last band */
-    if (k)
-        tx->xn_last = r8_crc16_xpow(r8_fb_bytes(cfg->format, cfg->width, (r8_s16)k));
+    tx->xn = r8_crc16_xpow(tx->band_bytes);
     tx->fcrc = (r8_u16)R8_CRC16_INIT;
     tx->want_full = 1;
     return R8_OK;
@@ -307,82 +318,49 @@ static void tx_fletcher(tx_st *s, const r8_u8 *p, unsigned n)
 #ifndef R8_NO_RLE
 r8_u8 r8_tx_run_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
 {
-    const r8_u8 *q = p + 3;
-    r8_u8 v = *p, j = (r8_u8)(k - 3u);
-    if (!v)
-        while (j >= 4u && !(q[0] | q[1] | q[2] | q[3])) {
-            q += 4;
-            j = (r8_u8)(j - 4u);
-        }
-    while (j && *q == v) {
-        q++;
-        j--;
-    }
-    k = (r8_u8)(k - j);
-    o[0] = k;
+    r8_u8 v = *p, c = 3;
+    while (c < k && p[c] == v)
+        c++;
+    o[0] = c;
     o[1] = v;
     s->crc = r8_crc16_update(s->crc, o, 2);
     if (v) {
-        s->g = r8_crc16_update(s->g, p, k);
-        tx_fletcher(s, p, k);
+        s->g = r8_crc16_update(s->g, p, c);
+        tx_fletcher(s, p, c);
     } else {
-        s->g = r8_crc16_shift(s->g, k);
-        s->f2 = (r8_u8)(s->f2 + (r8_u8)(k * s->f1));
+        s->g = r8_crc16_shift(s->g, c);
+        s->f2 = (r8_u8)(s->f2 + (r8_u8)(c * s->f1));
     }
-    return k;
+    return c;
 }
 
 r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
 {
-    const r8_u8 *q = p;
-    r8_u8 ph, pl, f1, f2, v, w, z = 0;
+    r8_u8 i, v, ph, pl, stop = 0;
     r8_u16 pb;
-    if (k) {
-        v = *q++;
-        w = k;
-        do {
-            if (*q == v && q[1] == v) {
-                c = (r8_u8)(k - w);
-                break;
-            }
-            v = *q++;
-        } while (--w);
-    }
+    for (i = 0; i < k; i++)
+        if (p[i + 1] == p[i] && p[i + 2] == p[i]) {
+            c = i;
+            break;
+        }
     *o = (r8_u8)(0x80u | c);
-    s->crc = r8_crc16_update(s->crc, o, 1);
-    pb = s->crc;
+    s->crc = pb = r8_crc16_update(s->crc, o, 1);
     ph = (r8_u8)(pb >> 8);
     pl = (r8_u8)(pb & 0xFFu);
-    f1 = s->f1;
-    f2 = s->f2;
-    q = p;
-    w = c;
-    do {
-        v = *q++;
+    for (i = 0; i < c; i++) {
+        v = p[i];
         *++o = v;
         R8_CRC16_STEP(ph, pl, v);
-        f1 = (r8_u8)(f1 + v);
-        f2 = (r8_u8)(f2 + f1);
-        if (!v && !z && s->code) {
-            if (o - s->code > 254)
-                z = 0x80; /* too long: the caller undoes the chain */
-            else {
-                *s->code = (r8_u8)(o - s->code);
-                s->code = o;
-            }
-        }
-    } while (--w);
+        if (!v && !stop)
+            stop = tx_link1(s, o);
+    }
     s->crc = (r8_u16)(((r8_u16)ph << 8) | pl);
-    s->f1 = f1;
-    s->f2 = f2;
+    tx_fletcher(s, p, c);
     /* the band's CRC: g * x^(8c) ^ crc(0, literals), where crc(0,
      * literals) = the packet CRC after them ^ the one before them *
-     * x^(8c); few literals are cheaper one by one */
-    if (c < 8u)
-        s->g = r8_crc16_update(s->g, p, c);
-    else
-        s->g = (r8_u16)(r8_crc16_shift((r8_u16)(s->g ^ pb), c) ^ s->crc);
-    return (r8_u8)(c | z);
+     * x^(8c) */
+    s->g = (r8_u16)(r8_crc16_shift((r8_u16)(s->g ^ pb), c) ^ s->crc);
+    return (r8_u8)(c | (stop << 7));
 }
 
 /* RLE-encode the band p[0..n) into o (the bytes r8_rle_encode gives, see
@@ -465,8 +443,6 @@ static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
 unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
 {
     const r8_u8 *q = p, *end = p + n;
-    while (end - q >= 4 && !(q[0] | q[1] | q[2] | q[3]))
-        q += 4;
     while (q != end && !*q)
         q++;
     return (unsigned)(q - p);
@@ -567,7 +543,7 @@ int r8_tx_band(r8_tx *tx, const r8_fb *band)
     xn = tx->xn;
     if (tx->cfg.height - y0 < tx->cfg.band) {
         n = r8_fb_bytes(tx->cfg.format, tx->cfg.width, (r8_s16)(tx->cfg.height - y0));
-        xn = tx->xn_last;
+        xn = r8_crc16_xpow(n);
     }
     tx->raw_bytes += n;
     fp = tx->fp + 4u * idx;
