@@ -115,16 +115,17 @@ static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
 #define TX_LINK(s, q) tx_link(s, q)
 #endif
 
-/* Send the packet whose body is pkt[1 .. 1+n).  Its zeros up to `from`
- * are linked and s->crc is its CRC up to there; the rest is done here:
- * CRC, links, the CRC bytes, the last code, the delimiter, one put.  If
- * the chain stopped, the packet is streamed by r8_cobs_write. */
-static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 *from)
+/* Send the packet whose body is pkt[1 .. 1+n): if `all`, it is not
+ * linked yet and its CRC is to be computed (s is set up here); else it
+ * is linked and its CRC is s->crc.  Then: the CRC bytes, the last code,
+ * the delimiter, one put; or, if the chain stopped, r8_cobs_write. */
+static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 all)
 {
-    r8_u8 *p = s->pkt, *end = p + n + 3;
-    if (from != end - 2) {
-        s->crc = r8_crc16_update(s->crc, from, (unsigned)(end - 2 - from));
-        tx_links(s, from, end - 2);
+    r8_u8 *p = tx->pkt, *end = p + n + 3;
+    if (all) {
+        s->pkt = s->code = p;
+        s->crc = r8_crc16(p + 1, n);
+        tx_links(s, p + 1, end - 2);
     }
     put16(end - 2, s->crc);
     if (!end[-2])
@@ -141,14 +142,6 @@ static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 *from)
         r8_cobs_write(p + 1, n + 2, count_put, tx);
         out(tx, &delim, 1);
     }
-}
-
-/* Start the packet in tx->pkt; its CRC so far is crc. */
-static void tx_start(r8_tx *tx, tx_st *s, r8_u16 crc)
-{
-    s->pkt = tx->pkt;
-    s->code = tx->pkt;
-    s->crc = crc;
 }
 
 static int cfg_ok(const r8_tx_cfg *cfg)
@@ -298,8 +291,7 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     p[13] = tx->cfg.npal;
     for (k = 0; k < 3u * tx->cfg.npal; k++)
         p[R8_WIRE_START_BYTES + k] = tx->cfg.palette[k];
-    tx_start(tx, &s, (r8_u16)R8_CRC16_INIT);
-    tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * tx->cfg.npal, p);
+    tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * tx->cfg.npal, 1);
     return R8_OK;
 }
 
@@ -462,9 +454,9 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
     put16(b + 1, tx->frame);
     put16(b + 3, y0);
     b[5] = tx->cfg.codec;
-    tx_start(tx, &s, (r8_u16)R8_CRC16_INIT);
 #ifndef R8_NO_RLE
     if (b[5] == R8_CODEC_RLE) {
+        s.pkt = s.code = tx->pkt;
         s.crc = r8_crc16_update(tx->hcrc, b + 3, 3);
         /* header zeros (no code is more than 5 bytes back) */
         for (from = b + 1; from != b + 5; from++)
@@ -477,7 +469,6 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
         from += len;
         if (len >= n) {
             tx_unlink(&s);
-            tx_start(tx, &s, (r8_u16)R8_CRC16_INIT);
             from = b;
         }
     }
@@ -517,7 +508,7 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
                 b[R8_WIRE_BAND_HDR + k] = src[k];
         }
     }
-    tx_send(tx, &s, R8_WIRE_BAND_HDR + len, from);
+    tx_send(tx, &s, R8_WIRE_BAND_HDR + len, (r8_u8)(from == b));
     tx->sent++;
 }
 
@@ -571,8 +562,7 @@ int r8_tx_frame_end(r8_tx *tx)
     put16(p + 1, tx->frame);
     put16(p + 3, tx->sent);
     put16(p + 5, tx->fcrc);
-    tx_start(tx, &s, (r8_u16)R8_CRC16_INIT);
-    tx_send(tx, &s, R8_WIRE_END_BYTES, p);
+    tx_send(tx, &s, R8_WIRE_END_BYTES, 1);
     tx->in_frame = 0;
     return R8_OK;
 }
