@@ -472,8 +472,9 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
             from = b;
         }
     }
+    if (from == b)
 #endif
-    if (from == b) {
+    {
         /* the fingerprint (leading zeros change it not) */
         s.f1 = s.f2 = 0;
         s.g = r8_crc16_update(0, src + z, n - z);
@@ -494,19 +495,19 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
         if (!tx->full && !changed)
             return;
     }
-    if (from == b) {
-        k = (unsigned)R8_E_SPACE;
-#ifndef R8_NO_LZ77
-        if (b[5] == R8_CODEC_LZ77)
-            k = (unsigned)r8_lz77_encode(src, n, b + R8_WIRE_BAND_HDR, n - 1u, &len);
+#ifndef R8_NO_RLE
+    if (from == b)
 #endif
-        if (k != R8_OK) {
-            /* raw: the codec would not make the band smaller */
-            b[5] = R8_CODEC_RAW;
-            len = n;
-            for (k = 0; k < n; k++)
-                b[R8_WIRE_BAND_HDR + k] = src[k];
-        }
+#ifndef R8_NO_LZ77
+    if (b[5] != R8_CODEC_LZ77 ||
+        r8_lz77_encode(src, n, b + R8_WIRE_BAND_HDR, n - 1u, &len) != R8_OK)
+#endif
+    {
+        /* raw: the codec is raw, or would not make the band smaller */
+        b[5] = R8_CODEC_RAW;
+        len = n;
+        for (k = 0; k < n; k++)
+            b[R8_WIRE_BAND_HDR + k] = src[k];
     }
     tx_send(tx, &s, R8_WIRE_BAND_HDR + len, (r8_u8)(from == b));
     tx->sent++;

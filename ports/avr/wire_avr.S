@@ -98,7 +98,9 @@ r8_crc_tab:
 #endif
 
 /* r8_u16 r8_crc16_update(r8_u16 crc, const r8_u8 *p, unsigned n)
- *   crc r25:r24, p r23:r22, n r21:r20 -> r25:r24  17 (23) cycles/byte */
+ *   crc r25:r24, p r23:r22, n r21:r20 -> r25:r24  17 (23) cycles/byte
+ * (Each routine has its own section: --gc-sections drops the unused.) */
+        .section .text.r8_crc16_update, "ax", @progbits
         .global r8_crc16_update
         .type   r8_crc16_update, @function
 r8_crc16_update:
@@ -132,6 +134,7 @@ r8_crc16_update:
         eor     r24, r26        $ \
         eor     r25, r27
 
+        .section .text.r8_crc16_mul, "ax", @progbits
         .global r8_crc16_mul
         .type   r8_crc16_mul, @function
 r8_crc16_mul:
@@ -154,6 +157,7 @@ r8_crc16_mul:
  *   s r25:r24, o r23:r22, p r21:r20, k r18 -> r24 (the count)
  * r8_tx_st: +0 crc (low, high), +2 f1, +3 f2, +8 g (low, high).
  * The run: zeros 8 at a time (~3.6 cycles a byte), others one by one. */
+        .section .text.r8_tx_run, "ax", @progbits
         .global r8_tx_run
         .type   r8_tx_run, @function
 r8_tx_run:
@@ -250,6 +254,7 @@ r8_tx_run:
  * CRC, Fletcher (22 (28) cycles a byte), each 0x00 linked into the COBS
  * chain (bit 7 of the result: a block got too long, the caller undoes
  * the chain); then g = (g ^ Pb) * x^(8L) ^ Pa. */
+        .section .text.r8_tx_lit, "ax", @progbits
         .global r8_tx_lit
         .type   r8_tx_lit, @function
 r8_tx_lit:
@@ -384,6 +389,7 @@ r8_tx_lit:
 /* unsigned r8_tx_zeros(const r8_u8 *p, unsigned n)
  *   p r25:r24, n r23:r22 -> r25:r24: how many bytes of p[0..n) are 0x00
  * before the first other.  8 at a time: ~3.6 cycles a byte. */
+        .section .text.r8_tx_zeros, "ax", @progbits
         .global r8_tx_zeros
         .type   r8_tx_zeros, @function
 r8_tx_zeros:
