@@ -169,49 +169,59 @@ static int cfg_ok(const r8_tx_cfg *cfg)
 
 unsigned r8_tx_band_bytes(const r8_tx_cfg *cfg)
 {
-    r8_u32 b;
+    unsigned b, w;
     if (!cfg_ok(cfg))
         return 0;
-    /* computed in 32 bits: may exceed an unsigned on 16-bit targets */
-    b = (r8_u32)cfg->band;
+    b = (unsigned)cfg->band;   /* both <= R8_WIRE_MAX_DIM */
+    w = (unsigned)cfg->width;
     if (cfg->format == R8_FMT_PAGE1)
         b = (b + 7u) >> 3;
     if (cfg->format == R8_FMT_ROW1)
-        b *= (r8_u32)(((unsigned)cfg->width + 7u) >> 3);
-    else
-        b *= (r8_u32)cfg->width;
-    if (b > R8_WIRE_MAX_BAND)
+        w = (w + 7u) >> 3;
+    /* b * w may exceed an unsigned on 16-bit targets */
+    if (b > R8_WIRE_MAX_BAND / w)
         return 0;
-    return (unsigned)b;
+    return b * w;
+}
+
+/* The packet scratch (R8_WIRE_PKT_BYTES + 2) for band bytes bb; 0 if
+ * cfg is invalid.  (Computed here with an if: the macro's form, which
+ * constant expressions need, costs a multiply on the 8-bit targets.) */
+static unsigned tx_pkt_bytes(const r8_tx_cfg *cfg, unsigned bb)
+{
+    unsigned p = 3u * (unsigned)cfg->npal + R8_WIRE_START_BYTES;
+    if (!bb)
+        return 0;
+    if (bb + R8_WIRE_BAND_HDR > p)
+        p = bb + R8_WIRE_BAND_HDR;
+    return p + R8_WIRE_CRC_BYTES + 2u;
 }
 
 unsigned r8_tx_scratch(const r8_tx_cfg *cfg)
 {
-    unsigned bb = r8_tx_band_bytes(cfg);
-    if (!bb)
+    unsigned p = tx_pkt_bytes(cfg, r8_tx_band_bytes(cfg));
+    if (!p)
         return 0;
-    return R8_TX_SCRATCH_BYTES(bb, R8_WIRE_NBANDS(cfg->height, cfg->band), cfg->npal);
+    return p + 4u * R8_WIRE_NBANDS(cfg->height, cfg->band);
 }
 
 int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
                unsigned scratch_size, r8_put_fn put, void *ctx)
 {
     unsigned need = r8_tx_scratch(cfg), k;
+    r8_u8 *q = (r8_u8 *)tx;
     if (!need || !put)
         return R8_E_ARG;
     if (scratch_size < need)
         return R8_E_SPACE;
-    {
-        r8_u8 *q = (r8_u8 *)tx; /* every counter and flag 0 */
-        for (k = sizeof *tx; k; k--)
-            *q++ = 0;
-    }
+    for (k = sizeof *tx; k; k--) /* every counter and flag 0 */
+        *q++ = 0;
     tx->cfg = *cfg;
     tx->put = put;
     tx->ctx = ctx;
     tx->band_bytes = r8_tx_band_bytes(cfg);
     tx->nbands = R8_WIRE_NBANDS(cfg->height, cfg->band);
-    tx->pkt_size = R8_WIRE_PKT_BYTES(tx->band_bytes, cfg->npal) + 2u;
+    tx->pkt_size = tx_pkt_bytes(cfg, tx->band_bytes);
     tx->pkt = scratch;
     tx->fp = scratch + tx->pkt_size;
     for (k = 0; k < 4u * tx->nbands; k++)
@@ -275,13 +285,12 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     tx->next_y = 0;
     tx->next_idx = 0;
     tx->in_frame = 1;
-    /* the CRC of the first 3 bytes of this frame's BAND packets */
-    p[0] = R8_PKT_BAND;
-    put16(p + 1, frame);
-    tx->hcrc = r8_crc16(p, 3);
     p[0] = R8_PKT_FRAME_START;
     p[1] = R8_WIRE_VERSION;
     put16(p + 2, frame);
+    /* the CRC of the first 3 bytes of this frame's BAND packets:
+     * R8_PKT_BAND (0xC1B2 from 0xFFFF) and the frame number */
+    tx->hcrc = r8_crc16_update(0xC1B2u, p + 2, 2);
     put16(p + 4, (unsigned)tx->cfg.width);
     put16(p + 6, (unsigned)tx->cfg.height);
     p[8] = tx->cfg.format;
