@@ -81,22 +81,6 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
     return 0;
 }
 
-/* Link the 0x00 at q; if that cannot be, the chain stops and tx_send
- * streams the packet instead. */
-static void tx_link(tx_st *s, r8_u8 *q)
-{
-    if (tx_link1(s, q))
-        tx_unlink(s);
-}
-
-/* Link the zeros of q .. end. */
-static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
-{
-    for (; q != end; q++)
-        if (!*q)
-            tx_link(s, q);
-}
-
 /* tx_link on the hot paths: inline in the AVR build (where the band
  * walk's glue is the cost), a call elsewhere (where code size is). */
 #ifdef R8_ASM_AVR
@@ -112,8 +96,23 @@ static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
         }                                                      \
     } while (0)
 #else
+/* Link the 0x00 at q; if that cannot be, the chain stops and tx_send
+ * streams the packet instead. */
+static void tx_link(tx_st *s, r8_u8 *q)
+{
+    if (tx_link1(s, q))
+        tx_unlink(s);
+}
 #define TX_LINK(s, q) tx_link(s, q)
 #endif
+
+/* Link the zeros of q .. end. */
+static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
+{
+    for (; q != end; q++)
+        if (!*q)
+            TX_LINK(s, q);
+}
 
 /* Send the packet whose body is pkt[1 .. 1+n): if `all`, it is not
  * linked yet and its CRC is to be computed (s is set up here); else it
