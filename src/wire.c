@@ -65,6 +65,7 @@ static void tx_unlink(tx_st *s)
     s->code = 0;
 }
 
+#if !defined(R8_NO_RLE) || !defined(R8_ASM_AVR)
 /* Link the 0x00 at q, after every zero linked so far: it takes the
  * place of a code, and the code before it gets the distance.  Returns 1
  * (nothing done) when that is more than 254: a block of 254 non-zero
@@ -80,6 +81,7 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
     s->code = q;
     return 0;
 }
+#endif
 
 /* tx_link on the hot paths: inline in the AVR build (where the band
  * walk's glue is the cost), a call elsewhere (where code size is). */
