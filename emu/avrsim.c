@@ -79,12 +79,22 @@ static int prof_cmp_cyc(const void *a, const void *b)
     return x->cyc < y->cyc ? 1 : x->cyc > y->cyc ? -1 : 0;
 }
 
+/* The linker's absolute symbols (memory region sizes, __stack) are not
+ * code: an address range after one would be charged to it. */
+static int is_abs_symbol(const char *name)
+{
+    size_t n = strlen(name);
+    return !strcmp(name, "__stack") ||
+           (n > 9 && (!strcmp(name + n - 9, "_LENGTH__") || !strcmp(name + n - 9, "_ORIGIN__")));
+}
+
 static void prof_init(elf_firmware_t *fw)
 {
     uint32_t i;
     prof = calloc(fw->symbolcount + 1, sizeof *prof);
     for (i = 0; i < fw->symbolcount; i++)
-        if (fw->symbol[i]->addr < 0x800000u && fw->symbol[i]->symbol[0] != '.') {
+        if (fw->symbol[i]->addr < 0x800000u && fw->symbol[i]->symbol[0] != '.' &&
+            !is_abs_symbol(fw->symbol[i]->symbol)) {
             prof[nprof].addr = fw->symbol[i]->addr;
             prof[nprof].name = fw->symbol[i]->symbol;
             nprof++;

@@ -63,6 +63,12 @@
 #define R8_CRC16_INIT 0xFFFFu
 r8_u16 r8_crc16_update(r8_u16 crc, const r8_u8 *p, unsigned n);
 r8_u16 r8_crc16(const r8_u8 *p, unsigned n);
+/* CRC algebra: a CRC state is a polynomial over GF(2) modulo P = 0x11021.
+ * r8_crc16_mul(a, b) = a * b mod P; r8_crc16_xpow(n) = x^(8n) mod P, so
+ * r8_crc16_mul(c, r8_crc16_xpow(n)) = r8_crc16_update(c, <n zero bytes>),
+ * and r8_crc16_update(c, d) = that ^ r8_crc16_update(0, d) for n = |d|. */
+r8_u16 r8_crc16_mul(r8_u16 a, r8_u16 b);
+r8_u16 r8_crc16_xpow(unsigned n);
 
 /* ---- COBS (Cheshire & Baker).  Encoded size of n bytes is at most
  * R8_COBS_BOUND(n) (no delimiter included). */
@@ -89,9 +95,11 @@ void r8_cobs_write(const r8_u8 *src, unsigned n, r8_put_fn put, void *ctx);
 #define R8_WIRE_PKT_BYTES(band_bytes, npal) \
     (R8_WIRE_MAX_((unsigned)(band_bytes) + R8_WIRE_BAND_HDR, \
                   R8_WIRE_START_BYTES + 3u * (unsigned)(npal)) + R8_WIRE_CRC_BYTES)
-/* Encoder scratch: one packet plus 4 bytes of fingerprint per band. */
+/* Encoder scratch: one packet with a byte before it and one after it
+ * (the packet is COBS-encoded in place and sent with its delimiter in
+ * one put call), plus 4 bytes of fingerprint per band. */
 #define R8_TX_SCRATCH_BYTES(band_bytes, nbands, npal) \
-    (R8_WIRE_PKT_BYTES(band_bytes, npal) + 4u * (unsigned)(nbands))
+    (R8_WIRE_PKT_BYTES(band_bytes, npal) + 2u + 4u * (unsigned)(nbands))
 
 /* ---- the frame encoder (firmware side) */
 typedef struct r8_tx_cfg {
@@ -110,15 +118,19 @@ typedef struct r8_tx {
     r8_tx_cfg cfg;
     r8_put_fn put;
     void *ctx;
-    r8_u8 *pkt;              /* packet scratch */
+    r8_u8 *pkt;              /* packet scratch: code byte, body, CRC, 0 */
     unsigned pkt_size;
     r8_u8 *fp;               /* 4-byte fingerprint per band */
     unsigned nbands;
     unsigned band_bytes;     /* raw bytes of a full band */
+    r8_u16 xn;               /* x^(8n) mod P, n = band_bytes */
+    r8_s16 next_y;           /* y0 of the band expected next */
+    unsigned next_idx;       /* its index */
     r8_u16 frame;            /* current frame number */
     r8_u16 since_full;       /* frames since the last full frame */
     r8_u16 sent;             /* bands sent in this frame */
     r8_u16 fcrc;             /* running CRC of the raw frame */
+    r8_u16 hcrc;             /* CRC of this frame's BAND header bytes 0..2 */
     r8_u8 full;              /* this frame is full */
     r8_u8 want_full;         /* a full frame was requested / is due */
     r8_u8 in_frame;

@@ -36,8 +36,11 @@ XINC       := -Iports -Iexamples/spin
 FW_DEFS    := -DFW_HAVE_APP
 XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
+# AVR assembly kernels (ports/avr/*.S; each has a C89 reference chosen
+# by R8_ASM_AVR, see src/r8crc.h) go into the AVR libraries.
+AVR_ASM    := $(wildcard ports/avr/*.S)
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
-              -ffunction-sections -fdata-sections $(INC) $(XINC)
+              -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_AVR
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
@@ -95,7 +98,10 @@ $(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -Itests/unity -c $$< -o $$@
-$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o)
+$(XB)/$(1)/obj/%.o: ports/avr/%.S
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) -c $$< -o $$@
+$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_ASM:ports/avr/%.S=$(XB)/$(1)/obj/%.o)
 	rm -f $$@ && avr-ar rcs $$@ $$^
 endef
 $(eval $(call AVR_OBJ,avr328))

@@ -1,42 +1,10 @@
 /* cobs.c - Consistent Overhead Byte Stuffing (Cheshire & Baker 1999).
  * A block is a code byte k (1..255) and k-1 non-zero bytes; a code
  * below 255 stands for a 0x00 after its block, except at the end of the
- * packet.  No 0x00 appears in the output, so 0x00 delimits packets. */
+ * packet.  No 0x00 appears in the output, so 0x00 delimits packets.
+ * r8_cobs_encode is in cobs_enc.c: the firmware does not need it (the
+ * 6502 and Z80 linkers take whole files). */
 #include "r8wire.h"
-
-int r8_cobs_encode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
-                   unsigned *out_len)
-{
-    unsigned i, o = 1, code_at = 0;
-    r8_u8 code = 1;
-    *out_len = 0;
-    if (cap < 1u)
-        return R8_E_SPACE;
-    for (i = 0; i < n; i++) {
-        if (src[i] == 0) {
-            dst[code_at] = code;
-            if (o >= cap)
-                return R8_E_SPACE;
-            code_at = o++;
-            code = 1;
-        } else {
-            if (o >= cap)
-                return R8_E_SPACE;
-            dst[o++] = src[i];
-            code++;
-            if (code == 0xFF && i + 1 < n) {
-                dst[code_at] = code;
-                if (o >= cap)
-                    return R8_E_SPACE;
-                code_at = o++;
-                code = 1;
-            }
-        }
-    }
-    dst[code_at] = code;
-    *out_len = o;
-    return R8_OK;
-}
 
 int r8_cobs_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
                    unsigned *out_len)

@@ -3,6 +3,8 @@
  * bytes of its own input: no hash table, no memory of its own. */
 #include "r8codec.h"
 
+#ifndef R8_NO_LZ77 /* -DR8_NO_LZ77 leaves the codec out (see rle.c) */
+
 #if R8_LZ77_WINDOW < 1 || R8_LZ77_WINDOW > 32767
 #error "R8_LZ77_WINDOW must be 1..32767"
 #endif
@@ -119,3 +121,6 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     *out_len = o;
     return R8_OK;
 }
+#else
+typedef int r8_lz77_left_out; /* (ISO C wants a declaration in a file) */
+#endif

@@ -1,5 +1,7 @@
 /* rle.c - the seed's run-length codec (see r8codec.h for the format)
- * and the codec dispatch. */
+ * and the codec dispatch.  -DR8_NO_RLE / -DR8_NO_LZ77 leave a codec out
+ * (src/wire.c rejects it too): the dispatch then answers R8_E_ARG for
+ * it, as for an unknown codec. */
 #include "r8codec.h"
 
 static int streq(const char *a, const char *b)
@@ -27,6 +29,7 @@ const char *r8_codec_name(r8_u8 codec)
     return codec < R8_CODEC_COUNT ? codec_names[codec] : 0;
 }
 
+#ifndef R8_NO_RLE
 /* Emit the pending raw run src[start .. start+len). */
 static int put_raw(const r8_u8 *src, unsigned len, r8_u8 *dst, unsigned cap,
                    unsigned *o)
@@ -108,6 +111,7 @@ int r8_rle_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     *out_len = o;
     return R8_OK;
 }
+#endif
 
 static int raw_copy(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
                     unsigned *out_len)
@@ -128,10 +132,14 @@ int r8_codec_encode(r8_u8 codec, const r8_u8 *src, unsigned n, r8_u8 *dst,
     switch (codec) {
     case R8_CODEC_RAW:
         return raw_copy(src, n, dst, cap, out_len);
+#ifndef R8_NO_RLE
     case R8_CODEC_RLE:
         return r8_rle_encode(src, n, dst, cap, out_len);
+#endif
+#ifndef R8_NO_LZ77
     case R8_CODEC_LZ77:
         return r8_lz77_encode(src, n, dst, cap, out_len);
+#endif
     default:
         *out_len = 0;
         return R8_E_ARG;
@@ -144,10 +152,14 @@ int r8_codec_decode(r8_u8 codec, const r8_u8 *src, unsigned n, r8_u8 *dst,
     switch (codec) {
     case R8_CODEC_RAW:
         return raw_copy(src, n, dst, cap, out_len);
+#ifndef R8_NO_RLE
     case R8_CODEC_RLE:
         return r8_rle_decode(src, n, dst, cap, out_len);
+#endif
+#ifndef R8_NO_LZ77
     case R8_CODEC_LZ77:
         return r8_lz77_decode(src, n, dst, cap, out_len);
+#endif
     default:
         *out_len = 0;
         return R8_E_ARG;

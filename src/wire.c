@@ -1,11 +1,39 @@
 /* wire.c - the frame encoder (firmware side) of the display protocol,
- * see r8wire.h and docs/protocol.md.  Memory: one packet scratch (a
- * band's raw size plus header and CRC) and 4 bytes per band for the
- * dirty-band fingerprints; bands are encoded straight into the packet
- * and COBS-streamed out without another buffer. */
-#include "r8wire.h"
+ * see r8wire.h and docs/protocol.md.
+ *
+ * Memory: one packet scratch (a band's raw size plus header and CRC, and
+ * a byte before and after it) and 4 bytes per band for the dirty-band
+ * fingerprints.  A packet's body is built at pkt + 1, COBS-encoded in
+ * place (pkt[0] takes the first code byte, each 0x00 the code of the
+ * block after it) and handed to put in one call, delimiter included.
+ *
+ * Speed: with RLE (tx_rle) each band is walked once.  The walk writes
+ * the payload (the bytes r8_rle_encode gives) into the packet, feeds the
+ * packet CRC with it and links its zeros into the COBS chain.  The CRC
+ * of the raw band (from 0) is derived from the packet CRC at each
+ * literal run and shifted over each zero run (src/r8crc.h), and the
+ * frame CRC takes it with one multiply, so runs of zeros cost no CRC
+ * work per byte; they are scanned 4 bytes at a time.
+ *
+ * Fingerprint of a band: its CRC-16 from 0 (r8_crc16_update(0, ...))
+ * and its Fletcher-16.  (The CRC from 0xFFFF differs from it by a
+ * constant for a given band size, so the bands sent are the same.)
+ *
+ * Codecs left out: -DR8_NO_RLE, -DR8_NO_LZ77 (the config is then
+ * rejected with R8_E_ARG; raw is always built in). */
+#include "r8crc.h"
+
+/* The hot loops are kept out of line: each then has the registers to
+ * itself (avr-gcc spills the pointers otherwise). */
+#if defined(__GNUC__)
+#define TX_NOINLINE __attribute__((noinline))
+#else
+#define TX_NOINLINE
+#endif
 
 static const r8_u8 delim = 0;
+
+typedef r8_tx_st tx_st;
 
 static void put16(r8_u8 *p, unsigned v)
 {
@@ -24,18 +52,111 @@ static void count_put(void *ctx, const r8_u8 *p, unsigned n)
     out((r8_tx *)ctx, p, n);
 }
 
-/* Append the CRC to the body tx->pkt[0..n) and send the packet. */
-static void send_pkt(r8_tx *tx, unsigned n)
+/* Put back the zeros linked so far: the chain stops (s->code = 0). */
+static void tx_unlink(tx_st *s)
 {
-    put16(tx->pkt + n, r8_crc16(tx->pkt, n));
-    r8_cobs_write(tx->pkt, n + R8_WIRE_CRC_BYTES, count_put, tx);
-    out(tx, &delim, 1);
+    r8_u8 *q = s->pkt, *c = s->code, d;
+    if (c)
+        while (q != c) {
+            d = *q;
+            *q = 0;
+            q += d;
+        }
+    s->code = 0;
+}
+
+#if !defined(R8_NO_RLE) || !defined(R8_ASM_AVR)
+/* Link the 0x00 at q, after every zero linked so far: it takes the
+ * place of a code, and the code before it gets the distance.  Returns 1
+ * (nothing done) when that is more than 254: a block of 254 non-zero
+ * bytes needs an extra code byte, which does not fit in place. */
+static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
+{
+    r8_u8 *c = s->code;
+    if (!c)
+        return 0;
+    if (q - c > 254)
+        return 1;
+    *c = (r8_u8)(q - c);
+    s->code = q;
+    return 0;
+}
+#endif
+
+/* tx_link on the hot paths: inline in the AVR build (where the band
+ * walk's glue is the cost), a call elsewhere (where code size is). */
+#ifdef R8_ASM_AVR
+#define TX_LINK(s, q)                                          \
+    do {                                                       \
+        if ((s)->code) {                                       \
+            if ((q) - (s)->code > 254) {                       \
+                tx_unlink(s);                                  \
+            } else {                                           \
+                *(s)->code = (r8_u8)((q) - (s)->code);         \
+                (s)->code = (q);                               \
+            }                                                  \
+        }                                                      \
+    } while (0)
+#else
+/* Link the 0x00 at q; if that cannot be, the chain stops and tx_send
+ * streams the packet instead. */
+static void tx_link(tx_st *s, r8_u8 *q)
+{
+    if (tx_link1(s, q))
+        tx_unlink(s);
+}
+#define TX_LINK(s, q) tx_link(s, q)
+#endif
+
+/* Link the zeros of q .. end. */
+static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
+{
+    for (; q != end; q++)
+        if (!*q)
+            TX_LINK(s, q);
+}
+
+/* Send the packet whose body is pkt[1 .. 1+n): if `all`, it is not
+ * linked yet and its CRC is to be computed (s is set up here); else it
+ * is linked and its CRC is s->crc.  Then: the CRC bytes, the last code,
+ * the delimiter, one put; or, if the chain stopped, r8_cobs_write. */
+static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 all)
+{
+    r8_u8 *p = tx->pkt, *end = p + n + 3;
+    if (all) {
+        s->pkt = s->code = p;
+        s->crc = r8_crc16(p + 1, n);
+        tx_links(s, p + 1, end - 2);
+    }
+    put16(end - 2, s->crc);
+    if (!end[-2])
+        TX_LINK(s, end - 2);
+    if (!end[-1])
+        TX_LINK(s, end - 1);
+    if (s->code && end - s->code > 255)
+        tx_unlink(s);
+    if (s->code) {
+        *s->code = (r8_u8)(end - s->code);
+        *end = 0;
+        out(tx, p, n + 4);
+    } else {
+        r8_cobs_write(p + 1, n + 2, count_put, tx);
+        out(tx, &delim, 1);
+    }
 }
 
 static int cfg_ok(const r8_tx_cfg *cfg)
 {
     if (cfg->format > R8_FMT_IDX8 || cfg->codec >= R8_CODEC_COUNT)
         return 0;
+#ifdef R8_NO_RLE
+    if (cfg->codec == R8_CODEC_RLE)
+        return 0;
+#endif
+#ifdef R8_NO_LZ77
+    if (cfg->codec == R8_CODEC_LZ77)
+        return 0;
+#endif
     if (cfg->width <= 0 || cfg->height <= 0 || cfg->band <= 0 ||
         cfg->width > R8_WIRE_MAX_DIM || cfg->height > R8_WIRE_MAX_DIM ||
         cfg->band > cfg->height)
@@ -49,60 +170,66 @@ static int cfg_ok(const r8_tx_cfg *cfg)
 
 unsigned r8_tx_band_bytes(const r8_tx_cfg *cfg)
 {
-    r8_u32 b;
+    unsigned b, w;
     if (!cfg_ok(cfg))
         return 0;
-    /* computed in 32 bits: may exceed an unsigned on 16-bit targets */
-    b = (r8_u32)cfg->band;
+    b = (unsigned)cfg->band;   /* both <= R8_WIRE_MAX_DIM */
+    w = (unsigned)cfg->width;
     if (cfg->format == R8_FMT_PAGE1)
         b = (b + 7u) >> 3;
     if (cfg->format == R8_FMT_ROW1)
-        b *= (r8_u32)(((unsigned)cfg->width + 7u) >> 3);
-    else
-        b *= (r8_u32)cfg->width;
-    if (b > R8_WIRE_MAX_BAND)
+        w = (w + 7u) >> 3;
+    /* b * w may exceed an unsigned on 16-bit targets */
+    if (b > R8_WIRE_MAX_BAND / w)
         return 0;
-    return (unsigned)b;
+    return b * w;
+}
+
+/* The packet scratch (R8_WIRE_PKT_BYTES + 2) for band bytes bb; 0 if
+ * cfg is invalid.  (Computed here with an if: the macro's form, which
+ * constant expressions need, costs a multiply on the 8-bit targets.) */
+static unsigned tx_pkt_bytes(const r8_tx_cfg *cfg, unsigned bb)
+{
+    unsigned p = 3u * (unsigned)cfg->npal + R8_WIRE_START_BYTES;
+    if (!bb)
+        return 0;
+    if (bb + R8_WIRE_BAND_HDR > p)
+        p = bb + R8_WIRE_BAND_HDR;
+    return p + R8_WIRE_CRC_BYTES + 2u;
 }
 
 unsigned r8_tx_scratch(const r8_tx_cfg *cfg)
 {
-    unsigned bb = r8_tx_band_bytes(cfg);
-    if (!bb)
+    unsigned p = tx_pkt_bytes(cfg, r8_tx_band_bytes(cfg));
+    if (!p)
         return 0;
-    return R8_TX_SCRATCH_BYTES(bb, R8_WIRE_NBANDS(cfg->height, cfg->band), cfg->npal);
+    return p + 4u * R8_WIRE_NBANDS(cfg->height, cfg->band);
 }
 
 int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
                unsigned scratch_size, r8_put_fn put, void *ctx)
 {
     unsigned need = r8_tx_scratch(cfg), k;
+    r8_u8 *q = (r8_u8 *)tx;
     if (!need || !put)
         return R8_E_ARG;
     if (scratch_size < need)
         return R8_E_SPACE;
+    for (k = sizeof *tx; k; k--) /* every counter and flag 0 */
+        *q++ = 0;
     tx->cfg = *cfg;
     tx->put = put;
     tx->ctx = ctx;
     tx->band_bytes = r8_tx_band_bytes(cfg);
     tx->nbands = R8_WIRE_NBANDS(cfg->height, cfg->band);
-    tx->pkt_size = R8_WIRE_PKT_BYTES(tx->band_bytes, cfg->npal);
+    tx->pkt_size = tx_pkt_bytes(cfg, tx->band_bytes);
     tx->pkt = scratch;
     tx->fp = scratch + tx->pkt_size;
     for (k = 0; k < 4u * tx->nbands; k++)
         tx->fp[k] = 0;
-    tx->frame = 0;
-    tx->since_full = 0;
-    tx->sent = 0;
+    tx->xn = r8_crc16_xpow(tx->band_bytes);
     tx->fcrc = (r8_u16)R8_CRC16_INIT;
-    tx->full = 0;
     tx->want_full = 1;
-    tx->in_frame = 0;
-    tx->rx_len = 0;
-    tx->keys = 0;
-    tx->inputs = 0;
-    tx->bytes = 0;
-    tx->raw_bytes = 0;
     return R8_OK;
 }
 
@@ -149,8 +276,9 @@ int r8_tx_rx(r8_tx *tx, r8_u8 c)
 
 int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
 {
-    r8_u8 *p = tx->pkt;
+    r8_u8 *p = tx->pkt + 1;
     unsigned k;
+    tx_st s;
     if (tx->in_frame)
         return R8_E_ARG;
     if (tx->cfg.full_period && tx->since_full >= tx->cfg.full_period)
@@ -164,10 +292,15 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     tx->frame = frame;
     tx->sent = 0;
     tx->fcrc = (r8_u16)R8_CRC16_INIT;
+    tx->next_y = 0;
+    tx->next_idx = 0;
     tx->in_frame = 1;
     p[0] = R8_PKT_FRAME_START;
     p[1] = R8_WIRE_VERSION;
     put16(p + 2, frame);
+    /* the CRC of the first 3 bytes of this frame's BAND packets:
+     * R8_PKT_BAND (0xC1B2 from 0xFFFF) and the frame number */
+    tx->hcrc = r8_crc16_update(0xC1B2u, p + 2, 2);
     put16(p + 4, (unsigned)tx->cfg.width);
     put16(p + 6, (unsigned)tx->cfg.height);
     p[8] = tx->cfg.format;
@@ -177,71 +310,279 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     p[13] = tx->cfg.npal;
     for (k = 0; k < 3u * tx->cfg.npal; k++)
         p[R8_WIRE_START_BYTES + k] = tx->cfg.palette[k];
-    send_pkt(tx, R8_WIRE_START_BYTES + 3u * tx->cfg.npal);
+    tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * tx->cfg.npal, 1);
     return R8_OK;
+}
+
+/* Fletcher-16 sums of p[0..n) on from s->f1, s->f2. */
+static void tx_fletcher(tx_st *s, const r8_u8 *p, unsigned n)
+{
+    r8_u8 f1 = s->f1, f2 = s->f2;
+    while (n--) {
+        f1 = (r8_u8)(f1 + *p++);
+        f2 = (r8_u8)(f2 + f1);
+    }
+    s->f1 = f1;
+    s->f2 = f2;
+}
+
+#ifndef R8_NO_RLE
+r8_u8 r8_tx_run_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
+{
+    r8_u8 v = *p, c = 3;
+    while (c < k && p[c] == v)
+        c++;
+    o[0] = c;
+    o[1] = v;
+    s->crc = r8_crc16_update(s->crc, o, 2);
+    if (v) {
+        s->g = r8_crc16_update(s->g, p, c);
+        tx_fletcher(s, p, c);
+    } else {
+        s->g = r8_crc16_shift(s->g, c);
+        s->f2 = (r8_u8)(s->f2 + (r8_u8)(c * s->f1));
+    }
+    return c;
+}
+
+r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
+{
+    r8_u8 i, v, ph, pl, stop = 0;
+    r8_u16 pb;
+    for (i = 0; i < k; i++)
+        if (p[i + 1] == p[i] && p[i + 2] == p[i]) {
+            c = i;
+            break;
+        }
+    *o = (r8_u8)(0x80u | c);
+    s->crc = pb = r8_crc16_update(s->crc, o, 1);
+    ph = (r8_u8)(pb >> 8);
+    pl = (r8_u8)(pb & 0xFFu);
+    for (i = 0; i < c; i++) {
+        v = p[i];
+        *++o = v;
+        R8_CRC16_STEP(ph, pl, v);
+        if (!v && !stop)
+            stop = tx_link1(s, o);
+    }
+    s->crc = (r8_u16)(((r8_u16)ph << 8) | pl);
+    tx_fletcher(s, p, c);
+    /* the band's CRC: g * x^(8c) ^ crc(0, literals), where crc(0,
+     * literals) = the packet CRC after them ^ the one before them *
+     * x^(8c) */
+    s->g = (r8_u16)(r8_crc16_shift((r8_u16)(s->g ^ pb), c) ^ s->crc);
+    return (r8_u8)(c | (stop << 7));
+}
+
+/* RLE-encode the band p[0..n) into o (the bytes r8_rle_encode gives, see
+ * r8codec.h), at most cap bytes: the payload goes on s's packet CRC and
+ * COBS chain, s gets the band's CRC from 0 and Fletcher sums.  Returns
+ * the payload length, or cap + 1 when it does not fit (nothing is
+ * written past o + cap). */
+static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
+                       unsigned cap, unsigned z)
+{
+    const r8_u8 *end = p + n;
+    r8_u8 *o0 = o;
+    unsigned room = cap, left;
+    r8_u8 c, k, full;
+    s->f1 = s->f2 = 0;
+    s->g = 0;
+    /* the z leading zeros: runs of up to 127 (a band's CRC from 0 and its
+     * Fletcher sums stay 0); fewer than 3 left join the next token */
+    while (z >= 3u) {
+        c = R8_RLE_MAX;
+        if (z < R8_RLE_MAX)
+            c = (r8_u8)z;
+        if (room < 2u)
+            return cap + 1u;
+        room -= 2u;
+        o[0] = c;
+        o[1] = 0;
+        s->crc = r8_crc16_update(s->crc, o, 2);
+        TX_LINK(s, o + 1);
+        o += 2;
+        p += c;
+        z -= c;
+    }
+    while (p != end) {
+        left = (unsigned)(end - p);
+        c = R8_RLE_MAX; /* the most bytes a token takes */
+        if (left < R8_RLE_MAX)
+            c = (r8_u8)left;
+        if (c >= 3u && p[1] == *p && p[2] == *p) {
+            /* a run of 3..c equal bytes */
+            if (room < 2u)
+                return cap + 1u;
+            room -= 2u;
+            c = r8_tx_run(s, o, p, c);
+            if (!o[1])
+                TX_LINK(s, o + 1);
+            o += 2;
+        } else {
+            /* literals; k: the positions a run of 3 may start at */
+            k = R8_RLE_MAX;
+            if (left < R8_RLE_MAX + 2u)
+                k = (r8_u8)(left >= 2u ? left - 2u : 0u);
+            full = 0;
+            if (room <= c) {
+                /* at most room - 1 literals fit: if that many come, more
+                 * come after them (or a run, which does not fit either) */
+                if (room < 2u)
+                    return cap + 1u;
+                c = (r8_u8)(room - 1u);
+                if (k > c)
+                    k = c;
+                full = c;
+            }
+            c = r8_tx_lit(s, o, p, k, c);
+            if (c & 0x80u) {
+                c &= 0x7Fu;
+                tx_unlink(s);
+            }
+            if (c == full)
+                return cap + 1u;
+            room -= c + 1u;
+            o += c + 1u;
+        }
+        p += c;
+    }
+    return (unsigned)(o - o0);
+}
+#endif
+
+unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
+{
+    const r8_u8 *q = p, *end = p + n;
+    while (q != end && !*q)
+        q++;
+    return (unsigned)(q - p);
+}
+
+/* Encode and send band src[0..n) at row y0: the packet, the fingerprint
+ * fp[4] (changed: whether it did) and the frame CRC; z = its leading
+ * zeros. */
+static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
+                                unsigned y0, r8_u8 *fp, r8_u16 xn, unsigned z)
+{
+    r8_u8 *b = tx->pkt + 1, *from = b, changed, f[4];
+    unsigned len = n, k;
+    tx_st s;
+    /* header; the CRC of bytes 0..2 is tx->hcrc */
+    b[0] = R8_PKT_BAND;
+    put16(b + 1, tx->frame);
+    put16(b + 3, y0);
+    b[5] = tx->cfg.codec;
+#ifndef R8_NO_RLE
+    if (b[5] == R8_CODEC_RLE) {
+        s.pkt = s.code = tx->pkt;
+        s.crc = r8_crc16_update(tx->hcrc, b + 3, 3);
+        /* header zeros (no code is more than 5 bytes back) */
+        for (from = b + 1; from != b + 5; from++)
+            if (!*from) {
+                *s.code = (r8_u8)(from - s.code);
+                s.code = from;
+            }
+        from = b + R8_WIRE_BAND_HDR;
+        len = tx_rle(&s, src, n, from, n - 1u, z);
+        from += len;
+        if (len >= n) {
+            tx_unlink(&s);
+            from = b;
+        }
+    }
+    if (from == b)
+#endif
+    {
+        /* the fingerprint (leading zeros change it not) */
+        s.f1 = s.f2 = 0;
+        s.g = r8_crc16_update(0, src + z, n - z);
+        tx_fletcher(&s, src + z, n - z);
+    }
+    if (z != n) { /* (a band of zeros is done by the caller) */
+        f[0] = (r8_u8)(s.g >> 8);
+        f[1] = (r8_u8)(s.g & 0xFFu);
+        f[2] = s.f1;
+        f[3] = s.f2;
+        changed = 0;
+        for (k = 0; k < 4u; k++) {
+            changed |= (r8_u8)(fp[k] ^ f[k]);
+            fp[k] = f[k];
+        }
+        /* frame CRC: fcrc * x^(8n) ^ the band's CRC from 0 */
+        tx->fcrc = (r8_u16)(r8_crc16_mul(tx->fcrc, xn) ^ s.g);
+        if (!tx->full && !changed)
+            return;
+    }
+#ifndef R8_NO_RLE
+    if (from == b)
+#endif
+#ifndef R8_NO_LZ77
+    if (b[5] != R8_CODEC_LZ77 ||
+        r8_lz77_encode(src, n, b + R8_WIRE_BAND_HDR, n - 1u, &len) != R8_OK)
+#endif
+    {
+        /* raw: the codec is raw, or would not make the band smaller */
+        b[5] = R8_CODEC_RAW;
+        len = n;
+        for (k = 0; k < n; k++)
+            b[R8_WIRE_BAND_HDR + k] = src[k];
+    }
+    tx_send(tx, &s, R8_WIRE_BAND_HDR + len, (r8_u8)(from == b));
+    tx->sent++;
 }
 
 int r8_tx_band(r8_tx *tx, const r8_fb *band)
 {
-    unsigned idx, n, len, rows;
-    r8_u8 *fp, f1 = 0, f2 = 0;
-    r8_u16 h;
-    r8_u8 codec = tx->cfg.codec;
-    int changed, rc;
-    if (!tx->in_frame || band->y0 < 0 || band->y0 >= tx->cfg.height ||
-        band->y0 % tx->cfg.band || band->width != tx->cfg.width ||
-        band->format != tx->cfg.format)
+    unsigned idx, n, z;
+    r8_s16 y0 = band->y0;
+    r8_u8 *fp, changed;
+    r8_u16 xn;
+    if (!tx->in_frame || y0 < 0 || y0 >= tx->cfg.height ||
+        band->width != tx->cfg.width || band->format != tx->cfg.format)
         return R8_E_ARG;
-    idx = (unsigned)band->y0 / (unsigned)tx->cfg.band;
-    rows = (unsigned)(tx->cfg.height - band->y0);
-    if (rows > (unsigned)tx->cfg.band)
-        rows = (unsigned)tx->cfg.band;
-    n = r8_fb_bytes(tx->cfg.format, tx->cfg.width, (r8_s16)rows);
-    tx->fcrc = r8_crc16_update(tx->fcrc, band->buf, n);
+    if (y0 == tx->next_y) {
+        idx = tx->next_idx;
+    } else {
+        if (y0 % tx->cfg.band)
+            return R8_E_ARG;
+        idx = (unsigned)y0 / (unsigned)tx->cfg.band;
+    }
+    tx->next_y = (r8_s16)(y0 + tx->cfg.band);
+    tx->next_idx = idx + 1u;
+    n = tx->band_bytes;
+    xn = tx->xn;
+    if (tx->cfg.height - y0 < tx->cfg.band) {
+        n = r8_fb_bytes(tx->cfg.format, tx->cfg.width, (r8_s16)(tx->cfg.height - y0));
+        xn = r8_crc16_xpow(n);
+    }
     tx->raw_bytes += n;
-    /* fingerprint: CRC-16 and a Fletcher-16 of the band's bytes */
-    h = r8_crc16(band->buf, n);
-    for (len = 0; len < n; len++) {
-        f1 = (r8_u8)(f1 + band->buf[len]);
-        f2 = (r8_u8)(f2 + f1);
-    }
     fp = tx->fp + 4u * idx;
-    changed = fp[0] != (r8_u8)(h >> 8) || fp[1] != (r8_u8)(h & 0xFFu) ||
-              fp[2] != f1 || fp[3] != f2;
-    fp[0] = (r8_u8)(h >> 8);
-    fp[1] = (r8_u8)(h & 0xFFu);
-    fp[2] = f1;
-    fp[3] = f2;
-    if (!tx->full && !changed)
-        return R8_OK;
-    tx->pkt[0] = R8_PKT_BAND;
-    put16(tx->pkt + 1, tx->frame);
-    put16(tx->pkt + 3, (unsigned)band->y0);
-    /* encode; fall back to raw when the codec does not make it smaller */
-    rc = R8_E_SPACE;
-    if (codec != R8_CODEC_RAW)
-        rc = r8_codec_encode(codec, band->buf, n, tx->pkt + R8_WIRE_BAND_HDR,
-                             n - 1u, &len);
-    if (rc != R8_OK) {
-        codec = R8_CODEC_RAW;
-        r8_codec_encode(codec, band->buf, n, tx->pkt + R8_WIRE_BAND_HDR, n, &len);
+    /* a band of zeros (blank screen): its fingerprint is 0, its CRC from
+     * 0 is 0; unchanged in a delta frame, it costs nothing more */
+    z = r8_tx_zeros(band->buf, n);
+    if (z == n) {
+        changed = (r8_u8)(fp[0] | fp[1] | fp[2] | fp[3]);
+        fp[0] = fp[1] = fp[2] = fp[3] = 0;
+        tx->fcrc = r8_crc16_mul(tx->fcrc, xn);
+        if (!tx->full && !changed)
+            return R8_OK;
     }
-    tx->pkt[5] = codec;
-    send_pkt(tx, R8_WIRE_BAND_HDR + len);
-    tx->sent++;
+    tx_band(tx, band->buf, n, (unsigned)y0, fp, xn, z);
     return R8_OK;
 }
 
 int r8_tx_frame_end(r8_tx *tx)
 {
-    r8_u8 *p = tx->pkt;
+    r8_u8 *p = tx->pkt + 1;
+    tx_st s;
     if (!tx->in_frame)
         return R8_E_ARG;
     p[0] = R8_PKT_FRAME_END;
     put16(p + 1, tx->frame);
     put16(p + 3, tx->sent);
     put16(p + 5, tx->fcrc);
-    send_pkt(tx, R8_WIRE_END_BYTES);
+    tx_send(tx, &s, R8_WIRE_END_BYTES, 1);
     tx->in_frame = 0;
     return R8_OK;
 }

@@ -150,7 +150,7 @@ static void test_tx_sizes_and_errors(void)
     r8_tx tx;
     tx_cfg(&c);
     TEST_ASSERT_EQUAL_UINT(16, r8_tx_band_bytes(&c));
-    TEST_ASSERT_EQUAL_UINT(16 + R8_WIRE_BAND_HDR + 2 + 4 * 2, r8_tx_scratch(&c));
+    TEST_ASSERT_EQUAL_UINT(16 + R8_WIRE_BAND_HDR + 2 + 2 + 4 * 2, r8_tx_scratch(&c));
     TEST_ASSERT_EQUAL_INT(R8_E_SPACE, r8_tx_init(&tx, &c, scratch, 10, capture, 0));
     c.band = 4; /* PAGE1 needs multiples of 8 */
     TEST_ASSERT_EQUAL_UINT(0, r8_tx_scratch(&c));
@@ -158,6 +158,30 @@ static void test_tx_sizes_and_errors(void)
     tx_cfg(&c);
     c.codec = 7;
     TEST_ASSERT_EQUAL_INT(R8_E_ARG, r8_tx_init(&tx, &c, scratch, sizeof scratch, capture, 0));
+    /* the largest bands (R8_WIRE_MAX_BAND) and the scratch macro */
+    tx_cfg(&c);
+    c.width = 4095;
+    c.height = 4095;
+    c.band = 64; /* PAGE1: 8 * 4095 */
+    TEST_ASSERT_EQUAL_UINT(32760, r8_tx_band_bytes(&c));
+    TEST_ASSERT_EQUAL_UINT(R8_TX_SCRATCH_BYTES(32760u, R8_WIRE_NBANDS(4095, 64), 0), r8_tx_scratch(&c));
+    c.band = 72;
+    TEST_ASSERT_EQUAL_UINT(0, r8_tx_band_bytes(&c));
+    c.format = R8_FMT_ROW1; /* 512 bytes a row */
+    c.band = 63;
+    TEST_ASSERT_EQUAL_UINT(32256, r8_tx_band_bytes(&c));
+    c.band = 64;
+    TEST_ASSERT_EQUAL_UINT(0, r8_tx_band_bytes(&c));
+    c.format = R8_FMT_IDX8;
+    c.band = 8;
+    TEST_ASSERT_EQUAL_UINT(32760, r8_tx_band_bytes(&c));
+    c.band = 9;
+    TEST_ASSERT_EQUAL_UINT(0, r8_tx_scratch(&c));
+    c.width = 8;
+    c.band = 2;
+    c.palette = pal;
+    c.npal = 200; /* the frame start is the largest packet */
+    TEST_ASSERT_EQUAL_UINT(R8_TX_SCRATCH_BYTES(16, R8_WIRE_NBANDS(4095, 2), 200), r8_tx_scratch(&c));
 }
 
 static void test_tx_full_then_dirty(void)
