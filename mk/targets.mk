@@ -37,10 +37,10 @@ FW_DEFS    := -DFW_HAVE_APP
 XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
 # AVR assembly kernels (ports/avr/*.S; each has a C89 reference chosen
-# by R8_ASM_AVR, see src/r8crc.h) go into the AVR libraries.
+# by R8_ASM_WIRE, see src/r8crc.h) go into the AVR libraries.
 AVR_ASM    := $(wildcard ports/avr/*.S)
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
-              -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_AVR
+              -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"

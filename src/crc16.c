@@ -11,7 +11,7 @@
 #include "r8crc.h"
 #include "r8flash.h"
 
-/* With R8_ASM_AVR, r8_crc16_update and r8_crc16_mul are the AVR
+/* With R8_ASM_WIRE, r8_crc16_update and r8_crc16_mul are the AVR
  * assembly (ports/avr/wire_avr.S) and these the reference. */
 r8_u16 r8_crc16_update_c(r8_u16 crc, const r8_u8 *p, unsigned n)
 {

@@ -26,9 +26,10 @@
 r8_u16 r8_crc16_shift(r8_u16 c, r8_u8 m);
 
 /* ---- the band walk's kernels (one RLE token each).  The C89 versions,
- * the reference, are the r8_*_c functions.  With -DR8_ASM_AVR (the AVR
- * builds in mk/targets.mk) the names without _c are the AVR assembly of
- * ports/avr/wire_avr.S; otherwise they are the C versions.
+ * the reference, are the r8_*_c functions.  A port that links its own
+ * (assembly) versions of all five defines R8_ASM_WIRE: the names without
+ * _c are then those (the AVR builds in mk/targets.mk: ports/avr/
+ * wire_avr.S); otherwise they are the C versions.
  * tests/c/test_wirek.c checks that the two agree on random inputs. */
 typedef struct r8_tx_st {    /* a packet being built (layout: the asm) */
     r8_u16 crc;              /* +0 packet CRC (so far) */
@@ -55,7 +56,7 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c);
 /* How many bytes of p[0..n) are 0x00 before the first other. */
 unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n);
 
-#if defined(R8_ASM_AVR)
+#if defined(R8_ASM_WIRE)
 unsigned r8_tx_zeros(const r8_u8 *p, unsigned n);
 r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k);
 r8_u8 r8_tx_lit(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c);

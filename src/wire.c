@@ -65,7 +65,7 @@ static void tx_unlink(tx_st *s)
     s->code = 0;
 }
 
-#if !defined(R8_NO_RLE) || !defined(R8_ASM_AVR)
+#if !defined(R8_NO_RLE) || !defined(R8_ASM_WIRE)
 /* Link the 0x00 at q, after every zero linked so far: it takes the
  * place of a code, and the code before it gets the distance.  Returns 1
  * (nothing done) when that is more than 254: a block of 254 non-zero
@@ -85,7 +85,7 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
 
 /* tx_link on the hot paths: inline in the AVR build (where the band
  * walk's glue is the cost), a call elsewhere (where code size is). */
-#ifdef R8_ASM_AVR
+#ifdef R8_ASM_WIRE
 #define TX_LINK(s, q)                                          \
     do {                                                       \
         if ((s)->code) {                                       \

@@ -1,6 +1,6 @@
 /* wire_avr.S - AVR assembly for the wire encoder's kernels (issue 10).
  *
- * Built into the AVR library with -DR8_ASM_AVR (mk/targets.mk); the C89
+ * Built into the AVR library with -DR8_ASM_WIRE (mk/targets.mk); the C89
  * reference of each routine is the *_c function of the same name in
  * src/crc16.c and src/wire.c (src/r8crc.h has the contracts), and
  * tests/c/test_wirek.c checks, in the simulator, that both give the
