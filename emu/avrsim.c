@@ -212,7 +212,8 @@ int main(int argc, char **argv)
     int state, opt, use_pty = 0, linger = 2, code;
     unsigned long long maxc = 4000000000ULL;
     const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL;
-    uint32_t a, static_end, low;
+    uint32_t a, static_end, low, sp_min_pc = 0;
+    uint16_t sp_min = 0xFFFF;
 
     while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:H:")) != -1) {
         switch (opt) {
@@ -289,6 +290,11 @@ usage:
     prev_cycle = avr->cycle;
     do {
         uint32_t pc = avr->pc;
+        uint16_t sp = (uint16_t)(avr->data[0x5D] | avr->data[0x5E] << 8);
+        if (sp < sp_min) {
+            sp_min = sp;
+            sp_min_pc = pc;
+        }
         state = avr_run(avr);
         if (pc >= wait_lo && pc < wait_hi)
             wait_since_mark += avr->cycle - prev_cycle;
@@ -314,9 +320,9 @@ usage:
     fprintf(mark_fp, "END state=%s code=%d cycles=%llu\n",
             state == cpu_Done ? "done" : state == cpu_Crashed ? "crashed" : "limit",
             code, (unsigned long long)avr->cycle);
-    fprintf(mark_fp, "RAM static=%u stack_peak=%u ramend=0x%x\n",
+    fprintf(mark_fp, "RAM static=%u stack_peak=%u ramend=0x%x sp_min_pc=0x%x\n",
             (unsigned)(fw.datasize + fw.bsssize), (unsigned)(avr->ramend + 1 - low),
-            (unsigned)avr->ramend);
+            (unsigned)avr->ramend, (unsigned)sp_min_pc);
     fflush(mark_fp);
     if (prof) {
         FILE *pf = fopen(proff, "w");

@@ -50,8 +50,20 @@ r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
 #define R8_ASR32C(v, n) ((r8_s32)((r8_u32)((r8_u32)(v) + 0x80000000UL) >> (n)) - (r8_s32)(0x80000000UL >> (n)))
 /* p >> 14 for 0 <= p < 2^30, as 16 bits: byte moves and two shifts. */
 #define R8_SHR14U(p) ((r8_u16)((r8_u16)((r8_u32)(p) >> 16) << 2) | (r8_u16)((r8_u8)((r8_u32)(p) >> 8) >> 6))
+/* u >> 4 and u << 4 for a 16-bit unsigned u.  avr-gcc -Os makes a
+ * 4-step loop of these; its nibble swap makes them a few moves. */
+#ifdef __AVR__
+#define R8_SWAP4_(b) __builtin_avr_swap((r8_u8)(b))
+#define R8_SHR4U(u) ((r8_u16)((r8_u16)(r8_u8)(R8_SWAP4_((u) >> 8) & 0x0Fu) << 8 | \
+    (r8_u8)((R8_SWAP4_(u) & 0x0Fu) | (R8_SWAP4_((u) >> 8) & 0xF0u))))
+#define R8_SHL4U(u) ((r8_u16)((r8_u16)(r8_u8)((R8_SWAP4_((u) >> 8) & 0xF0u) | \
+    (R8_SWAP4_(u) & 0x0Fu)) << 8 | (r8_u8)(R8_SWAP4_(u) & 0xF0u)))
+#else
+#define R8_SHR4U(u) ((r8_u16)((r8_u16)(u) >> 4))
+#define R8_SHL4U(u) ((r8_u16)((r8_u16)(u) << 4))
+#endif
 /* floor(v / 16) for |v| < 32768 - 16: the row or column of a 12.4 value. */
-#define R8_FLOOR16(v) ((r8_s16)(((r8_u16)((v) + 32768u)) >> 4) - 2048)
+#define R8_FLOOR16(v) ((r8_s16)R8_SHR4U((r8_u16)((v) + 32768u)) - 2048)
 /* (a * b) >> frac, rounded to nearest (ties away from zero), saturated
  * to r8_s16.  r8_mulq(a, b, 8) is the Q8.8 multiply, 14 the Q1.14 one. */
 r8_s16 r8_mulq(r8_s16 a, r8_s16 b, r8_u8 frac);

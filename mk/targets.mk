@@ -145,8 +145,9 @@ $(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel)
 
 # ---- programs per target: sizes, firmware, unit tests
 # $(1) target.  Sizes come from the 1284P for both AVRs (same ABI; the
-# 328P cannot hold every scene's sizer).
-XSIZES_avr328  := $(XB)/avr1284/sizes.txt
+# 328P cannot hold every scene's sizer); the 328P's from sizers built
+# with its firmware's RAM-saving flags (ports/fwdefs.sh --small328).
+XSIZES_avr328  := $(XB)/avr328/sizes.txt
 XSIZES_avr1284 := $(XB)/avr1284/sizes.txt
 XSIZES_6502    := $(XB)/6502/sizes.txt
 XSIZES_z80     := $(XB)/z80/sizes.txt
@@ -161,7 +162,7 @@ $(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): tests/targets/fw_sizes.c ports/fw_trim.c $
 $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) ports/fwdefs.sh
 	@mkdir -p $$(dir $$@)
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
-	  -- $(FW_DEFS) $$$$(bash ports/fwdefs.sh $$* $(XSIZES_$(1)))
+	  -- $(FW_DEFS) $$$$(bash ports/fwdefs.sh $$* $(XSIZES_$(1)) $(1))
 
 $(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<
@@ -179,6 +180,13 @@ $(foreach t,$(XTARGETS),$(eval $(call XPROG,$(t))))
 XSZ = $(XSCENES:%=$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)))
 $(XB)/avr1284/sizes.txt: $(call XSZ,avr1284) $(AVRSIM) tests/targets/sizes.sh
 	bash tests/targets/sizes.sh avr1284 $@ $(call XSZ,avr1284)
+XSZ328 = $(XSCENES:%=$(XB)/avr1284/sizes328/sizes-%.elf)
+$(XB)/avr1284/sizes328/sizes-%.elf: tests/targets/fw_sizes.c ports/fw_trim.c ports/fwdefs.sh $(XB)/avr1284/obj/scene_%.o $(XDEPS_avr1284)
+	@mkdir -p $(dir $@)
+	$(XENV) bash ports/xbuild.sh avr1284 $@ $< $(XB)/avr1284/obj/scene_$*.o -- $(FW_DEFS) -DFW_SCENE=$* -Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_PLAN_ONLY $$(bash ports/fwdefs.sh --small328)
+$(XB)/avr328/sizes.txt: $(XSZ328) $(AVRSIM) tests/targets/sizes.sh
+	@mkdir -p $(dir $@)
+	bash tests/targets/sizes.sh avr1284 $@ $(XSZ328)
 $(XB)/6502/sizes.txt: $(call XSZ,6502) tests/targets/sizes.sh
 	bash tests/targets/sizes.sh 6502 $@ $(call XSZ,6502)
 $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
@@ -189,7 +197,7 @@ XT_NAMES   := $(TEST_C:tests/c/%.c=%)
 XT_avr1284 := $(XT_NAMES:%=$(XB)/avr1284/tests/%.elf)
 XT_6502    := $(XT_NAMES:%=$(XB)/6502/tests/%.prg)
 XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
-XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
+XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
 .PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
 xtargets: $(XREADY) $(XT_avr1284) $(XT_6502) $(XT_z80)

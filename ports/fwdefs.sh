@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fwdefs.sh S-M-F SIZES  ->  the -D flags of one firmware build:
+# fwdefs.sh S-M-F SIZES [TARGET]  ->  the -D flags of one firmware build:
 # scene S, method M, F frames, FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
 # firmware then reports APP_E_RAM/APP_E_CFG instead of rendering), and
@@ -8,7 +8,11 @@
 # (the demo is Lambert), no run-time normals (built-in meshes carry
 # theirs), no clipper (the demo camera never sees a face cross the near
 # plane or the guard band; the identity tests compare with the host's
-# full build).
+# full build).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
+# pool and 8-bit face ids (R8_SMALL_SCENE), the least RAM; fw_sizes.c
+# measures the same (XSIZES_avr328 in mk/targets.mk).
+SMALL328="-DFW_POOL=0 -DR8_SMALL_SCENE"
+[ "$1" = --small328 ] && { echo "$SMALL328"; exit 0; }
 IFS=- read -r s m f <<< "$1"
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$2")
 case "$ram" in ''|0) ram=1 ;; esac
@@ -19,4 +23,5 @@ trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_N
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
+[ "${3:-}" = avr328 ] && trim="$trim $SMALL328"
 echo "-DFW_SCENE=$s -DFW_METHOD=$m -DFW_FRAMES=$f -DFW_RAM=$ram $trim"

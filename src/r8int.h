@@ -116,8 +116,9 @@ typedef struct r8_state {
     r8_fid *heads;      /* buckets: per band, or painter's depth (frame
                            time only) */
     r8_u16 nheads;
-    r8_fid first;       /* painter's: the draw list; else the faces that
-                           go on from the band above */
+    r8_u16 first;       /* painter's: the draw list; else the faces that
+                           go on from the band above (an r8_fid; 16 bits
+                           so the layout is the same with R8_SMALL_SCENE) */
     r8_u8 *slot;        /* pool slot per face id (0 when there is no pool) */
     r8_u8 *ftop;        /* painter's with a pool: first band per face id */
     r8_u8 *pool;        /* pool entries (r8_actx or r8_act) */

@@ -820,7 +820,7 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
-    r8_fid *link = &st->first, g;
+    r8_fid head = (r8_fid)st->first, *link = &head, g;
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
@@ -854,7 +854,7 @@ void r8_render_band(r8_render *r, r8_fb *fb)
          * bucket, both in scene order; those that go on form the next
          * band's list */
         r8_u16 b = band_of(st, y0, r->cfg.band);
-        r8_fid a = st->first, n = b < st->nbands ? st->heads[b] : (r8_fid)R8_FID_END;
+        r8_fid a = head, n = b < st->nbands ? st->heads[b] : (r8_fid)R8_FID_END;
         while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
             if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
                 g = a;
@@ -870,6 +870,7 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         }
         *link = (r8_fid)R8_FID_END;
     }
+    st->first = head;
 #ifndef R8_NO_SBUF
     if (st->method == R8_VIS_SBUF)
         r8_vis_sbuf_flush(st, fb);

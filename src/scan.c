@@ -173,13 +173,13 @@ static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by
     p = (r8_s16)(((r8_u16)(ax - 8) & 15u) + (r8_s16)s0 * q);
     pl = (r8_u8)((r8_u16)p & 15u);
     it->val = (r8_s16)(R8_FLOOR16(ax - 8) + R8_FLOOR16(p));
-    d16 = (r8_u16)(dy << 4);
+    d16 = R8_SHL4U(dy);
     u = (r8_u16)(dy * pl + (r8_u16)s0 * rd + d16 - 1u);     /* < 46 dy < 2^16 */
     while (u >= d16) {
         u = (r8_u16)(u - d16);
         it->val++;
     }
-    it->err = (r8_u16)(u >> 4);
+    it->err = R8_SHR4U(u);
     return y0;
 }
 

@@ -11,6 +11,7 @@ static r8_render ren;
 static r8_fb band_fb;
 #endif
 
+#ifndef R8_PAGE1_ONLY
 /* Default IDX8 palette: 17 grey levels for shade indices 0..16. */
 static const r8_u8 grey17[17 * 3] = {
     0, 0, 0, 16, 16, 16, 32, 32, 32, 48, 48, 48, 64, 64, 64, 80, 80, 80,
@@ -18,6 +19,7 @@ static const r8_u8 grey17[17 * 3] = {
     175, 175, 175, 191, 191, 191, 207, 207, 207, 223, 223, 223,
     239, 239, 239, 255, 255, 255
 };
+#endif
 
 void app_defaults(app_cfg *cfg)
 {
@@ -47,10 +49,12 @@ static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
     t->dirty = cfg->dirty;
     t->palette = cfg->palette;
     t->npal = cfg->npal;
+#ifndef R8_PAGE1_ONLY
     if (cfg->render.format == R8_FMT_IDX8 && !cfg->palette) {
         t->palette = grey17;
         t->npal = 17;
     }
+#endif
 }
 
 r8_demo_run *app_demo(const app_cfg *cfg)
@@ -101,13 +105,14 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
     plat_write(p, n);
 }
 
-int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
+/* Everything app_run needs before the first frame, in its own stack
+ * frame (gone while frames are drawn: the 2 KB parts need the bytes;
+ * external, so -Os does not fold it into app_run). */
+int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
     app_layout lay;
     r8_tx_cfg t;
     r8_render_cfg rc;
-    r8_u16 i, no;
-    r8_s16 y;
     if (app_plan(cfg, &lay))
         return APP_E_CFG;
     if (mem_size < lay.total)
@@ -119,6 +124,16 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_fb_init(&band_fb, mem + lay.band, t.format, t.width, t.height, 0, t.band) ||
         r8_tx_init(&tx, &t, mem + lay.scratch, lay.scratch_size, put, 0))
         return APP_E_CFG;
+    return APP_OK;
+}
+
+int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
+{
+    r8_u16 i, no;
+    r8_s16 y;
+    int e = app_start(cfg, mem, mem_size);
+    if (e != APP_OK)
+        return e;
     plat_mark(PLAT_MARK_START);
     r8_tx_sync(&tx);
     for (i = 0; !cfg->frames || i < cfg->frames; i++) {
@@ -127,7 +142,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_demo_pose(&run, no);
         r8_render_frame(&ren, &run.cam);
         r8_tx_frame_begin(&tx, no);
-        for (y = 0; y < t.height; y = (r8_s16)(y + t.band)) {
+        for (y = 0; y < band_fb.height; y = (r8_s16)(y + band_fb.rows)) {
             r8_fb_set_band(&band_fb, y);
             r8_render_band(&ren, &band_fb);
             if (cfg->on_band)

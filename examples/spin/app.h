@@ -80,6 +80,10 @@ unsigned app_ram(const app_cfg *cfg);
 
 /* Render and stream cfg->frames frames.  APP_OK or APP_E_*. */
 int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size);
+/* app_run's set-up alone (renderer, band, encoder in mem): APP_OK or an
+ * APP_E_* code.  A function of its own so its stack frame is gone while
+ * frames are drawn. */
+int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size);
 
 /* One byte received from the display (safe to call from the UART ISR
  * while app_run runs: it only sets a flag for the next frame). */

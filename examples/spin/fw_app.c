@@ -4,6 +4,8 @@
  *   FW_FRAMES            frames to stream                   (default 4)
  *   FW_RAM               app_ram(cfg) measured on the target by
  *                        fw_sizes.c (mk/targets.mk passes it in)
+ *   FW_POOL              scan-state pool (default R8_POOL_AUTO; the 2 KB
+ *                        ATmega328P builds use 0: least RAM)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
  * emu/fw_plat_host.c (stdout). */
@@ -53,6 +55,9 @@ int main(void)
     plat_init();
     app_defaults(&cfg);
     cfg.render.clip = 0;   /* built without the clipper (fw_trim.c) */
+#ifdef FW_POOL
+    cfg.render.pool = FW_POOL;
+#endif
     cfg.scene = FW_SCENE;
     cfg.render.method = FW_METHOD;
     cfg.frames = FW_FRAMES;

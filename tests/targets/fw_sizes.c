@@ -49,6 +49,9 @@ int main(void)
 #ifdef FW_HAVE_APP
             app_defaults(&acfg);
             acfg.render.clip = 0;   /* as fw_app.c */
+#ifdef FW_POOL
+            acfg.render.pool = FW_POOL;
+#endif
             acfg.scene = s;
             acfg.render.method = m;
             put_u(app_ram(&acfg));

@@ -27,7 +27,7 @@ import tempfile
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 XB = os.path.join(ROOT, "build", "x")
 EXT = {"avr328": "elf", "avr1284": "elf", "6502": "prg", "z80": "ihx"}
-SIZES = {"avr328": "avr1284", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
+SIZES = {"avr328": "avr328", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
 RAM = {"avr328": 2048, "avr1284": 16384}
 MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
 SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
