@@ -1,0 +1,327 @@
+/* trap.S - r8k_trap (include/r8kern.h) for AVR.
+ *
+ *   void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
+ *
+ * Same memory results as the C reference in src/kern.c: per row, the
+ * span [max(l->val, 0), min(r->val, w)) of the page row under mask m gets
+ * pattern pat[k] (low nibble: column x takes bit 3 - (x & 3); nibble F
+ * sets, 0 clears), then both column DDAs step (R8_INTERP_STEP, with the
+ * same 16-bit wrap of err + r), m moves up a bit (page += w past bit 7)
+ * and k to the next phase.  l->val, l->err, r->val, r->err, t->page,
+ * t->m and t->k are written back (t->page as soon as it moves).
+ *
+ * The DDA state lives in registers for the whole call.  A DDA step:
+ *     err += r; err -= den (C = borrow: err < den); on borrow err += den
+ *     (C stays 1); val -= ~q + C, i.e. val += q + (no borrow).
+ * A span: X = page + xl, Z = page + xr, and a loop of 4 columns entered
+ * at column (xl - xr) & 3 (Duff's device), so it ends with X == Z after a
+ * whole pass.  Dithered spans test bit 7 - j of the nibble repeated in a
+ * byte and shifted left by xr & 3, so loop column j has the bit of
+ * column xr + j.  Per column: 5 cycles (set, clear) or 7 (dither), and
+ * 4 per pass of 4 columns.
+ *
+ * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
+ * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
+ */
+
+#define T0   r0     /* scratch: column byte, loop entry */
+#define NM   r1     /* ~m (cleared before returning) */
+#define LVL  r2     /* left edge: val, err, ~q, r, den */
+#define LVH  r3
+#define LEL  r4
+#define LEH  r5
+#define LNQL r6
+#define LNQH r7
+#define LRL  r8
+#define LRH  r9
+#define LDL  r10
+#define LDH  r11
+#define RVL  r12    /* right edge */
+#define RVH  r13
+#define REL  r14
+#define REH  r15
+#define Q    r16    /* the row's pattern */
+#define K    r17    /* dither phase */
+#define RNQL r18
+#define RNQH r19
+#define RRL  r20
+#define RRH  r21
+#define RDL  r22
+#define RDH  r23
+#define ROWS r24    /* rows left in this block of up to 256 */
+#define M    r25    /* the row's bit(s) */
+/* X (r27:r26) = column pointer, Y (r29:r28) = t, Z (r31:r30) = span end */
+
+/* X = page + xl, Z = page + xr (from X = xl, Z = xr) */
+.macro SETUP
+    sub   r30, r26
+    sbc   r31, r27          /* Z = n */
+    ldd   NM, Y+0
+    add   r26, NM
+    ldd   NM, Y+1
+    adc   r27, NM           /* X = page + xl */
+    add   r30, r26
+    adc   r31, r27          /* Z = page + xr */
+.endm
+
+/* jump to c0..c3 by bits 1..0 of T0 */
+.macro ENTER c0, c1, c2, c3
+    sbrc  T0, 1
+    rjmp  .+6
+    sbrc  T0, 0
+    rjmp  \c1
+    rjmp  \c0
+    sbrc  T0, 0
+    rjmp  \c3
+    rjmp  \c2
+.endm
+
+/* one column: set, clear, dither (bit b of Q) */
+.macro CSET
+    ld    T0, X
+    or    T0, M
+    st    X+, T0
+.endm
+.macro CCLR
+    ld    T0, X
+    and   T0, NM
+    st    X+, T0
+.endm
+.macro CDIT b
+    ld    T0, X
+    and   T0, NM
+    sbrc  Q, \b
+    or    T0, M
+    st    X+, T0
+.endm
+
+/* one DDA step: val, err, ~q, r, den registers (low bytes) */
+.macro STEP vl, vh, el, eh, nql, nqh, rl, rh, dl, dh
+    add   \el, \rl
+    adc   \eh, \rh
+    sub   \el, \dl
+    sbc   \eh, \dh
+    brcc  .+4
+    add   \el, \dl
+    adc   \eh, \dh
+    sbc   \vl, \nql
+    sbc   \vh, \nqh
+.endm
+
+    .section .text.r8k_trap,"ax",@progbits
+    .global r8k_trap
+    .type   r8k_trap, @function
+r8k_trap:
+    cp    r18, r1
+    cpc   r19, r1
+    brne  1f
+    ret                     /* no rows: nothing changes */
+1:  push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r6
+    push  r7
+    push  r8
+    push  r9
+    push  r10
+    push  r11
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    push  r22               /* l, r: for the write-back */
+    push  r23
+    push  r20
+    push  r21
+    movw  r28, r24          /* Y = t */
+    subi  r18, 1
+    sbci  r19, 0
+    push  r19               /* rows - 1 = 256 * hi + lo: lo + 1 rows, */
+    mov   ROWS, r18         /* then hi blocks of 256 */
+    inc   ROWS
+    movw  r30, r22
+    ld    LVL, Z+
+    ld    LVH, Z+
+    ld    LNQL, Z+
+    ld    LNQH, Z+
+    ld    LEL, Z+
+    ld    LEH, Z+
+    ld    LRL, Z+
+    ld    LRH, Z+
+    ld    LDL, Z+
+    ld    LDH, Z
+    com   LNQL
+    com   LNQH
+    movw  r30, r20
+    ld    RVL, Z+
+    ld    RVH, Z+
+    ld    RNQL, Z+
+    ld    RNQH, Z+
+    ld    REL, Z+
+    ld    REH, Z+
+    ld    RRL, Z+
+    ld    RRH, Z+
+    ld    RDL, Z+
+    ld    RDH, Z
+    com   RNQL
+    com   RNQH
+    ldd   M, Y+2
+    ldd   K, Y+3
+
+row:
+    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    ldd   r31, Y+9
+    cp    RVL, r30
+    cpc   RVH, r31
+    brge  1f
+    movw  r30, RVL
+1:  movw  r26, LVL          /* X = max(l->val, 0) */
+    sbrc  LVH, 7
+    rjmp  lneg
+2:  cp    r26, r30
+    cpc   r27, r31
+    brlt  span
+step:
+    STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    breq  wrap
+next:
+    dec   ROWS
+    brne  row
+    pop   T0                /* another block of 256 rows? */
+    tst   T0
+    brne  1f
+    rjmp  fin
+1:  dec   T0
+    push  T0
+    rjmp  row               /* ROWS = 0: 256 rows */
+
+lneg:
+    clr   r26
+    clr   r27
+    rjmp  2b
+
+wrap:                       /* m = 1, page += w */
+    inc   M
+    ldd   T0, Y+0
+    ldd   NM, Y+8
+    add   T0, NM
+    std   Y+0, T0
+    ldd   T0, Y+1
+    ldd   NM, Y+9
+    adc   T0, NM
+    std   Y+1, T0
+    rjmp  next
+
+span:                       /* X = xl < Z = xr */
+    sbrc  K, 1              /* Q = pat[k] */
+    rjmp  3f
+    ldd   Q, Y+4
+    sbrc  K, 0
+    ldd   Q, Y+5
+    rjmp  4f
+3:  ldd   Q, Y+6
+    sbrc  K, 0
+    ldd   Q, Y+7
+4:  mov   T0, r26           /* loop entry: (xl - xr) & 3 */
+    sub   T0, r30
+    andi  Q, 0x0F
+    brne  5f
+    rjmp  sclr
+5:  cpi   Q, 0x0F
+    brne  6f
+    rjmp  sset
+6:
+    mov   NM, Q             /* dither: nibble in both halves, */
+    swap  NM
+    or    Q, NM
+    sbrc  r30, 0            /* shifted left by xr & 3 */
+    lsl   Q
+    sbrc  r30, 1
+    lsl   Q
+    sbrc  r30, 1
+    lsl   Q
+    SETUP
+    mov   NM, M
+    com   NM
+    ENTER d0, d1, d2, d3
+d0: CDIT  7
+d1: CDIT  6
+d2: CDIT  5
+d3: CDIT  4
+    cp    r26, r30
+    cpc   r27, r31
+    brne  d0
+    rjmp  step
+
+sset:
+    SETUP
+    ENTER s0, s1, s2, s3
+s0: CSET
+s1: CSET
+s2: CSET
+s3: CSET
+    cp    r26, r30
+    cpc   r27, r31
+    brne  s0
+    rjmp  step
+
+sclr:
+    SETUP
+    mov   NM, M
+    com   NM
+    ENTER c0, c1, c2, c3
+c0: CCLR
+c1: CCLR
+c2: CCLR
+c3: CCLR
+    cp    r26, r30
+    cpc   r27, r31
+    brne  c0
+    rjmp  step
+
+fin:
+    std   Y+2, M
+    std   Y+3, K
+    pop   r31               /* r */
+    pop   r30
+    std   Z+0, RVL
+    std   Z+1, RVH
+    std   Z+4, REL
+    std   Z+5, REH
+    pop   r31               /* l */
+    pop   r30
+    std   Z+0, LVL
+    std   Z+1, LVH
+    std   Z+4, LEL
+    std   Z+5, LEH
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    pop   r11
+    pop   r10
+    pop   r9
+    pop   r8
+    pop   r7
+    pop   r6
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
+    clr   r1
+    ret
+
+    .size r8k_trap, .-r8k_trap
