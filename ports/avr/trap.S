@@ -40,10 +40,10 @@
 #define RVH  r13
 #define REL  r14
 #define REH  r15
-#define Q    r16    /* the row's pattern */
-#define K    r17    /* dither phase */
-#define RNQL r18
-#define RNQH r19
+#define RNQL r16
+#define RNQH r17
+#define Q    r18    /* the row's pattern */
+#define K    r19    /* dither phase */
 #define RRL  r20
 #define RRH  r21
 #define RDL  r22
@@ -112,11 +112,16 @@
     .global r8k_trap
     .type   r8k_trap, @function
 r8k_trap:
-    cp    r18, r1
-    cpc   r19, r1
-    brne  1f
-    ret                     /* no rows: nothing changes */
-1:  push  r2
+    tst   r19
+    breq  1f
+    rjmp  big               /* 256 rows or more: in runs of 255 */
+1:  cpi   r18, 2
+    brsh  2f
+    tst   r18
+    breq  3f                /* no rows: nothing changes */
+    rjmp  one               /* one row: the state stays in memory */
+3:  ret
+2:  push  r2
     push  r3
     push  r4
     push  r5
@@ -139,11 +144,7 @@ r8k_trap:
     push  r20
     push  r21
     movw  r28, r24          /* Y = t */
-    subi  r18, 1
-    sbci  r19, 0
-    push  r19               /* rows - 1 = 256 * hi + lo: lo + 1 rows, */
-    mov   ROWS, r18         /* then hi blocks of 256 */
-    inc   ROWS
+    mov   ROWS, r18
     movw  r30, r22
     ld    LVL, Z+
     ld    LVH, Z+
@@ -172,6 +173,7 @@ r8k_trap:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
+    clt                     /* T clear: spans return to step */
 
 row:
     ldd   r30, Y+8          /* Z = min(r->val, w) */
@@ -196,13 +198,7 @@ step:
 next:
     dec   ROWS
     brne  row
-    pop   T0                /* another block of 256 rows? */
-    tst   T0
-    brne  1f
     rjmp  fin
-1:  dec   T0
-    push  T0
-    rjmp  row               /* ROWS = 0: 256 rows */
 
 lneg:
     clr   r26
@@ -260,7 +256,9 @@ d3: CDIT  4
     cp    r26, r30
     cpc   r27, r31
     brne  d0
+    brts  1f
     rjmp  step
+1:  rjmp  ostep
 
 sset:
     SETUP
@@ -272,7 +270,9 @@ s3: CSET
     cp    r26, r30
     cpc   r27, r31
     brne  s0
+    brts  1f
     rjmp  step
+1:  rjmp  ostep
 
 sclr:
     SETUP
@@ -286,7 +286,9 @@ c3: CCLR
     cp    r26, r30
     cpc   r27, r31
     brne  c0
+    brts  1f
     rjmp  step
+1:  rjmp  ostep
 
 fin:
     std   Y+2, M
@@ -322,6 +324,133 @@ fin:
     pop   r3
     pop   r2
     clr   r1
+    ret
+
+/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
+ * rows and one of the rest; the state is all in memory between calls */
+big:
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r16, r18          /* rows */
+    movw  r28, r24          /* t */
+    movw  r14, r22          /* l */
+    movw  r12, r20          /* r */
+7:  movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    ldi   r18, 255
+    ldi   r19, 0
+    rcall r8k_trap
+    subi  r16, 255
+    sbci  r17, 0
+    tst   r17
+    brne  7b                /* still 256 or more */
+    movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    movw  r18, r16
+    rcall r8k_trap
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    ret
+
+/* rows == 1 (the commonest call): no state in registers but what the
+ * span needs; both DDAs step in memory. */
+one:
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = t */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  oneg
+1:  movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  2f
+    movw  r30, r24
+2:  cp    r26, r30
+    cpc   r27, r31
+    brge  ostep
+    ldd   M, Y+2
+    ldd   K, Y+3
+    set                     /* T set: the span returns to ostep */
+    rjmp  span
+ostep:
+    movw  r30, r22
+    rcall mstep             /* l */
+    movw  r30, r20
+    rcall mstep             /* r */
+    ldd   r24, Y+3          /* k = (k + 1) & 3 */
+    inc   r24
+    andi  r24, 3
+    std   Y+3, r24
+    ldd   r24, Y+2          /* m <<= 1; past bit 7: m = 1, page += w */
+    lsl   r24
+    brne  3f
+    inc   r24
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, r24
+    pop   r29
+    pop   r28
+    clr   r1
+    ret
+oneg:
+    clr   r26
+    clr   r27
+    rjmp  1b
+
+/* one DDA step of the r8_interp at Z, in memory (r24-r27 scratch) */
+mstep:
+    ldd   r24, Z+4          /* err += r */
+    ldd   r25, Z+5
+    ldd   r26, Z+6
+    ldd   r27, Z+7
+    add   r24, r26
+    adc   r25, r27
+    ldd   r26, Z+8          /* err -= den; on borrow back (C = 1) */
+    ldd   r27, Z+9
+    sub   r24, r26
+    sbc   r25, r27
+    brcc  4f
+    add   r24, r26
+    adc   r25, r27
+4:  std   Z+4, r24
+    std   Z+5, r25
+    ld    r24, Z            /* val += q + !C */
+    ldd   r25, Z+1
+    ldd   r26, Z+2
+    ldd   r27, Z+3
+    brcs  5f
+    adiw  r24, 1
+5:  add   r24, r26
+    adc   r25, r27
+    st    Z, r24
+    std   Z+1, r25
     ret
 
     .size r8k_trap, .-r8k_trap
