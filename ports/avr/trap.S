@@ -52,10 +52,12 @@
 #define M    r25    /* the row's bit(s) */
 /* X (r27:r26) = column pointer, Y (r29:r28) = t, Z (r31:r30) = span end */
 
-/* X = page + xl, Z = page + xr (from X = xl, Z = xr) */
+/* X = page + xl, Z = page + xr (from X = xl, Z = xr); T0 = n = xr - xl
+ * (low byte: the loop is entered at column (-n) & 3) */
 .macro SETUP
     sub   r30, r26
     sbc   r31, r27          /* Z = n */
+    mov   T0, r30
     ldd   NM, Y+0
     add   r26, NM
     ldd   NM, Y+1
@@ -64,16 +66,16 @@
     adc   r31, r27          /* Z = page + xr */
 .endm
 
-/* jump to c0..c3 by bits 1..0 of T0 */
+/* jump to column c[(-T0) & 3] of the loop */
 .macro ENTER c0, c1, c2, c3
     sbrc  T0, 1
-    rjmp  .+6
+    rjmp  .+6               /* to n & 3 = 2, 3 */
     sbrc  T0, 0
-    rjmp  \c1
-    rjmp  \c0
+    rjmp  \c3               /* n & 3 = 1 */
+    rjmp  \c0               /* n & 3 = 0 */
     sbrc  T0, 0
-    rjmp  \c3
-    rjmp  \c2
+    rjmp  \c1               /* n & 3 = 3 */
+    rjmp  \c2               /* n & 3 = 2 */
 .endm
 
 /* one column: set, clear, dither (bit b of Q) */
@@ -106,6 +108,35 @@
     adc   \eh, \dh
     sbc   \vl, \nql
     sbc   \vh, \nqh
+.endm
+
+/* one DDA step of the r8_interp at Z, in memory (r24-r27 scratch) */
+.macro MSTEP
+    ldd   r24, Z+4          /* err += r */
+    ldd   r25, Z+5
+    ldd   r26, Z+6
+    ldd   r27, Z+7
+    add   r24, r26
+    adc   r25, r27
+    ldd   r26, Z+8          /* err -= den; on borrow back (C = 1) */
+    ldd   r27, Z+9
+    sub   r24, r26
+    sbc   r25, r27
+    brcc  .+4
+    add   r24, r26
+    adc   r25, r27
+    std   Z+4, r24
+    std   Z+5, r25
+    ld    r24, Z            /* val += q + !C */
+    ldd   r25, Z+1
+    ldd   r26, Z+2
+    ldd   r27, Z+3
+    brcs  .+2
+    adiw  r24, 1
+    add   r24, r26
+    adc   r25, r27
+    st    Z, r24
+    std   Z+1, r25
 .endm
 
     .section .text.r8k_trap,"ax",@progbits
@@ -227,9 +258,7 @@ span:                       /* X = xl < Z = xr */
 3:  ldd   Q, Y+6
     sbrc  K, 0
     ldd   Q, Y+7
-4:  mov   T0, r26           /* loop entry: (xl - xr) & 3 */
-    sub   T0, r30
-    andi  Q, 0x0F
+4:  andi  Q, 0x0F
     brne  5f
     rjmp  sclr
 5:  cpi   Q, 0x0F
@@ -394,10 +423,10 @@ one:
     set                     /* T set: the span returns to ostep */
     rjmp  span
 ostep:
-    movw  r30, r22
-    rcall mstep             /* l */
-    movw  r30, r20
-    rcall mstep             /* r */
+    movw  r30, r22          /* l */
+    MSTEP
+    movw  r30, r20          /* r */
+    MSTEP
     ldd   r24, Y+3          /* k = (k + 1) & 3 */
     inc   r24
     andi  r24, 3
@@ -423,34 +452,5 @@ oneg:
     clr   r26
     clr   r27
     rjmp  1b
-
-/* one DDA step of the r8_interp at Z, in memory (r24-r27 scratch) */
-mstep:
-    ldd   r24, Z+4          /* err += r */
-    ldd   r25, Z+5
-    ldd   r26, Z+6
-    ldd   r27, Z+7
-    add   r24, r26
-    adc   r25, r27
-    ldd   r26, Z+8          /* err -= den; on borrow back (C = 1) */
-    ldd   r27, Z+9
-    sub   r24, r26
-    sbc   r25, r27
-    brcc  4f
-    add   r24, r26
-    adc   r25, r27
-4:  std   Z+4, r24
-    std   Z+5, r25
-    ld    r24, Z            /* val += q + !C */
-    ldd   r25, Z+1
-    ldd   r26, Z+2
-    ldd   r27, Z+3
-    brcs  5f
-    adiw  r24, 1
-5:  add   r24, r26
-    adc   r25, r27
-    st    Z, r24
-    std   Z+1, r25
-    ret
 
     .size r8k_trap, .-r8k_trap
