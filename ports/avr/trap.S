@@ -10,15 +10,18 @@
  * and k to the next phase.  l->val, l->err, r->val, r->err, t->page,
  * t->m and t->k are written back (t->page as soon as it moves).
  *
- * The DDA state lives in registers for the whole call.  A DDA step:
+ * Calls of 2..255 rows keep the DDA state in registers for the whole
+ * call; a call of one row (the commonest: about 40% of the calls from the
+ * renderer) leaves it in memory and skips that set-up; 256 rows or more
+ * become calls of 255.  A DDA step:
  *     err += r; err -= den (C = borrow: err < den); on borrow err += den
  *     (C stays 1); val -= ~q + C, i.e. val += q + (no borrow).
  * A span: X = page + xl, Z = page + xr, and a loop of 4 columns entered
  * at column (xl - xr) & 3 (Duff's device), so it ends with X == Z after a
  * whole pass.  Dithered spans test bit 7 - j of the nibble repeated in a
  * byte and shifted left by xr & 3, so loop column j has the bit of
- * column xr + j.  Per column: 5 cycles (set, clear) or 7 (dither), and
- * 4 per pass of 4 columns.
+ * column xr + j (mod 4).  Per column: 5 cycles (set, clear) or 7
+ * (dither), and 4 per pass of 4 columns.
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
@@ -48,7 +51,7 @@
 #define RRH  r21
 #define RDL  r22
 #define RDH  r23
-#define ROWS r24    /* rows left in this block of up to 256 */
+#define ROWS r24    /* rows left (2..255 at the start) */
 #define M    r25    /* the row's bit(s) */
 /* X (r27:r26) = column pointer, Y (r29:r28) = t, Z (r31:r30) = span end */
 
