@@ -30,10 +30,11 @@ typedef struct r8_trapfill {
 
 /* Fill `rows` rows: on each, columns [l->val, r->val) clamped to
  * [0, w), pattern pat[k] under bit m (0xFF sets, 0 clears, others mix
- * per column: bit 7 - (x & 3) of the pattern, repeated every 4
- * columns); then both DDAs step (R8_INTERP_STEP), m moves to the next
- * row (and page), k to the next phase.  The state in t, l and r is left
- * for the next row. */
+ * per column: bit 3 - (x & 3) of the pattern's low nibble, repeated
+ * every 4 columns, as r8_fb_page_run; the dither rows carry the same
+ * nibble in both halves); then both DDAs step (R8_INTERP_STEP), m moves
+ * to the next row (and page), k to the next phase.  The state in t, l
+ * and r is left for the next row. */
 void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 
 /* out = m * v + t in camera units: each row's three Q1.14 x s16 products

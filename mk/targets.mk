@@ -19,6 +19,16 @@
 # becomes a one-line "SKIP: reason" file, which the runners report.
 # Every firmware links build/x/scenes/scene_S.c (ports/scene_strip.py): the
 # scene table with only its own scene's meshes.
+# AVR assembly kernels (include/r8kern.h): ports/avr/trap.S and xform.S go
+# into both AVR archives, whose library objects are compiled with
+# -DR8_ASM_TRAP -DR8_ASM_XFORM (src/kern.c then leaves its C references
+# out); the host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the
+# AVR libraries without them (AVR_ASM=trap or AVR_ASM=xform: that one
+# only), for before/after figures; as an environment variable it also
+# reaches make bench (`AVR_ASM=0 make bench`).  build/x/avr-kernels.txt
+# records the choice, so changing it rebuilds the AVR libraries.
+# Test: tests/targets/test_avr_kern.c (each kernel against its reference
+# on random inputs, in libsimavr), step xkern-avr1284.
 
 XB       := $(BUILD)/x
 AVRSIM   := $(BUILD)/emu/avrsim
@@ -36,14 +46,19 @@ XINC       := -Iports -Iexamples/spin
 FW_DEFS    := -DFW_HAVE_APP
 XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
-# AVR assembly kernels (ports/avr/*.S; each has a C89 reference chosen
-# by R8_ASM_WIRE, see src/r8crc.h) go into the AVR libraries.
-AVR_ASM    := $(wildcard ports/avr/*.S)
+# The wire encoder's AVR kernels (ports/avr/wire_avr.S; C89 references
+# chosen by R8_ASM_WIRE, see src/r8crc.h) are always in the AVR libraries;
+# the renderer's (trap.S, xform.S) as AVR_ASM chooses (below).
+AVR_WIRE_S := ports/avr/wire_avr.S
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
+AVR_ASM    ?= 1
+AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),trap xform,$(filter trap xform,$(AVR_ASM)))
+AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM)
+AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p
 EXT_avr328  := elf
@@ -82,11 +97,18 @@ $(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) ports/scene_strip.py
   $(XB)/z80/obj/unity_target.rel $(XSCENES:%=$(XB)/z80/obj/scene_%.rel)
 
 # ---- compile rules per target (library, plat, unity, scene tables)
+# (the kernel stamp: rewritten only when AVR_ASM chooses other kernels)
+$(AVR_KSTAMP): avr-kstamp-force
+	@mkdir -p $(dir $@) && echo "$(AVR_KERN)" | cmp -s - $@ || echo "$(AVR_KERN)" > $@
+avr-kstamp-force:
 define AVR_OBJ
-$(XB)/$(1)/obj/%.o: src/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: src/%.c $(XHDRS) $(AVR_KSTAMP)
+	@mkdir -p $$(dir $$@)
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) $(AVR_KDEFS) -c $$< -o $$@
+$(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: ports/avr/%.S
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
 $(XB)/$(1)/obj/%.o: examples/spin/%.c $(XHDRS)
@@ -98,11 +120,8 @@ $(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -Itests/unity -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: ports/avr/%.S
-	@mkdir -p $$(dir $$@)
-	avr-gcc -mmcu=$(MCU_$(1)) -c $$< -o $$@
-$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_ASM:ports/avr/%.S=$(XB)/$(1)/obj/%.o)
-	rm -f $$@ && avr-ar rcs $$@ $$^
+$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_KERN:%=$(XB)/$(1)/obj/%.o) $(AVR_WIRE_S:ports/avr/%.S=$(XB)/$(1)/obj/%.o) $(AVR_KSTAMP)
+	rm -f $$@ && avr-ar rcs $$@ $$(filter %.o,$$^)
 endef
 $(eval $(call AVR_OBJ,avr328))
 $(eval $(call AVR_OBJ,avr1284))
@@ -192,6 +211,15 @@ $(XB)/6502/sizes.txt: $(call XSZ,6502) tests/targets/sizes.sh
 $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 	bash tests/targets/sizes.sh z80 $@ $(call XSZ,z80)
 
+# the AVR kernels against their references (src/kern.c, compiled into the
+# test under other names, without R8_ASM_*), whatever AVR_ASM says
+XKERN := $(XB)/avr1284/tests/avr_kern.elf
+XKERN_OBJS := $(XB)/avr1284/obj/trap.o $(XB)/avr1284/obj/xform.o $(XB)/avr1284/obj/unity_target.o
+$(XKERN): tests/targets/test_avr_kern.c src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
+	@mkdir -p $(dir $@)
+	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
+	$(XENV) bash ports/xbuild.sh avr1284 $@ $(basename $@).wrap.c $(XKERN_OBJS) -- -Isrc -Itests/unity -Itests/targets
+
 # ---- test steps
 XT_NAMES   := $(TEST_C:tests/c/%.c=%)
 XT_avr1284 := $(XT_NAMES:%=$(XB)/avr1284/tests/%.elf)
@@ -200,7 +228,7 @@ XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
 XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
 .PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
-xtargets: $(XREADY) $(XT_avr1284) $(XT_6502) $(XT_z80)
+xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80)
 
 # Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
 xtest-avr:
@@ -218,7 +246,12 @@ xident-%:
 fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
-TEST_STEPS += xtest-avr xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80
+# The AVR assembly kernels against their C references, in the simulator.
+.PHONY: xtest-avr-kern
+xtest-avr-kern:
+	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
+
+TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80
 
 # ---- benchmark
 bench: $(SETUP)

@@ -1,0 +1,459 @@
+/* trap.S - r8k_trap (include/r8kern.h) for AVR.
+ *
+ *   void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
+ *
+ * Same memory results as the C reference in src/kern.c: per row, the
+ * span [max(l->val, 0), min(r->val, w)) of the page row under mask m gets
+ * pattern pat[k] (low nibble: column x takes bit 3 - (x & 3); nibble F
+ * sets, 0 clears), then both column DDAs step (R8_INTERP_STEP, with the
+ * same 16-bit wrap of err + r), m moves up a bit (page += w past bit 7)
+ * and k to the next phase.  l->val, l->err, r->val, r->err, t->page,
+ * t->m and t->k are written back (t->page as soon as it moves).
+ *
+ * Calls of 2..255 rows keep the DDA state in registers for the whole
+ * call; a call of one row (the commonest: about 40% of the calls from the
+ * renderer) leaves it in memory and skips that set-up; 256 rows or more
+ * become calls of 255.  A DDA step:
+ *     err += r; err -= den (C = borrow: err < den); on borrow err += den
+ *     (C stays 1); val -= ~q + C, i.e. val += q + (no borrow).
+ * A span: X = page + xl, Z = page + xr, and a loop of 4 columns entered
+ * at column (xl - xr) & 3 (Duff's device), so it ends with X == Z after a
+ * whole pass.  Dithered spans test bit 7 - j of the nibble repeated in a
+ * byte and shifted left by xr & 3, so loop column j has the bit of
+ * column xr + j (mod 4).  Per column: 5 cycles (set, clear) or 7
+ * (dither), and 4 per pass of 4 columns.
+ *
+ * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
+ * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
+ */
+
+#define T0   r0     /* scratch: column byte, loop entry */
+#define NM   r1     /* ~m (cleared before returning) */
+#define LVL  r2     /* left edge: val, err, ~q, r, den */
+#define LVH  r3
+#define LEL  r4
+#define LEH  r5
+#define LNQL r6
+#define LNQH r7
+#define LRL  r8
+#define LRH  r9
+#define LDL  r10
+#define LDH  r11
+#define RVL  r12    /* right edge */
+#define RVH  r13
+#define REL  r14
+#define REH  r15
+#define RNQL r16
+#define RNQH r17
+#define Q    r18    /* the row's pattern */
+#define K    r19    /* dither phase */
+#define RRL  r20
+#define RRH  r21
+#define RDL  r22
+#define RDH  r23
+#define ROWS r24    /* rows left (2..255 at the start) */
+#define M    r25    /* the row's bit(s) */
+/* X (r27:r26) = column pointer, Y (r29:r28) = t, Z (r31:r30) = span end */
+
+/* X = page + xl, Z = page + xr (from X = xl, Z = xr); T0 = n = xr - xl
+ * (low byte: the loop is entered at column (-n) & 3) */
+.macro SETUP
+    sub   r30, r26
+    sbc   r31, r27          /* Z = n */
+    mov   T0, r30
+    ldd   NM, Y+0
+    add   r26, NM
+    ldd   NM, Y+1
+    adc   r27, NM           /* X = page + xl */
+    add   r30, r26
+    adc   r31, r27          /* Z = page + xr */
+.endm
+
+/* jump to column c[(-T0) & 3] of the loop */
+.macro ENTER c0, c1, c2, c3
+    sbrc  T0, 1
+    rjmp  .+6               /* to n & 3 = 2, 3 */
+    sbrc  T0, 0
+    rjmp  \c3               /* n & 3 = 1 */
+    rjmp  \c0               /* n & 3 = 0 */
+    sbrc  T0, 0
+    rjmp  \c1               /* n & 3 = 3 */
+    rjmp  \c2               /* n & 3 = 2 */
+.endm
+
+/* one column: set, clear, dither (bit b of Q) */
+.macro CSET
+    ld    T0, X
+    or    T0, M
+    st    X+, T0
+.endm
+.macro CCLR
+    ld    T0, X
+    and   T0, NM
+    st    X+, T0
+.endm
+.macro CDIT b
+    ld    T0, X
+    and   T0, NM
+    sbrc  Q, \b
+    or    T0, M
+    st    X+, T0
+.endm
+
+/* one DDA step: val, err, ~q, r, den registers (low bytes) */
+.macro STEP vl, vh, el, eh, nql, nqh, rl, rh, dl, dh
+    add   \el, \rl
+    adc   \eh, \rh
+    sub   \el, \dl
+    sbc   \eh, \dh
+    brcc  .+4
+    add   \el, \dl
+    adc   \eh, \dh
+    sbc   \vl, \nql
+    sbc   \vh, \nqh
+.endm
+
+/* one DDA step of the r8_interp at Z, in memory (r24-r27 scratch) */
+.macro MSTEP
+    ldd   r24, Z+4          /* err += r */
+    ldd   r25, Z+5
+    ldd   r26, Z+6
+    ldd   r27, Z+7
+    add   r24, r26
+    adc   r25, r27
+    ldd   r26, Z+8          /* err -= den; on borrow back (C = 1) */
+    ldd   r27, Z+9
+    sub   r24, r26
+    sbc   r25, r27
+    brcc  .+4
+    add   r24, r26
+    adc   r25, r27
+    std   Z+4, r24
+    std   Z+5, r25
+    ld    r24, Z            /* val += q + !C */
+    ldd   r25, Z+1
+    ldd   r26, Z+2
+    ldd   r27, Z+3
+    brcs  .+2
+    adiw  r24, 1
+    add   r24, r26
+    adc   r25, r27
+    st    Z, r24
+    std   Z+1, r25
+.endm
+
+    .section .text.r8k_trap,"ax",@progbits
+    .global r8k_trap
+    .type   r8k_trap, @function
+r8k_trap:
+    tst   r19
+    breq  1f
+    rjmp  big               /* 256 rows or more: in runs of 255 */
+1:  cpi   r18, 2
+    brsh  2f
+    tst   r18
+    breq  3f                /* no rows: nothing changes */
+    rjmp  one               /* one row: the state stays in memory */
+3:  ret
+2:  push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r6
+    push  r7
+    push  r8
+    push  r9
+    push  r10
+    push  r11
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    push  r22               /* l, r: for the write-back */
+    push  r23
+    push  r20
+    push  r21
+    movw  r28, r24          /* Y = t */
+    mov   ROWS, r18
+    movw  r30, r22
+    ld    LVL, Z+
+    ld    LVH, Z+
+    ld    LNQL, Z+
+    ld    LNQH, Z+
+    ld    LEL, Z+
+    ld    LEH, Z+
+    ld    LRL, Z+
+    ld    LRH, Z+
+    ld    LDL, Z+
+    ld    LDH, Z
+    com   LNQL
+    com   LNQH
+    movw  r30, r20
+    ld    RVL, Z+
+    ld    RVH, Z+
+    ld    RNQL, Z+
+    ld    RNQH, Z+
+    ld    REL, Z+
+    ld    REH, Z+
+    ld    RRL, Z+
+    ld    RRH, Z+
+    ld    RDL, Z+
+    ld    RDH, Z
+    com   RNQL
+    com   RNQH
+    ldd   M, Y+2
+    ldd   K, Y+3
+    clt                     /* T clear: spans return to step */
+
+row:
+    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    ldd   r31, Y+9
+    cp    RVL, r30
+    cpc   RVH, r31
+    brge  1f
+    movw  r30, RVL
+1:  movw  r26, LVL          /* X = max(l->val, 0) */
+    sbrc  LVH, 7
+    rjmp  lneg
+2:  cp    r26, r30
+    cpc   r27, r31
+    brlt  span
+step:
+    STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    breq  wrap
+next:
+    dec   ROWS
+    brne  row
+    rjmp  fin
+
+lneg:
+    clr   r26
+    clr   r27
+    rjmp  2b
+
+wrap:                       /* m = 1, page += w */
+    inc   M
+    ldd   T0, Y+0
+    ldd   NM, Y+8
+    add   T0, NM
+    std   Y+0, T0
+    ldd   T0, Y+1
+    ldd   NM, Y+9
+    adc   T0, NM
+    std   Y+1, T0
+    rjmp  next
+
+span:                       /* X = xl < Z = xr */
+    sbrc  K, 1              /* Q = pat[k] */
+    rjmp  3f
+    ldd   Q, Y+4
+    sbrc  K, 0
+    ldd   Q, Y+5
+    rjmp  4f
+3:  ldd   Q, Y+6
+    sbrc  K, 0
+    ldd   Q, Y+7
+4:  andi  Q, 0x0F
+    brne  5f
+    rjmp  sclr
+5:  cpi   Q, 0x0F
+    brne  6f
+    rjmp  sset
+6:
+    mov   NM, Q             /* dither: nibble in both halves, */
+    swap  NM
+    or    Q, NM
+    sbrc  r30, 0            /* shifted left by xr & 3 */
+    lsl   Q
+    sbrc  r30, 1
+    lsl   Q
+    sbrc  r30, 1
+    lsl   Q
+    SETUP
+    mov   NM, M
+    com   NM
+    ENTER d0, d1, d2, d3
+d0: CDIT  7
+d1: CDIT  6
+d2: CDIT  5
+d3: CDIT  4
+    cp    r26, r30
+    cpc   r27, r31
+    brne  d0
+    brts  1f
+    rjmp  step
+1:  rjmp  ostep
+
+sset:
+    SETUP
+    ENTER s0, s1, s2, s3
+s0: CSET
+s1: CSET
+s2: CSET
+s3: CSET
+    cp    r26, r30
+    cpc   r27, r31
+    brne  s0
+    brts  1f
+    rjmp  step
+1:  rjmp  ostep
+
+sclr:
+    SETUP
+    mov   NM, M
+    com   NM
+    ENTER c0, c1, c2, c3
+c0: CCLR
+c1: CCLR
+c2: CCLR
+c3: CCLR
+    cp    r26, r30
+    cpc   r27, r31
+    brne  c0
+    brts  1f
+    rjmp  step
+1:  rjmp  ostep
+
+fin:
+    std   Y+2, M
+    std   Y+3, K
+    pop   r31               /* r */
+    pop   r30
+    std   Z+0, RVL
+    std   Z+1, RVH
+    std   Z+4, REL
+    std   Z+5, REH
+    pop   r31               /* l */
+    pop   r30
+    std   Z+0, LVL
+    std   Z+1, LVH
+    std   Z+4, LEL
+    std   Z+5, LEH
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    pop   r11
+    pop   r10
+    pop   r9
+    pop   r8
+    pop   r7
+    pop   r6
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
+    clr   r1
+    ret
+
+/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
+ * rows and one of the rest; the state is all in memory between calls */
+big:
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r16, r18          /* rows */
+    movw  r28, r24          /* t */
+    movw  r14, r22          /* l */
+    movw  r12, r20          /* r */
+7:  movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    ldi   r18, 255
+    ldi   r19, 0
+    rcall r8k_trap
+    subi  r16, 255
+    sbci  r17, 0
+    tst   r17
+    brne  7b                /* still 256 or more */
+    movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    movw  r18, r16
+    rcall r8k_trap
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    ret
+
+/* rows == 1 (the commonest call): no state in registers but what the
+ * span needs; both DDAs step in memory. */
+one:
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = t */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  oneg
+1:  movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  2f
+    movw  r30, r24
+2:  cp    r26, r30
+    cpc   r27, r31
+    brge  ostep
+    ldd   M, Y+2
+    ldd   K, Y+3
+    set                     /* T set: the span returns to ostep */
+    rjmp  span
+ostep:
+    movw  r30, r22          /* l */
+    MSTEP
+    movw  r30, r20          /* r */
+    MSTEP
+    ldd   r24, Y+3          /* k = (k + 1) & 3 */
+    inc   r24
+    andi  r24, 3
+    std   Y+3, r24
+    ldd   r24, Y+2          /* m <<= 1; past bit 7: m = 1, page += w */
+    lsl   r24
+    brne  3f
+    inc   r24
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, r24
+    pop   r29
+    pop   r28
+    clr   r1
+    ret
+oneg:
+    clr   r26
+    clr   r27
+    rjmp  1b
+
+    .size r8k_trap, .-r8k_trap
