@@ -3,6 +3,7 @@
  *
  *   static const r8_s16 table[4] R8_FLASH = { 1, 2, 3, 4 };
  *   r8_s16 v = R8_RDS16(&table[i]);
+ *   (R8_RDPTR reads a data pointer stored in flash: const void *.)
  *
  * On AVR (avr-gcc, unless R8_NO_PROGMEM is defined) R8_FLASH places the
  * object in program memory (PROGMEM) and the R8_RD* macros read it with
@@ -28,6 +29,7 @@
 #define R8_RDS8(p) ((r8_s8)pgm_read_byte(p))
 #define R8_RDU16(p) ((r8_u16)pgm_read_word(p))
 #define R8_RDS16(p) ((r8_s16)pgm_read_word(p))
+#define R8_RDPTR(p) ((const void *)pgm_read_word(p))
 #define R8_HAVE_PROGMEM 1
 #else
 #define R8_FLASH
@@ -35,6 +37,7 @@
 #define R8_RDS8(p) (*(const r8_s8 *)(p))
 #define R8_RDU16(p) (*(const r8_u16 *)(p))
 #define R8_RDS16(p) (*(const r8_s16 *)(p))
+#define R8_RDPTR(p) (*(const void *const *)(p))
 #define R8_HAVE_PROGMEM 0
 #endif
 

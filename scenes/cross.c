@@ -35,8 +35,9 @@ static const r8_s16 cross_post_n[18] R8_FLASH = {
     0, -16384, 0, 0, 16384, 0,
 };
 static const r8_mesh cross_post = {cross_post_v, cross_post_f, cross_post_n, 8, 6, 1, 45};
-static const r8_demo_obj cross_objects[2] = {
+static const r8_demo_obj cross_objects[2] R8_FLASH = {
     {&cross_slab, 0, 0, 200, 0, 0, 0, 1, 3, 0},
     {&cross_post, 0, 0, 200, 0, 0, 0, 1, 3, 0},
 };
-const r8_demo r8_demo_cross = {"cross", cross_objects, 2, 50, 16, 3277, {-9459, -9459, -9459}};
+static const char cross_name[] R8_FLASH = "cross";
+const r8_demo r8_demo_cross R8_FLASH = {cross_name, cross_objects, 2, 50, 16, 3277, {-9459, -9459, -9459}};

@@ -18,7 +18,8 @@ static const r8_s16 cube_cube_n[18] R8_FLASH = {
     0, -16384, 0, 0, 16384, 0,
 };
 static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63};
-static const r8_demo_obj cube_objects[1] = {
+static const r8_demo_obj cube_objects[1] R8_FLASH = {
     {&cube_cube, 0, 0, 220, 0, 0, 0, 2, 3, 1},
 };
-const r8_demo r8_demo_cube = {"cube", cube_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+static const char cube_name[] R8_FLASH = "cube";
+const r8_demo r8_demo_cube R8_FLASH = {cube_name, cube_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};

@@ -9,27 +9,25 @@ static const char *const names[R8_DEMO_COUNT] = {
 };
 
 #ifdef R8_DEMO_ONLY
-/* one scene linked: a firmware build */
+/* one scene linked: a firmware build (no table: RAM on AVR) */
+#if R8_DEMO_ONLY == 0
+#define R8_DEMO_THE_ r8_demo_cube
+#elif R8_DEMO_ONLY == 1
+#define R8_DEMO_THE_ r8_demo_torus
+#elif R8_DEMO_ONLY == 2
+#define R8_DEMO_THE_ r8_demo_teapot
+#elif R8_DEMO_ONLY == 3
+#define R8_DEMO_THE_ r8_demo_terrain
+#elif R8_DEMO_ONLY == 4
+#define R8_DEMO_THE_ r8_demo_wall
+#elif R8_DEMO_ONLY == 5
+#define R8_DEMO_THE_ r8_demo_cross
+#else
+#define R8_DEMO_THE_ r8_demo_separate
+#endif
 const r8_demo *r8_demo_get(r8_u8 id)
 {
-    static const r8_demo *const only[R8_DEMO_COUNT] = {
-#if R8_DEMO_ONLY == 0
-        &r8_demo_cube, 0, 0, 0, 0, 0, 0
-#elif R8_DEMO_ONLY == 1
-        0, &r8_demo_torus, 0, 0, 0, 0, 0
-#elif R8_DEMO_ONLY == 2
-        0, 0, &r8_demo_teapot, 0, 0, 0, 0
-#elif R8_DEMO_ONLY == 3
-        0, 0, 0, &r8_demo_terrain, 0, 0, 0
-#elif R8_DEMO_ONLY == 4
-        0, 0, 0, 0, &r8_demo_wall, 0, 0
-#elif R8_DEMO_ONLY == 5
-        0, 0, 0, 0, 0, &r8_demo_cross, 0
-#else
-        0, 0, 0, 0, 0, 0, &r8_demo_separate
-#endif
-    };
-    return id < R8_DEMO_COUNT ? only[id] : 0;
+    return id == R8_DEMO_ONLY ? &R8_DEMO_THE_ : 0;
 }
 #else
 const r8_demo *r8_demo_get(r8_u8 id)
@@ -68,32 +66,41 @@ int r8_demo_by_name(const char *name)
 int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 {
     r8_s32 zn = 0x7FFFFFFFL, zf = 1;
-    r8_u8 i;
-    if (!d || d->nobjects > R8_DEMO_MAXOBJ)
+    r8_u8 i, nobj;
+    const r8_demo_obj *objs;
+    if (!d)
+        return -1;
+    nobj = R8_RDU8(&d->nobjects);
+    objs = (const r8_demo_obj *)R8_RDPTR(&d->objects);
+    if (nobj > R8_DEMO_MAXOBJ)
         return -1;
     run->demo = d;
-    for (i = 0; i < d->nobjects; i++) {
-        const r8_demo_obj *o = &d->objects[i];
-        r8_s32 a = (r8_s32)o->z - o->mesh->radius, b = (r8_s32)o->z + o->mesh->radius;
-        run->obj[i].mesh = o->mesh;
+    for (i = 0; i < nobj; i++) {
+        const r8_demo_obj *o = &objs[i];
+        const r8_mesh *me = (const r8_mesh *)R8_RDPTR(&o->mesh);
+        r8_s16 z = R8_RDS16(&o->z);
+        r8_s32 a = (r8_s32)z - me->radius, b = (r8_s32)z + me->radius;
+        run->obj[i].mesh = me;
         r8_pose_identity(&run->obj[i].pose);
-        run->obj[i].pose.x = o->x;
-        run->obj[i].pose.y = o->y;
-        run->obj[i].pose.z = o->z;
+        run->obj[i].pose.x = R8_RDS16(&o->x);
+        run->obj[i].pose.y = R8_RDS16(&o->y);
+        run->obj[i].pose.z = z;
         if (a < zn) zn = a;
         if (b > zf) zf = b;
     }
     run->scene.objects = run->obj;
-    run->scene.nobjects = d->nobjects;
-    run->scene.ambient = d->ambient;
-    run->scene.light = d->light;
+    run->scene.nobjects = nobj;
+    run->scene.ambient = R8_RDS16(&d->ambient);
+    run->scene.light.x = R8_RDS16(&d->light.x);
+    run->scene.light.y = R8_RDS16(&d->light.y);
+    run->scene.light.z = R8_RDS16(&d->light.z);
     r8_camera_defaults(&run->cam, width);
-    run->cam.focal = (r8_s16)(r8_mul16(width, d->focal_num) >> 6);
+    run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
     /* the depth range the objects can occupy: all the depth methods'
      * precision goes there (nothing lies nearer, so the near plane may
      * move up to it) */
-    if (zn < d->znear)
-        zn = d->znear;
+    if (zn < R8_RDS16(&d->znear))
+        zn = R8_RDS16(&d->znear);
     if (zf <= zn)
         zf = zn + 1;
     run->cam.znear = (r8_s16)zn;
@@ -105,13 +112,13 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
 {
     const r8_demo *d = run->demo;
+    const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
-    r8_u8 i;
-    for (i = 0; i < d->nobjects; i++) {
-        const r8_demo_obj *o = &d->objects[i];
+    r8_u8 i, n = R8_RDU8(&d->nobjects);
+    for (i = 0; i < n; i++, o++) {
         r8_pose *p = &run->obj[i].pose;
-        p->ax = (r8_u8)(o->ax + (r8_u8)(o->sx * f));
-        p->ay = (r8_u8)(o->ay + (r8_u8)(o->sy * f));
-        p->az = (r8_u8)(o->az + (r8_u8)(o->sz * f));
+        p->ax = (r8_u8)(R8_RDU8(&o->ax) + (r8_u8)(R8_RDS8(&o->sx) * f));
+        p->ay = (r8_u8)(R8_RDU8(&o->ay) + (r8_u8)(R8_RDS8(&o->sy) * f));
+        p->az = (r8_u8)(R8_RDU8(&o->az) + (r8_u8)(R8_RDS8(&o->sz) * f));
     }
 }

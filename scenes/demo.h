@@ -25,6 +25,8 @@ typedef struct r8_demo_obj {
     r8_s8 sx, sy, sz;
 } r8_demo_obj;
 
+/* r8_demo and its objects are R8_FLASH data (r8flash.h): on AVR read
+ * them through R8_RD* only (r8_demo_setup does). */
 typedef struct r8_demo {
     const char *name;
     const r8_demo_obj *objects;

@@ -35,10 +35,11 @@ static const r8_s16 separate_bar_n[18] R8_FLASH = {
     0, -16384, 0, 0, 16384, 0,
 };
 static const r8_mesh separate_bar = {separate_bar_v, separate_bar_f, separate_bar_n, 8, 6, 1, 29};
-static const r8_demo_obj separate_objects[4] = {
+static const r8_demo_obj separate_objects[4] R8_FLASH = {
     {&separate_cube, -50, -10, 140, 0, 0, 0, 2, 3, 0},
     {&separate_bar, 10, 14, 230, 0, 0, 0, 0, 2, 3},
     {&separate_cube, 60, -20, 320, 0, 0, 0, 3, 1, 2},
     {&separate_bar, -30, 30, 420, 0, 0, 0, 1, 0, 2},
 };
-const r8_demo r8_demo_separate = {"separate", separate_objects, 4, 50, 16, 3277, {-9459, -9459, -9459}};
+static const char separate_name[] R8_FLASH = "separate";
+const r8_demo r8_demo_separate R8_FLASH = {separate_name, separate_objects, 4, 50, 16, 3277, {-9459, -9459, -9459}};

@@ -360,7 +360,8 @@ static const r8_s16 teapot_teapot_n[696] R8_FLASH = {
     -2185, 12015, -10923, 1725, -12072, -11210, 2185, -12015, 10923, -3048, 12193, 10669,
 };
 static const r8_mesh teapot_teapot = {teapot_teapot_v, teapot_teapot_f, teapot_teapot_n, 245, 232, 0, 68};
-static const r8_demo_obj teapot_objects[1] = {
+static const r8_demo_obj teapot_objects[1] R8_FLASH = {
     {&teapot_teapot, 0, 0, 190, 20, 0, 0, 0, 3, 0},
 };
-const r8_demo r8_demo_teapot = {"teapot", teapot_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+static const char teapot_name[] R8_FLASH = "teapot";
+const r8_demo r8_demo_teapot R8_FLASH = {teapot_name, teapot_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};

@@ -347,7 +347,8 @@ static const r8_s16 terrain_terrain_n[726] R8_FLASH = {
     3373, -15741, 3373, 0, -16384, 0,
 };
 static const r8_mesh terrain_terrain = {terrain_terrain_v, terrain_terrain_f, terrain_terrain_n, 144, 242, 0, 110};
-static const r8_demo_obj terrain_objects[1] = {
+static const r8_demo_obj terrain_objects[1] R8_FLASH = {
     {&terrain_terrain, 0, 10, 210, 28, 0, 0, 0, 2, 0},
 };
-const r8_demo r8_demo_terrain = {"terrain", terrain_objects, 1, 44, 16, 3277, {-9459, -9459, -9459}};
+static const char terrain_name[] R8_FLASH = "terrain";
+const r8_demo r8_demo_terrain R8_FLASH = {terrain_name, terrain_objects, 1, 44, 16, 3277, {-9459, -9459, -9459}};

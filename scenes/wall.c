@@ -28,8 +28,9 @@ static const r8_s16 wall_pillar_n[18] R8_FLASH = {
     0, -16384, 0, 0, 16384, 0,
 };
 static const r8_mesh wall_pillar = {wall_pillar_v, wall_pillar_f, wall_pillar_n, 8, 6, 1, 64};
-static const r8_demo_obj wall_objects[2] = {
+static const r8_demo_obj wall_objects[2] R8_FLASH = {
     {&wall_wall, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     {&wall_pillar, -30, 0, 420, 0, 0, 0, 0, 1, 0},
 };
-const r8_demo r8_demo_wall = {"wall", wall_objects, 2, 40, 16, 4096, {-9459, -9459, -9459}};
+static const char wall_name[] R8_FLASH = "wall";
+const r8_demo r8_demo_wall R8_FLASH = {wall_name, wall_objects, 2, 40, 16, 4096, {-9459, -9459, -9459}};

@@ -148,6 +148,8 @@ typedef struct r8_state {
     r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 } r8_state;
 
+/* render.c */
+void r8_bucket_object(r8_render *r, r8_u8 i);
 /* transform.c */
 void r8_tf_frame(r8_state *st, const r8_camera *cam);
 void r8_tf_vertices(r8_state *st, int lazy);

@@ -569,6 +569,93 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
     return (r8_s32)((r8_u32)sx << sh) + o->t.z * n;
 }
 
+/* Object i's faces into their buckets (r8_render_frame): cull, vertex
+ * pointers (transforming vertices on first use), clip, trivial reject.
+ * External so -Os keeps its stack frame apart from r8_tf_frame's (the
+ * deepest point of a frame: it matters on the 2 KB parts). */
+void r8_bucket_object(r8_render *r, r8_u8 i)
+{
+    r8_state *st = (r8_state *)r->state;
+    const r8_scene *sc = st->scene;
+    int painter = st->method == R8_VIS_PAINTER;
+    const r8_object *ob = &sc->objects[i];
+    const r8_mesh *me = ob->mesh;
+    const r8_objx *o = &st->obj[i];
+    const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
+    r8_u8 vsh = st->vsh, normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    r8_u16 f;
+    if (o->hidden)
+        return;
+    for (f = me->nfaces; f-- > 0;) {
+        const r8_face *fc = &me->faces[f];
+        r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
+#ifdef R8_NO_CLIP
+        const r8_s16 *vp[R8_MAX_FACE_VERTS];   /* no clipped polygons */
+#else
+        const r8_s16 *vp[R8_SCAN_MAXV];
+#endif
+        r8_s16 top, bot;
+        r8_s32 zsum = 0;
+        r8_fid id;
+        r8_u16 key;
+        if (n < 3 || n > R8_MAX_FACE_VERTS)
+            continue;
+        vi[0] = R8_RDU8(&fc->v[0]);
+        if (normal && !r8_cull_front(o, me->verts + 3u * vi[0], f))
+            continue;
+        /* vertex pointers; a marked vertex sends the face to the clipper */
+        for (j = 0; j < n; j++) {
+            if (j)
+                vi[j] = R8_RDU8(&fc->v[j]);
+            vp[j] = base + ((unsigned)vi[j] << vsh);
+            if (vp[j][0] == R8_VX_TODO)
+                r8_tf_vertex(st, o, me->verts + 3u * vi[j], (r8_u16)(o->vbase + vi[j]));
+            if (vp[j][0] == R8_VX_CLIP)
+                clip = 1;
+        }
+        if (clip) {
+#ifdef R8_NO_CLIP
+            st->dropped++;     /* this build has no clipper */
+            continue;
+#else
+            r8_cpoly *cp;
+            if (st->nclipped >= st->nclip) {
+                st->dropped++;
+                continue;
+            }
+            cp = &st->cpoly[st->nclipped];
+            if (!r8_clip_face(st, o, ob, f, vi, n, cp, &zsum))
+                continue;
+            n = cp->n;
+            face_vp(st, cp->idx, n, vp);
+            id = (r8_fid)(st->nfaces + st->nclipped);
+#endif
+        } else {
+            id = (r8_fid)(o->fbase + f);
+        }
+        if (!face_rows(st, vp, n, &top, &bot))
+            continue;
+        if (clip)
+            st->nclipped++;
+        if (painter) {
+            if (!clip)
+                zsum = face_zsum(o, me, vi, n);
+            key = depth_key(st, zsum, n);
+            if (st->ftop) {
+                r8_u16 b = band_of(st, top, r->cfg.band);
+                st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
+            }
+        } else {
+            key = band_of(st, top, r->cfg.band);
+        }
+        st->next[id] = st->heads[key];
+        st->heads[key] = id;
+        if (st->slot)
+            st->slot[id] = R8_NO_SLOT;
+        st->npoly++;
+    }
+}
+
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
@@ -590,80 +677,8 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
         st->heads[k] = (r8_fid)R8_FID_END;
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
-    for (i = sc->nobjects; i-- > 0;) {
-        const r8_object *ob = &sc->objects[i];
-        const r8_mesh *me = ob->mesh;
-        const r8_objx *o = &st->obj[i];
-        const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
-        r8_u8 vsh = st->vsh, normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
-        r8_u16 f;
-        if (o->hidden)
-            continue;
-        for (f = me->nfaces; f-- > 0;) {
-            const r8_face *fc = &me->faces[f];
-            r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
-            const r8_s16 *vp[R8_SCAN_MAXV];
-            r8_s16 top, bot;
-            r8_s32 zsum = 0;
-            r8_fid id;
-            r8_u16 key;
-            if (n < 3 || n > R8_MAX_FACE_VERTS)
-                continue;
-            vi[0] = R8_RDU8(&fc->v[0]);
-            if (normal && !r8_cull_front(o, me->verts + 3u * vi[0], f))
-                continue;
-            /* vertex pointers; a marked vertex sends the face to the clipper */
-            for (j = 0; j < n; j++) {
-                if (j)
-                    vi[j] = R8_RDU8(&fc->v[j]);
-                vp[j] = base + ((unsigned)vi[j] << vsh);
-                if (vp[j][0] == R8_VX_TODO)
-                    r8_tf_vertex(st, o, me->verts + 3u * vi[j], (r8_u16)(o->vbase + vi[j]));
-                if (vp[j][0] == R8_VX_CLIP)
-                    clip = 1;
-            }
-            if (clip) {
-#ifdef R8_NO_CLIP
-                st->dropped++;     /* this build has no clipper */
-                continue;
-#else
-                r8_cpoly *cp;
-                if (st->nclipped >= st->nclip) {
-                    st->dropped++;
-                    continue;
-                }
-                cp = &st->cpoly[st->nclipped];
-                if (!r8_clip_face(st, o, ob, f, vi, n, cp, &zsum))
-                    continue;
-                n = cp->n;
-                face_vp(st, cp->idx, n, vp);
-                id = (r8_fid)(st->nfaces + st->nclipped);
-#endif
-            } else {
-                id = (r8_fid)(o->fbase + f);
-            }
-            if (!face_rows(st, vp, n, &top, &bot))
-                continue;
-            if (clip)
-                st->nclipped++;
-            if (painter) {
-                if (!clip)
-                    zsum = face_zsum(o, me, vi, n);
-                key = depth_key(st, zsum, n);
-                if (st->ftop) {
-                    r8_u16 b = band_of(st, top, r->cfg.band);
-                    st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
-                }
-            } else {
-                key = band_of(st, top, r->cfg.band);
-            }
-            st->next[id] = st->heads[key];
-            st->heads[key] = id;
-            if (st->slot)
-                st->slot[id] = R8_NO_SLOT;
-            st->npoly++;
-        }
-    }
+    for (i = sc->nobjects; i-- > 0;)
+        r8_bucket_object(r, i);
     /* painter's: chain the buckets, far to near, into the draw list;
      * band buckets stay apart (r8_render_band merges them) */
     cur = (r8_fid)R8_FID_END;

@@ -586,13 +586,14 @@ def to_c_scene(sc):
         out.append("};")
         out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
                    f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}}};")
-    out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] = {{")
+    out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")
     for o in sc.objects:
         out.append(f"    {{&{mids[o.mesh]}, {o.pos[0]}, {o.pos[1]}, {o.pos[2]}, "
                    f"{o.rot[0]}, {o.rot[1]}, {o.rot[2]}, {o.spin[0]}, {o.spin[1]}, {o.spin[2]}}},")
     out.append("};")
     lx, ly, lz = _light_q14(sc.light)
-    out.append(f'const r8_demo r8_demo_{sid} = {{"{sc.name}", {sid}_objects, {len(sc.objects)}, '
+    out.append(f'static const char {sid}_name[] R8_FLASH = "{sc.name}";')
+    out.append(f"const r8_demo r8_demo_{sid} R8_FLASH = {{{sid}_name, {sid}_objects, {len(sc.objects)}, "
                f"{sc.focal}, {sc.near}, {_q14(sc.ambient)}, {{{lx}, {ly}, {lz}}}}};")
     return "\n".join(out) + "\n"
 
