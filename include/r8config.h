@@ -24,11 +24,17 @@
 #ifdef R8_ARDUINO_PRESET
 /* the Arduino library zip (make arduino): on an ATmega328P (32 KB of
  * flash, 2 KB of RAM: no room for a z-buffer band anyway) cull and
- * painter's with flat and Lambert shading; edit here for more */
+ * painter's with flat and Lambert shading into the SSD1306 page layout,
+ * RLE on the wire, meshes with their normals (the scene converter's),
+ * no clipper (keep the camera off the geometry); edit here for more */
 #define R8_NO_ZBUF
 #define R8_NO_BLOCK
 #define R8_NO_SBUF
 #define R8_NO_GOURAUD
+#define R8_NO_CLIP
+#define R8_NO_LZ77
+#define R8_NO_RT_NORMALS
+#define R8_PAGE1_ONLY
 #endif
 
 #endif

@@ -68,6 +68,9 @@ void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
 /* The 4x4 ordered-dither pattern of level s on frame row y: a byte,
  * MSB = pixel x % 8 == 0, period 4. */
 r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y);
+/* The same in line for s <= 16 (the table is R8_FLASH data). */
+extern const r8_u8 r8_fb_dither_tab[17 * 4];
+#define R8_FB_DITHER(s, y) R8_RDU8(&r8_fb_dither_tab[((unsigned)(s) << 2) | ((unsigned)(y) & 3u)])
 /* The 4 dither thresholds of frame row y: level s lights pixel x iff
  * s > t[x & 3].  The table is R8_FLASH data: read it with R8_RDU8. */
 const r8_u8 *r8_fb_dither_thresholds(r8_s16 y);

@@ -8,6 +8,7 @@
  *               into an SSD1306 page band (R8_ASM_TRAP)
  *   r8k_xform   a model vertex (flash) into camera space (R8_ASM_XFORM)
  *   r8k_project a camera-space point to screen coordinates (R8_ASM_PROJECT)
+ *   r8k_edge    an edge's column DDA for its first row (R8_ASM_EDGE)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -47,5 +48,17 @@ void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *o
  * reciprocal of c->z as r8_recip gives it (the depth is taken from it).
  * Returns 1, out[] unset, when c lies outside the guard band. */
 int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
+
+/* The column DDA of the edge from a to b (12.4 screen points x, y with
+ * b[1] > a[1]) on its first row y0 = R8_ROW_OF(a[1]): it->val the
+ * column of the first pixel centre at or right of the edge on row y0
+ * (top-left rule: ceil((a[0] - 8 + (16 y0 + 8 - a[1]) (b[0] - a[0]) /
+ * (b[1] - a[1])) / 16)), and it->q, r, den, err such that R8_INTERP_STEP
+ * moves it exactly to the next row (den = b[1] - a[1]).  Returns y0; or
+ * R8_EDGE_WIDE, *it unset, for an edge this 16-bit set-up does not take
+ * (dy >= 1424 subpixels, a slope of 2048 columns per row or more, or an
+ * x beyond +-1024 px): the caller then sets it up in 32 bits (scan.c). */
+r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
+#define R8_EDGE_WIDE (-32767 - 1)
 
 #endif

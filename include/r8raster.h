@@ -12,6 +12,7 @@
 
 #include "r8types.h"
 #include "r8fb.h"
+#include "r8fixed.h"
 
 /* Stepwise linear interpolator, exact form: value(k) =
  * base + floor((num0 + k * step) / den), stepped with an integer error
@@ -123,6 +124,8 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 
 /* Row of the first pixel centre at or below subpixel y: ceil((y-8)/16). */
 r8_s16 r8_row_of(r8_s16 y);
+/* The same in line, for |y| < 32760 (2048 beyond: below any frame). */
+#define R8_ROW_OF(y) ((y) > 32760 ? 2048 : R8_FLOOR16((y) + 7))
 
 /* Fill a polygon into fb with colour c, flat (convenience for tests and
  * tools).  Returns pixels written inside the band. */

@@ -67,8 +67,8 @@ const r8_u8 *r8_fb_dither_thresholds(r8_s16 y)
 
 const r8_u8 r8_fb_bit[8] R8_FLASH = { 1, 2, 4, 8, 16, 32, 64, 128 };
 
-/* dither_rows[4 s + (y & 3)]: the pattern of level s on row y */
-static const r8_u8 dither_rows[17 * 4] R8_FLASH = {
+/* r8_fb_dither_tab[4 s + (y & 3)]: the pattern of level s on row y */
+const r8_u8 r8_fb_dither_tab[17 * 4] R8_FLASH = {
     0x00, 0x00, 0x00, 0x00,
     0x88, 0x00, 0x00, 0x00,
     0x88, 0x00, 0x22, 0x00,
@@ -92,7 +92,7 @@ r8_u8 r8_fb_dither_row(r8_u8 s, r8_s16 y)
 {
     if (s > 16)
         s = 16;
-    return R8_RDU8(&dither_rows[((unsigned)s << 2) | (unsigned)(y & 3)]);
+    return R8_FB_DITHER(s, y);
 }
 
 void r8_fb_page_run(r8_u8 *p, unsigned n, r8_u8 m, r8_u8 pat, r8_u8 ph)

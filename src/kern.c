@@ -24,6 +24,74 @@ int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_
 }
 #endif
 
+#ifndef R8_ASM_EDGE
+/* n / d and n % d for d > 0, by shift and subtract from the quotient's
+ * top bit: a few steps for the small quotients of edge slopes (a library
+ * 16-bit division always takes 16). */
+static r8_u16 udivmod(r8_u16 n, r8_u16 d, r8_u16 *rem)
+{
+    r8_u16 q = 0, bit = 1;
+    if (n < d) {
+        *rem = n;
+        return 0;
+    }
+    while (d <= (n >> 1)) {
+        d <<= 1;
+        bit <<= 1;
+    }
+    for (;;) {
+        if (n >= d) {
+            n = (r8_u16)(n - d);
+            q |= bit;
+        }
+        if (bit == 1)
+            break;
+        d >>= 1;
+        bit >>= 1;
+    }
+    *rem = n;
+    return q;
+}
+
+r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b)
+{
+    r8_s16 ax = a[0], ay = a[1], bx = b[0];
+    r8_u16 dy = (r8_u16)((r8_u16)b[1] - (r8_u16)ay), udx, rd, u, d16;
+    r8_s16 y0, q, p, dx;
+    r8_u8 s0, pl, neg;
+    if (dy >= 1424u || ax < -16384 || ax > 16383 || bx < -16384 || bx > 16383)
+        return R8_EDGE_WIDE;
+    y0 = R8_ROW_OF(ay);
+    s0 = (r8_u8)((r8_u16)((r8_u16)y0 * 16u + 8u - (r8_u16)ay));   /* 0..15 */
+    dx = (r8_s16)(bx - ax);
+    neg = (r8_u8)(dx < 0);
+    udx = neg ? (r8_u16)(-(dx + 1)) : (r8_u16)dx;     /* -dx - 1 >= 0 */
+    q = (r8_s16)udivmod(udx, dy, &rd);
+    if (neg) {
+        q = (r8_s16)(-q - 1);                          /* floor */
+        rd = (r8_u16)(dy - 1u - rd);
+    }
+    if (q >= 2048 || q <= -2048)
+        return R8_EDGE_WIDE;
+    it->q = q;
+    it->r = rd;
+    it->den = dy;
+    /* ax - 8 = 16 axh + axl, P = axl + s0 q = 16 Ph + Pl: the first column
+     * is axh + Ph + ceil((dy Pl + s0 rd) / (16 dy)) */
+    p = (r8_s16)(((r8_u16)(ax - 8) & 15u) + (r8_s16)s0 * q);
+    pl = (r8_u8)((r8_u16)p & 15u);
+    it->val = (r8_s16)(R8_FLOOR16(ax - 8) + R8_FLOOR16(p));
+    d16 = R8_SHL4U(dy);
+    u = (r8_u16)(dy * pl + (r8_u16)s0 * rd + d16 - 1u);     /* < 46 dy < 2^16 */
+    while (u >= d16) {
+        u = (r8_u16)(u - d16);
+        it->val++;
+    }
+    it->err = R8_SHR4U(u);
+    return y0;
+}
+#endif
+
 #ifndef R8_ASM_TRAP
 void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows)
 {

@@ -126,6 +126,8 @@ typedef struct r8_state {
     unsigned esize;     /* bytes per entry */
     r8_u8 npool;
     r8_u8 pool_used;
+    r8_u8 pool_free;    /* first free pool entry (R8_NO_SLOT: none); a free
+                           entry's level byte links the next */
     r8_cpoly *cpoly;    /* clipper polygons */
     r8_u8 nclip, nclipped;
     r8_u16 sv_used;     /* vertices in sv, clip vertices included */

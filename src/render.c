@@ -434,6 +434,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->dropped = 0;
     st->nclipped = 0;
     st->pool_used = 0;
+    st->pool_free = R8_NO_SLOT;
     st->cam.cx = (r8_s16)(cfg->width * 8);
     st->cam.cy = (r8_s16)(cfg->height * 8);
 #ifndef R8_NO_RT_NORMALS
@@ -693,9 +694,14 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
         }
     }
     st->first = cur;
-    /* the pool shares memory with the buckets and the clipper: all free */
-    for (k = 0; k < st->npool; k++)
-        ((r8_acthead *)(void *)ENTRY(st, k))->used = 0;
+    /* the pool shares memory with the buckets and the clipper: all free,
+     * in one list */
+    st->pool_free = st->npool ? 0 : R8_NO_SLOT;
+    for (k = 0; k < st->npool; k++) {
+        r8_acthead *e = (r8_acthead *)(void *)ENTRY(st, k);
+        e->used = 0;
+        e->level = (r8_u8)(k + 1u < st->npool ? k + 1u : R8_NO_SLOT);
+    }
 }
 
 /* ---- per band ---- */
@@ -784,11 +790,9 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         /* a pool entry if one is free (kept if the face goes on below
          * this band), else the one-off entry */
         e = (r8_acthead *)(void *)st->tmp;
-        if (st->pool_used < st->npool) {
-            for (k = 0; ((r8_acthead *)(void *)ENTRY(st, k))->used; k++)
-                ;
+        k = st->pool_free;
+        if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
-        }
         n = face_setup(st, g, e->c.vp, &oi);
         if (st->method == R8_VIS_PAINTER) {
             r8_s16 top, bot;
@@ -798,12 +802,13 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         }
         if (!r8_scanx_begin(&e->c, n, y0))
             return 1;              /* nothing from this band on */
-        e->level = face_level(st, g, oi);
         if (k != R8_NO_SLOT) {
+            st->pool_free = e->level;       /* off the free list */
             e->used = 1;
             st->slot[g] = k;
             st->pool_used++;
         }
+        e->level = face_level(st, g, oi);
 #ifndef R8_FAST_ONLY
         if (!st->fast) {
             r8_act *a = (r8_act *)(void *)e;
@@ -825,6 +830,8 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     done = c->y >= c->ybot || c->backface;
     if (done && k != R8_NO_SLOT) {
         e->used = 0;
+        e->level = st->pool_free;           /* back on the free list */
+        st->pool_free = k;
         st->slot[g] = R8_NO_SLOT;
         st->pool_used--;
     }

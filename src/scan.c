@@ -34,36 +34,7 @@ r8_s16 r8_row_of(r8_s16 y)
     return (r8_s16)(v >= 0 ? v >> 4 : -((-v + 15) >> 4));
 }
 
-/* r8_row_of in line */
-#define ROW_OF(y) ((y) > 32760 ? 2048 : R8_FLOOR16((y) + 7))
-
-/* n / d and n % d for d > 0, by shift and subtract from the quotient's
- * top bit: a few steps for the small quotients of edge slopes (a library
- * 16-bit division always takes 16). */
-static r8_u16 udivmod(r8_u16 n, r8_u16 d, r8_u16 *rem)
-{
-    r8_u16 q = 0, bit = 1;
-    if (n < d) {
-        *rem = n;
-        return 0;
-    }
-    while (d <= (n >> 1)) {
-        d <<= 1;
-        bit <<= 1;
-    }
-    for (;;) {
-        if (n >= d) {
-            n = (r8_u16)(n - d);
-            q |= bit;
-        }
-        if (bit == 1)
-            break;
-        d >>= 1;
-        bit >>= 1;
-    }
-    *rem = n;
-    return q;
-}
+#define ROW_OF(y) R8_ROW_OF(y)
 
 #define VX(s, i) ((s)->vp[i][0])
 #define VY(s, i) ((s)->vp[i][1])
@@ -76,7 +47,8 @@ static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
 }
 
 /* Column DDA of the edge (ax, ay) -> (bx, by), by > ay, on its first row
- * y0 = row_of(ay).  Returns y0.  For edges over 2047 pixels tall (only
+ * y0 = row_of(ay), in 32 bits: the edges r8k_edge (r8kern.h, the 16-bit
+ * set-up) leaves.  Returns y0.  For edges over 2047 pixels tall (only
  * direct callers reach them: the renderer's guard band keeps edges under
  * 1800) coordinates are halved: a column can then be off by one where
  * the edge passes within 1/8 pixel of a centre (tests/host/test_stability.c). */
@@ -145,44 +117,6 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
     return y0;
 }
 
-/* The same in 16-bit arithmetic for the edges the renderer makes: under
- * 89 pixels tall, slopes under 2048 columns per row, x inside +-1024 px. */
-static r8_s16 edge_dda(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
-{
-    r8_u16 dy = (r8_u16)((r8_u16)by - (r8_u16)ay), udx, rd, u, d16;
-    r8_s16 y0, q, p, dx;
-    r8_u8 s0, pl, neg;
-    if (dy >= 1424u || ax < -16384 || ax > 16383 || bx < -16384 || bx > 16383)
-        return edge_dda_wide(it, ax, ay, bx, by);
-    y0 = ROW_OF(ay);
-    s0 = (r8_u8)((r8_u16)((r8_u16)y0 * 16u + 8u - (r8_u16)ay));   /* 0..15 */
-    dx = (r8_s16)(bx - ax);
-    neg = (r8_u8)(dx < 0);
-    udx = neg ? (r8_u16)(-(dx + 1)) : (r8_u16)dx;     /* -dx - 1 >= 0 */
-    q = (r8_s16)udivmod(udx, dy, &rd);
-    if (neg) {
-        q = (r8_s16)(-q - 1);                          /* floor */
-        rd = (r8_u16)(dy - 1u - rd);
-    }
-    if (q >= 2048 || q <= -2048)
-        return edge_dda_wide(it, ax, ay, bx, by);
-    it->q = q;
-    it->r = rd;
-    it->den = dy;
-    /* as edge_dda_wide: ax - 8 = 16 axh + axl, P = axl + s0 q = 16 Ph + Pl */
-    p = (r8_s16)(((r8_u16)(ax - 8) & 15u) + (r8_s16)s0 * q);
-    pl = (r8_u8)((r8_u16)p & 15u);
-    it->val = (r8_s16)(R8_FLOOR16(ax - 8) + R8_FLOOR16(p));
-    d16 = R8_SHL4U(dy);
-    u = (r8_u16)(dy * pl + (r8_u16)s0 * rd + d16 - 1u);     /* < 46 dy < 2^16 */
-    while (u >= d16) {
-        u = (r8_u16)(u - d16);
-        it->val++;
-    }
-    it->err = R8_SHR4U(u);
-    return y0;
-}
-
 /* Set up edge e on the chain going in direction dir from polygon
  * position `from`, for row y: skips edges that end at or above row y,
  * and steps a started edge down to row y. */
@@ -210,7 +144,9 @@ static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
         e->x.den = 1;
         return;
     }
-    y0 = edge_dda(&e->x, a[0], a[1], b[0], b[1]);
+    y0 = r8k_edge(&e->x, a, b);    /* 16-bit, or a port's kernel */
+    if (y0 == R8_EDGE_WIDE)
+        y0 = edge_dda_wide(&e->x, a[0], a[1], b[0], b[1]);
     while (y0 < y) {
         R8_INTERP_STEP(&e->x);
         y0++;
@@ -313,15 +249,24 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
     by = (r8_s16)(y - fb->y0);
     t.page = fb->buf + (unsigned)(by >> 3) * (unsigned)w;
     t.m = R8_FB_BIT(by);
-    t.k = 0;
+    t.k = (r8_u8)(y & 3);            /* pat[k] is the pattern of rows k mod 4 */
     t.w = w;
+    if (level > 16)
+        level = 16;
     for (k = 0; k < 4; k++)
-        t.pat[k] = r8_fb_dither_row(level, (r8_s16)(y + k));
+        t.pat[k] = R8_FB_DITHER(level, k);
     while (y < lim) {
         r8_s16 stop = lim;
-        if (y >= l->yend || y >= r->yend || (judd && !s->front))
+        if (judd && !s->front) {
             if (!r8_scan_row(s, y, judd))
                 return;
+        } else {
+            /* r8_scan_row without Judd's test: edges that ended restart */
+            if (y >= l->yend)
+                edge_start(s, l, l->vi, -1, y);
+            if (y >= r->yend)
+                edge_start(s, r, r->vi, 1, y);
+        }
         if (l->yend < stop)
             stop = l->yend;
         if (r->yend < stop)
