@@ -5,7 +5,7 @@
 #
 #   make xtargets   runners, target libraries, per-target sizes, unit tests
 #   make fw         every firmware build the identity tests use
-#   make bench      build/bench/results.json + docs/benchmarks.md
+#   make bench      build/bench/results.json + results.md (make docs copies it)
 #
 # Under build/x/<target>/ (target = avr328 avr1284 6502 z80):
 #   obj/            library objects (src/*.c, examples/spin/app.c), plat, scene_S
@@ -199,6 +199,13 @@ $(foreach t,$(XTARGETS),$(eval $(call XPROG,$(t))))
 XSZ = $(XSCENES:%=$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)))
 $(XB)/avr1284/sizes.txt: $(call XSZ,avr1284) $(AVRSIM) tests/targets/sizes.sh
 	bash tests/targets/sizes.sh avr1284 $@ $(call XSZ,avr1284)
+# Gouraud's arenas (make bench measures every shading): sizers built so
+XSZG = $(XSCENES:%=$(XB)/avr1284/sizesg/sizes-%.elf)
+$(XB)/avr1284/sizesg/sizes-%.elf: tests/targets/fw_sizes.c ports/fw_trim.c $(XB)/avr1284/obj/scene_%.o $(XDEPS_avr1284)
+	@mkdir -p $(dir $@)
+	$(XENV) bash ports/xbuild.sh avr1284 $@ $< $(XB)/avr1284/obj/scene_$*.o -- $(FW_DEFS) -DFW_SCENE=$* -Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_PLAN_ONLY -DFW_SHADING=2
+$(XB)/avr1284/sizes-sh2.txt: $(XSZG) $(AVRSIM) tests/targets/sizes.sh
+	bash tests/targets/sizes.sh avr1284 $@ $(XSZG)
 XSZ328 = $(XSCENES:%=$(XB)/avr1284/sizes328/sizes-%.elf)
 $(XB)/avr1284/sizes328/sizes-%.elf: tests/targets/fw_sizes.c ports/fw_trim.c ports/fwdefs.sh $(XB)/avr1284/obj/scene_%.o $(XDEPS_avr1284)
 	@mkdir -p $(dir $@)
