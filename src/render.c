@@ -815,7 +815,9 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
         n = face_setup(st, g, e->c.vp, &oi);
-        if (st->method == R8_VIS_PAINTER) {
+        if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
+            /* (with ftop, r8_render_band has already skipped the faces
+             * that start lower down) */
             r8_s16 top, bot;
             face_rows(st, e->c.vp, n, &top, &bot);
             if (top >= y1)
