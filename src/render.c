@@ -845,6 +845,12 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     if (!st->fast) {
         r8_act *a = (r8_act *)(void *)e;
         r8_span sp;
+#ifndef R8_NO_ZBUF
+        if ((st->method == R8_VIS_Z8 || st->method == R8_VIS_Z16) &&
+            !(st->attrs & R8_ATTR_S) && fb->format == R8_FMT_PAGE1)
+            r8_zfill(st, a, y1, fb, st->method == R8_VIS_Z16);   /* the common case */
+        else
+#endif
         while (r8_scan_next(&a->s, y1, st->judd, &sp))
             draw_span(st, fb, e->level, g, &sp);
     } else
