@@ -67,8 +67,8 @@ $(EXB)/6502/fly/size.prg: $(FLY_DEPS) $(EXB)/6502/fly/fly.o $(EXB)/6502/obj/scen
 $(EXB)/z80/fly/size.ihx: $(FLY_DEPS) $(EXB)/z80/fly/fly.rel $(EXB)/z80/obj/scene_3.rel $(EXB)/z80/obj/plat_z80.rel $(EXB)/z80/rast8.lib
 	$(call fly_link,z80,$@,rel,-DFLY_SIZE_ONLY)
 
-$(EXB)/%/fly/ram.txt: tests/examples/fly_ram.sh $(BUILD)/emu/avrsim
-	bash tests/examples/fly_ram.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
+$(EXB)/%/fly/ram.txt: tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
 $(EXB)/avr328/fly/ram.txt: $(EXB)/avr328/fly/size.elf
 $(EXB)/avr1284/fly/ram.txt: $(EXB)/avr1284/fly/size.elf
 $(EXB)/6502/fly/ram.txt: $(EXB)/6502/fly/size.prg
@@ -93,3 +93,57 @@ test-flythrough: $(SETUP)
 	@bash scripts/run-step.sh flythrough $(PY) tests/examples/fly_check.py --frames $(FLY_FRAMES)
 
 TEST_STEPS += test-flythrough
+
+# ---- ssd1306: an ATmega328P drawing on an SSD1306 over SPI
+#   build/emu/ssd1306sim          libsimavr + simavr's SSD1306 part on SPI
+#   build/examples/ssd1306        the same application on the host
+#   build/x/avr328/oled/oled-F.elf  the firmware (F frames; -small: its
+#                                 arena one byte under oled_cube_ram())
+OLED_DIR    := examples/ssd1306
+OLED_HDR    := $(OLED_DIR)/oled_cube.h $(OLED_DIR)/ssd1306_spi.h $(EX_HDRS)
+OLED_FRAMES := 16
+OLED_STEP   := 5
+OLED_X      := $(EXB)/avr328/oled
+OLED_XDEFS  := -Isrc -I$(OLED_DIR) -DOLED_TRIM -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK \
+  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY
+OLED_OBJS   := $(OLED_X)/oled_cube.o $(OLED_X)/ssd1306_spi.o
+SSDSIM      := $(BUILD)/emu/ssd1306sim
+
+ALL_TARGETS += $(EXH)/ssd1306
+
+$(SSDSIM): emu/ssd1306sim.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra $$(pkg-config --cflags simavr simavrparts) -o $@ $< \
+	  -l:libsimavrparts.a $$(pkg-config --libs simavr) -lelf
+
+$(EXH)/ssd1306: $(OLED_DIR)/ssd1306_host.c $(OLED_DIR)/oled_cube.c $(OLED_HDR) $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(STRICT) -O2 $(INC) -I$(OLED_DIR) $(OLED_DIR)/ssd1306_host.c $(OLED_DIR)/oled_cube.c $(LIBS) -o $@
+
+$(OLED_X)/%.o: $(OLED_DIR)/%.c $(OLED_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,avr328,$@,$<,$(OLED_XDEFS))
+
+oled_link = $(XENV) bash ports/xbuild.sh avr328 $(1) $(OLED_DIR)/fw_ssd1306.c $(OLED_OBJS) -- $(OLED_XDEFS) $(2)
+OLED_DEPS = $(OLED_DIR)/fw_ssd1306.c $(OLED_OBJS) $(EXB)/avr328/obj/plat_avr.o $(EXB)/avr328/librast8.a \
+  ports/xbuild.sh src/render.c src/scan.c
+$(OLED_X)/size.elf: $(OLED_DEPS)
+	$(call oled_link,$@,-DOLED_SIZE_ONLY)
+$(OLED_X)/ram.txt: $(OLED_X)/size.elf tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh avr328 $< $@
+$(OLED_X)/oled-$(OLED_FRAMES).elf: $(OLED_DEPS) $(OLED_X)/ram.txt
+	$(call oled_link,$@,-DOLED_FRAMES=$(OLED_FRAMES) -DOLED_STEP=$(OLED_STEP) -DOLED_RAM=$$(cat $(OLED_X)/ram.txt))
+$(OLED_X)/oled-small.elf: $(OLED_DEPS) $(OLED_X)/ram.txt
+	$(call oled_link,$@,-DOLED_FRAMES=$(OLED_FRAMES) -DOLED_STEP=$(OLED_STEP) -DOLED_RAM=$$(($$(cat $(OLED_X)/ram.txt) - 1)))
+
+# the Arduino sketch (make arduino): examples/ssd1306/ssd1306.ino and these
+ARDUINO_FILES_ssd1306 := $(OLED_DIR)/oled_cube.c $(OLED_DIR)/oled_cube.h $(OLED_DIR)/ssd1306_spi.c \
+  $(OLED_DIR)/ssd1306_spi.h
+
+.PHONY: test-ssd1306
+# simavr's SSD1306 display RAM after every frame against the host build
+# and r8dump (tests/examples/ssd1306_check.py)
+test-ssd1306: $(SETUP) $(ARDUINO_ZIP)
+	@bash scripts/run-step.sh ssd1306 $(PY) tests/examples/ssd1306_check.py --frames $(OLED_FRAMES) --step $(OLED_STEP)
+
+TEST_STEPS += test-ssd1306
