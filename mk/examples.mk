@@ -147,3 +147,22 @@ test-ssd1306: $(SETUP) $(ARDUINO_ZIP)
 	@bash scripts/run-step.sh ssd1306 $(PY) tests/examples/ssd1306_check.py --frames $(OLED_FRAMES) --step $(OLED_STEP)
 
 TEST_STEPS += test-ssd1306
+
+# ---- two-objects: the analyser's choice for two separate convex objects
+TWO_DIR := examples/two-objects
+ALL_TARGETS += $(EXH)/two-objects
+
+$(EXH)/two-objects: $(TWO_DIR)/two_host.c $(TWO_DIR)/two.c $(TWO_DIR)/two.h $(EX_HDRS) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -I$(TWO_DIR) $(TWO_DIR)/two_host.c $(TWO_DIR)/two.c $(LIB) -o $@
+
+.PHONY: test-two-objects test-examples-c89
+test-two-objects: $(EXH)/two-objects $(SETUP)
+	@bash scripts/run-step.sh two-objects $(PY) tests/examples/two_check.py
+
+# the examples' application files run on the targets: the library's C89
+# gate (gcc, clang) and the three cross compilers
+test-examples-c89:
+	@bash scripts/run-step.sh examples-c89 bash tests/examples/c89.sh
+
+TEST_STEPS += test-two-objects test-examples-c89
