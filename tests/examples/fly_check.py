@@ -6,7 +6,8 @@ Host (build/examples/flythrough --keys): the stream decodes to F good
 frames; every frame was steered by the script line before it (the log's
 key column); the camera moved as those keys say (turns, tilts and moves,
 from fly.h's rules); the clipper had work and dropped nothing; the same
-run without keys streams other frames.
+run without keys streams other frames; live over a pty (--pty), INPUT
+packets written by a reader steer it.
 Targets (default avr328 avr1284 6502 z80): the firmware
 build/x/T/fly/fly-F.* (examples/flythrough/fw_fly.c, the script compiled
 in and fed through fly_rx after each frame) runs in its simulator and
@@ -20,6 +21,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tests", "targets"))
@@ -95,6 +97,49 @@ def steering(rows, masks):
     return bad
 
 
+def pty_check():
+    """The live path: flythrough --pty, a reader on the pty sends INPUT
+    packets as `rast8 view` does; the frames stand still until a key is
+    held, then change."""
+    try:
+        import serial
+        sys.path.insert(0, os.path.join(ROOT, "host"))
+        from rast8.protocol import StreamDecoder, input_packet
+    except ImportError as e:
+        return check(False, "pty: %s (run scripts/setup.sh)" % e)
+    p = subprocess.Popen([HOST, "--pty", "--frames", "0", "--baud", "20000", "-q"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    before, after, sent, why = [], [], False, ""
+    try:
+        dev = p.stdout.readline().decode().strip()
+        port = serial.Serial(dev, timeout=0.05)
+        port.write(input_packet(0))            # the reader is there (opens the gate)
+        dec, t0 = StreamDecoder(), time.time()
+        while time.time() - t0 < 30 and len(after) < 6:
+            try:
+                data = port.read(4096)
+            except serial.SerialException as e:
+                why = str(e)
+                break
+            for f in dec.feed(data):
+                (after if sent else before).append(f.pixels)
+            if not sent and len(before) >= 4:
+                port.write(input_packet(KEY["A"] | KEY["RIGHT"]))   # fly forward, turn right
+                sent = True
+        port.close()
+    except (OSError, serial.SerialException) as e:
+        why = str(e)
+    finally:
+        p.terminate()
+        p.wait(timeout=10)
+    still = len(before) >= 4 and len(set(before)) == 1
+    moved = len(after) >= 6 and len(set(after[2:])) > 1 and after[-1] != before[0]
+    return check(still and moved, "pty (%s): %d frames stand still with no key, then A+RIGHT "
+                 "held over INPUT packets: %d frames, %d different%s"
+                 % ("live, 20000 baud", len(before), len(after), len(set(after)),
+                    "; " + why if why else ""))
+
+
 def main():
     global skipped
     ap = argparse.ArgumentParser()
@@ -143,6 +188,7 @@ def main():
     check(rc0 == 0 and still != ref and stats(still).get("frames") == a.frames,
           "host: without keys the camera stays put and the stream differs (%d vs %d bytes)"
           % (len(still), len(ref)))
+    pty_check()
     # ---- every target against the host
     ran = set()
     for t in a.targets:
