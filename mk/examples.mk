@@ -143,7 +143,9 @@ ARDUINO_FILES_ssd1306 := $(OLED_DIR)/oled_cube.c $(OLED_DIR)/oled_cube.h $(OLED_
 .PHONY: test-ssd1306
 # simavr's SSD1306 display RAM after every frame against the host build
 # and r8dump (tests/examples/ssd1306_check.py)
-test-ssd1306: $(SETUP) $(ARDUINO_ZIP)
+# (the zip through the phony `arduino`: mk/package.mk, where ARDUINO_ZIP
+# is set, is read after this file)
+test-ssd1306: $(SETUP) arduino
 	@bash scripts/run-step.sh ssd1306 $(PY) tests/examples/ssd1306_check.py --frames $(OLED_FRAMES) --step $(OLED_STEP)
 
 TEST_STEPS += test-ssd1306
