@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 from . import codec as _codec
 from .codec import crc16, CodecError
+from .formats import FMT_PAGE1, FMT_ROW1, FMT_IDX8, FORMAT_NAMES, FORMAT_BY_ID  # noqa: F401
 
 VERSION = 1
 PKT_FRAME_START, PKT_BAND, PKT_FRAME_END, PKT_REQUEST = 0x01, 0x02, 0x03, 0x10
@@ -28,9 +29,6 @@ FLAG_FULL = 0x01
 START_BYTES, BAND_HDR, END_BYTES, CRC_BYTES = 14, 6, 7, 2
 MAX_DIM = 4095
 MAX_BAND = 32767
-FMT_PAGE1, FMT_ROW1, FMT_IDX8 = 0, 1, 2
-FORMAT_NAMES = {"page1": FMT_PAGE1, "row1": FMT_ROW1, "idx8": FMT_IDX8}
-FORMAT_BY_ID = {v: k for k, v in FORMAT_NAMES.items()}
 
 
 def fb_bytes(fmt, width, rows):
