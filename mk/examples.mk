@@ -41,9 +41,10 @@ $(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/pl
 	  emu/plat_host.c $(LIBS) -o $@
 
 # the key script as the INPUT packets a display sends (fw_fly.c FLY_KEYS)
+# (and as bytes for the UART: emu/avrsim -i, the FLY_UART firmware)
 $(EXB)/fly/fly_keys.h: $(FLY_KEYS) $(FLY_DIR)/keys2c.py $(SETUP)
 	@mkdir -p $(dir $@)
-	$(PY) $(FLY_DIR)/keys2c.py $(FLY_KEYS) -o $@
+	$(PY) $(FLY_DIR)/keys2c.py $(FLY_KEYS) -o $@ --bin $(EXB)/fly/fly_keys.bin
 
 $(EXB)/%/fly/fly.o: $(FLY_DIR)/fly.c $(FLY_HDR)
 	@mkdir -p $(dir $@)
@@ -76,6 +77,9 @@ $(EXB)/z80/fly/ram.txt: $(EXB)/z80/fly/size.ihx
 
 $(EXB)/%/fly/fly-$(FLY_FRAMES).elf: $(EXB)/%/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/%/fly/size.elf
 	$(call fly_fw,$*,$@,o)
+# the ATmega1284P with the keys over its UART (plat_getc) instead
+$(EXB)/avr1284/fly/fly-uart-$(FLY_FRAMES).elf: $(EXB)/avr1284/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/avr1284/fly/size.elf
+	$(call fly_link,avr1284,$@,o,-DFLY_KEYS -DFLY_UART -DFLY_FRAMES=$(FLY_FRAMES) -DFLY_RAM=$$(cat $(EXB)/avr1284/fly/ram.txt))
 $(EXB)/6502/fly/fly-$(FLY_FRAMES).prg: $(EXB)/6502/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/6502/fly/size.prg
 	$(call fly_fw,6502,$@,o)
 $(EXB)/z80/fly/fly-$(FLY_FRAMES).ihx: $(EXB)/z80/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/z80/fly/size.ihx

@@ -92,7 +92,9 @@ void fly_camera(const fly_state *s, r8_camera *c)
 static void config(r8_render_cfg *rc, r8_tx_cfg *t)
 {
     const r8_demo *d = r8_demo_get(R8_DEMO_TERRAIN);
-    terrain.mesh = d ? d->objects[0].mesh : 0;
+    /* the demo tables are R8_FLASH data (demo.h): read through R8_RDPTR */
+    const r8_demo_obj *o = d ? (const r8_demo_obj *)R8_RDPTR(&d->objects) : 0;
+    terrain.mesh = o ? (const r8_mesh *)R8_RDPTR(&o->mesh) : 0;
     r8_pose_identity(&terrain.pose);           /* the terrain at the origin */
     scene.objects = &terrain;
     scene.nobjects = 1;

@@ -4,6 +4,10 @@
  *   FLY_RAM      the arena: fly_ram() measured on this target (the build
  *                runs this file with FLY_SIZE_ONLY first, mk/examples.mk)
  *   FLY_KEYS     include fly_keys.h: a key script compiled in (below)
+ *   FLY_UART     with FLY_KEYS: the packets come over the UART instead
+ *                (plat_getc; emu/avrsim -i feeds them), one after each
+ *                frame, the firmware waiting for it (lockstep with the
+ *                host's script)
  *   FLY_SIZE_ONLY  print fly_ram() in decimal and stop
  * Library parts the flythrough never uses are left out at compile time
  * (the R8_NO_* switches, given by mk/examples.mk): render.c and scan.c
@@ -65,8 +69,16 @@ static int feed(void *ctx, r8_u16 frame)
         return 0;
     i = frame ? R8_RDU16(&fly_key_end[frame - 1]) : 0;
     end = R8_RDU16(&fly_key_end[frame]);
-    for (; i < end; i++)
+    for (; i < end; i++) {
+#ifdef FLY_UART
+        int c;
+        while ((c = plat_getc()) < 0)
+            ;                  /* the packet's next byte from the display */
+        fly_rx((r8_u8)c);
+#else
         fly_rx(R8_RDU8(&fly_key_bytes[i]));
+#endif
+    }
     return 0;
 }
 #endif

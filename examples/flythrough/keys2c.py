@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""keys2c.py KEYS [-o OUT] - compile a key script into a C header for a
-firmware with no receive path (examples/flythrough/fw_fly.c, FLY_KEYS).
+"""keys2c.py KEYS [-o OUT] [--bin PACKETS] - compile a key script into a C
+header for a firmware (examples/flythrough/fw_fly.c: FLY_KEYS, the packets
+compiled in; FLY_UART, their count and sizes), and the packets as bytes.
 
 KEYS is a key script as `rast8-emu --keys` reads it: one key mask per
 line (hex 0x.. or decimal, R8_KEY_* bits, docs/protocol.md 2.1), '#'
@@ -73,9 +74,15 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("keys")
     ap.add_argument("-o", "--out")
+    ap.add_argument("--bin", help="also write the packets, one after another, to this file "
+                    "(what a display sends: emu/avrsim -i feeds it to the UART)")
     a = ap.parse_args()
     try:
-        text = header(a.keys, parse(a.keys))
+        masks = parse(a.keys)
+        text = header(a.keys, masks)
+        if a.bin:
+            with open(a.bin, "wb") as f:
+                f.write(b"".join(input_packet(k) for k in masks))
     except (OSError, UnicodeDecodeError) as e:
         print("keys2c.py: %s" % e, file=sys.stderr)
         return 2

@@ -150,6 +150,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     r8_tx_sync(&tx);
     for (i = 0; !cfg->frames || i < cfg->frames; i++) {
         no = (r8_u16)(cfg->first_frame + i);
+        app_poll();                   /* the display's bytes since the last frame */
         plat_mark(PLAT_MARK_FRAME_BEGIN);
         r8_demo_pose(&run, no);            /* the spin: angle = start + turn * frame */
         r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
@@ -173,6 +174,13 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 void app_rx(r8_u8 c)
 {
     r8_tx_rx(&tx, c);
+}
+
+void app_poll(void)
+{
+    int c;
+    while ((c = plat_getc()) >= 0)
+        app_rx((r8_u8)c);
 }
 
 r8_u16 app_keys(void)

@@ -45,6 +45,11 @@ void plat_write(const r8_u8 *p, unsigned n)
     write(1, p, n);
 }
 
+int plat_getc(void)
+{
+    return -1;   /* sim65: no receive path */
+}
+
 void plat_mark(r8_u8 id)
 {
     (void)id;

@@ -13,7 +13,8 @@ build/x/T/fly/fly-F.* (examples/flythrough/fw_fly.c, the script compiled
 in and fed through fly_rx after each frame) runs in its simulator and
 its stream must equal the host's byte for byte.  A target the program
 does not fit is reported as skipped with the reason; the ATmega1284P
-must run.  Ends with "N passed, N failed".
+must run, and also with the keys over its UART (FLY_UART: the AVR
+port's plat_getc, fed by emu/avrsim -i).  Ends with "N passed, N failed".
 """
 import argparse
 import json
@@ -148,7 +149,8 @@ def main():
     a = ap.parse_args()
     os.chdir(ROOT)
     fw = {t: os.path.join("build", "x", t, "fly", "fly-%d.%s" % (a.frames, EXT[t])) for t in a.targets}
-    if identity.make(["build/emu/avrsim", "build/examples/flythrough"] + sorted(fw.values())):
+    extra = ["build/x/avr1284/fly/fly-uart-%d.elf" % a.frames] if "avr1284" in a.targets else []
+    if identity.make(["build/emu/avrsim", "build/examples/flythrough"] + sorted(fw.values()) + extra):
         print("fly_check: some builds failed (make output above)")
     masks = script(KEYS)
     # ---- the host build
@@ -222,6 +224,21 @@ def main():
             ran.add(t)
     if "avr1284" in a.targets:
         check("avr1284" in ran, "mandatory: the ATmega1284P runs the flythrough")
+        # the same keys over the AVR port's UART receiver (plat_getc), fed
+        # by the simulator as a display would send them
+        uart = os.path.join(ROOT, "build", "x", "avr1284", "fly", "fly-uart-%d.elf" % a.frames)
+        pk = os.path.join(ROOT, "build", "x", "fly", "fly_keys.bin")
+        if check(os.path.exists(uart) and os.path.exists(pk) and not identity.is_skip(uart),
+                 "avr1284 flythrough, keys over the UART: built"):
+            with tempfile.TemporaryDirectory() as td:
+                out = os.path.join(td, "o.bin")
+                r = subprocess.run([os.path.join(ROOT, "build", "emu", "avrsim"), "-q", "-i", pk,
+                                    "-o", out, "atmega1284p", uart], stderr=subprocess.PIPE, timeout=600)
+                data = open(out, "rb").read() if os.path.exists(out) else b""
+            check(r.returncode == 0 and data == ref,
+                  "avr1284 flythrough, keys over the UART (avrsim -i %s, %d bytes): %d bytes %s the host's"
+                  % (os.path.relpath(pk, ROOT), os.path.getsize(pk), len(data),
+                     "identical to" if data == ref else "DIFFER from"))
     print("%d targets skipped (reasons above)" % skipped)
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0
