@@ -12,10 +12,14 @@
  *   s0 = 16 y0 + 8 - ay = (8 - ay) & 15
  *   udx = dx, or ~dx = -dx - 1 when dx < 0 (T set)
  *   q, rd = udx / dy, udx % dy; when dx < 0: q = ~q, rd = dy - 1 - rd
- *   p = ((ax - 8) & 15) + s0 q, pl = p & 15
- *   val = floor((ax - 8) / 16) + floor(p / 16)
- *   u = dy pl + s0 rd + 16 dy - 1; while u >= 16 dy: u -= 16 dy, val++
- *   err = u >> 4
+ *   X = ax - 8 + s0 q (17 bits), pl = X & 15, val = floor(X / 16)
+ *     (the reference's p = ((ax - 8) & 15) + s0 q: p & 15 = pl and
+ *     floor((ax - 8) / 16) + floor(p / 16) = val)
+ *   v = dy pl + s0 rd (< 30 dy): the reference's loop on
+ *     u = v + 16 dy - 1 adds ceil(v / 16 dy) (0..2) to val and leaves
+ *     err = ((v + 16 dy - 1) mod 16 dy) >> 4: dy - 1 for v = 0; else,
+ *     w = v - 1 (< 32 dy): val + 1, and once more (w -= 16 dy) if
+ *     w >= 16 dy; err = w >> 4
  *
  * The division walks the quotient's bits from its top one, as the
  * reference's udivmod: the divisor doubles while it stays <= udx, then
@@ -28,8 +32,9 @@
  *
  * Registers (avr-gcc ABI): arguments it r25:r24, a r23:r22, b r21:r20;
  * returns r25:r24.  Z = it, r25:r24 = ay (y0 at the end), r23:r22 = ax,
- * r21:r20 = dy, r19:r18 = udx then rd, r27:r26 = q, r1:r0 = divisor
- * (then MUL products), r16 = s0 and r17 scratch (saved), T = dx < 0.
+ * r21:r20 = dy, r19:r18 = udx then rd (then 16 dy), r27:r26 = q (then
+ * v, w), r1:r0 = divisor (then MUL products), r16 = s0 and r17 scratch
+ * (then pl; both saved), T = dx < 0.
  * r1 is cleared before returning.
  *
  * r8_interp offsets (avr-gcc, no padding): val 0, q 2, err 4, r 6, den 8.
@@ -38,7 +43,7 @@
     .section .text.r8k_edge,"ax",@progbits
     .global r8k_edge
     .type   r8k_edge, @function
-wide:                       /* (before the entry: in branch range) */
+.Lwide:                       /* (before the entry: in branch range) */
     ldi   r24, 0x00         /* R8_EDGE_WIDE = -32768 */
     ldi   r25, 0x80
     ret
@@ -59,13 +64,13 @@ r8k_edge:
     ldi   r26, hi8(1424)    /* dy >= 1424: wide */
     cpi   r20, lo8(1424)
     cpc   r21, r26
-    brsh  wide
+    brsh  .Lwide
     mov   r26, r23          /* ax + 0x4000 negative: ax outside */
     subi  r26, 0xC0         /* [-16384, 16383], wide */
-    brmi  wide
+    brmi  .Lwide
     mov   r26, r19          /* the same for bx */
     subi  r26, 0xC0
-    brmi  wide
+    brmi  .Lwide
     sub   r18, r22          /* dx = bx - ax (no overflow) */
     sbc   r19, r23
     clt
@@ -83,7 +88,7 @@ r8k_edge:
     clr   r26               /* udx < dy: q = 0, rd = udx */
     clr   r27
     rjmp  6f
-wide2:                      /* after the division: r1, r16, r17 back */
+.Lwide2:                      /* after the division: r1, r16, r17 back */
     clr   r1
     pop   r17
     pop   r16
@@ -118,14 +123,14 @@ wide2:                      /* after the division: r1, r16, r17 back */
 55: com   r26
     com   r27
 6:  cpi   r27, 8            /* q >= 2048: wide */
-    brsh  wide2
+    brsh  .Lwide2
     brtc  7f
     com   r26               /* dx < 0: q = -q - 1 */
     com   r27
     cpi   r26, 0            /* q == -2048: wide */
     brne  .+4
     cpi   r27, 0xF8
-    breq  wide2
+    breq  .Lwide2
     com   r18               /* rd = dy - 1 - rd = dy + ~rd */
     com   r19
     add   r18, r20
@@ -137,7 +142,8 @@ wide2:                      /* after the division: r1, r16, r17 back */
     std   Z+8, r20
     std   Z+9, r21
 
-    /* p = ((ax - 8) & 15) + s0 q; val = floor((ax - 8) / 16) + floor(p / 16) */
+    /* X = ax - 8 + s0 q (17 bits: S is its sign); pl = X & 15 (that is
+     * p & 15), val = floor(X / 16) (the reference's two floors) */
     ldi   r16, 8            /* s0 = (8 - ay) & 15 */
     sub   r16, r24
     andi  r16, 15
@@ -147,34 +153,28 @@ wide2:                      /* after the division: r1, r16, r17 back */
     add   r1, r17
     subi  r22, 8            /* ax - 8 */
     sbci  r23, 0
-    mov   r17, r22
-    andi  r17, 15
-    add   r0, r17           /* p */
-    clr   r17
-    adc   r1, r17
-    movw  r26, r0
-    mov   r17, r26          /* pl */
-    andi  r17, 15
-    asr   r27               /* floor(p / 16) */
-    ror   r26
-    asr   r27
-    ror   r26
-    asr   r27
-    ror   r26
-    asr   r27
-    ror   r26
-    asr   r23               /* floor((ax - 8) / 16) */
+    add   r22, r0
+    adc   r23, r1
+    mov   r17, r22          /* (pl) */
+    brvc  22f
+    sec                     /* X beyond 16 bits: the first shift */
+    sbrc  r23, 7            /* brings in !N, the true sign */
+    clc
+    ror   r23
+    ror   r22
+    rjmp  21f
+22: asr   r23
+    ror   r22
+21: asr   r23
     ror   r22
     asr   r23
     ror   r22
     asr   r23
     ror   r22
-    asr   r23
-    ror   r22
-    add   r22, r26          /* val */
-    adc   r23, r27
+    andi  r17, 15           /* pl */
 
-    /* u = dy pl + s0 rd + 16 dy - 1 (< 46 dy < 2^16) */
+    /* v = dy pl + s0 rd (< 30 dy); val += ceil(v / (16 dy)) (0..2),
+     * err = ((v + 16 dy - 1) mod 16 dy) >> 4 */
     mul   r20, r17
     movw  r26, r0
     mul   r21, r17
@@ -184,6 +184,8 @@ wide2:                      /* after the division: r1, r16, r17 back */
     adc   r27, r1
     mul   r16, r19
     add   r27, r0
+    sbiw  r26, 1            /* w = v - 1 */
+    brcs  30f               /* v = 0: err = dy - 1 */
     movw  r18, r20          /* d16 = 16 dy */
     lsl   r18
     rol   r19
@@ -193,18 +195,16 @@ wide2:                      /* after the division: r1, r16, r17 back */
     rol   r19
     lsl   r18
     rol   r19
-    add   r26, r18
-    adc   r27, r19
-    sbiw  r26, 1
-8:  cp    r26, r18          /* at most twice */
-    cpc   r27, r19
-    brlo  9f
-    sub   r26, r18
-    sbc   r27, r19
     subi  r22, 0xFF         /* val++ */
     sbci  r23, 0xFF
-    rjmp  8b
-9:  lsr   r27               /* err = u >> 4 */
+    cp    r26, r18
+    cpc   r27, r19
+    brlo  31f
+    sub   r26, r18          /* w >= 16 dy: once more */
+    sbc   r27, r19
+    subi  r22, 0xFF
+    sbci  r23, 0xFF
+31: lsr   r27               /* err = w >> 4 */
     ror   r26
     lsr   r27
     ror   r26
@@ -212,14 +212,14 @@ wide2:                      /* after the division: r1, r16, r17 back */
     ror   r26
     lsr   r27
     ror   r26
-    st    Z, r22
+32: st    Z, r22
     std   Z+1, r23
     std   Z+4, r26
     std   Z+5, r27
 
     /* y0 = floor((ay + 7) / 16); 2048 when ay + 7 passes 32767 */
     adiw  r24, 7
-    brvs  10f
+    brvs  40f
     asr   r25
     ror   r24
     asr   r25
@@ -228,11 +228,15 @@ wide2:                      /* after the division: r1, r16, r17 back */
     ror   r24
     asr   r25
     ror   r24
-    rjmp  11f
-10: ldi   r24, 0
-    ldi   r25, 8
-11: clr   r1
+41: clr   r1
     pop   r17
     pop   r16
     ret
+
+30: movw  r26, r20          /* v = 0: u = 16 dy - 1 */
+    sbiw  r26, 1
+    rjmp  32b
+40: ldi   r24, 0x00         /* y0 = 2048 */
+    ldi   r25, 0x08
+    rjmp  41b
     .size r8k_edge, .-r8k_edge

@@ -20,16 +20,18 @@
  *
  * Step 4 as done here: P = v kk (signed 16 x 16), whole bytes off first
  * (floor(P / 2^(8 (k >> 3))), sign-filled), then a left shift by
- * L = 7 - (k & 7) (an overflow means |q| >= 2^22: out), so that
+ * L = 7 - (k & 7) (a sign change means |q| >= 2^23: out), so that
  * floor(P / 2^sh) is bytes 3..1 and the rounding bit (bit k of P) bit 7
- * of byte 0.  The reference also rejects floor(P / 2^k) outside
- * [-0x7FFE, 0x7FFD]; with lim < 0x3FFF that is implied by the q test
- * (and q itself overflowing 16 bits fails it too).
+ * of byte 0; q itself overflowing 16 bits fails the lim test.
  *
- * Only the usual case is done here: |x|, |y| <= 32767 and lim < 0x3FFF
- * (guard bits 11:10 not 01).  Otherwise (T set) the reciprocal is still
- * taken here, and r8_project_recip (C) does the rest: the same code the
- * reference runs (proj_wide).
+ * The reference runs proj_round when |x|, |y| <= 32767 and lim < 0x3FFF,
+ * proj_wide otherwise.  For coordinates of 16 bits both are step 4:
+ * proj_wide computes the same q and tests the same bounds; proj_round
+ * also rejects floor(P / 2^k) outside [-0x7FFE, 0x7FFD], which with
+ * lim < 0x3FFF only a q outside [-lim, lim] has.  (A negative lim, a
+ * guard below 0, rejects every q either way.)  So this file does every
+ * input whose x and y fit 16 bits; for the others (T set) it still takes
+ * the reciprocal, and r8_project_recip (C: proj_wide) does the rest.
  *
  * Registers (avr-gcc ABI): arguments p r25:r24, c r23:r22, out r21:r20,
  * m r19:r18, e r17:r16; returns r25:r24.  Y = p; r15:r14 = c (for the
@@ -43,21 +45,18 @@
  * guard 10, fn 12, fsh 14}; r8_vec3l {x 0, y 4, z 8}.
  */
 
-/* v (lo, hi; bytes 2, 3 in r0, r1) in [-32767, 32767], else to fail */
-.macro FIT16 lo, hi, fail
+/* v (byte 1 hi, bytes 2, 3 in r0, r1) fits 16 bits, else to fail */
+.macro FIT16 hi, fail
     cp    r0, r1            /* bytes 2, 3 equal ... */
     brne  \fail
     sbrc  \hi, 7            /* ... and the sign of byte 1 */
     com   r0
     tst   r0
     brne  \fail
-    sbiw  \lo, 1            /* not -32768 */
-    brvs  \fail
-    adiw  \lo, 1
 .endm
 
 /* q (r24:r23) of the coordinate in r19:r18: kk r17:r16, k r27, L r26,
- * lim r31:r30, zero r15; to reject when out of range */
+ * lim r31:r30, zero r15; to .Lreject when out of range */
 .macro COORD
     mul   r18, r16          /* P = v kk: al kl (u x u), at byte 0 */
     movw  r22, r0
@@ -94,23 +93,23 @@
     rol   r23
     rol   r24
     rol   r25
-    brvs  reject
+    brvs  .Lreject
     dec   r0
     brne  3b
 4:  mov   r0, r24           /* floor(P / 2^sh) = r25:r24:r23 in 16 bits? */
     lsl   r0
     sbc   r0, r0
     cp    r25, r0
-    brne  reject
+    brne  .Lreject
     lsl   r22               /* q = that + bit sh - 1 of P */
     adc   r23, r15
     adc   r24, r15
     cp    r30, r23          /* q > lim */
     cpc   r31, r24
-    brlt  reject
+    brlt  .Lreject
     add   r23, r30          /* q + lim < 0 (S: the true sign) */
     adc   r24, r31
-    brlt  reject
+    brlt  .Lreject
     sub   r23, r30
     sbc   r24, r31
 .endm
@@ -131,22 +130,19 @@ r8k_project:
     movw  r28, r24          /* Y = p */
     movw  r30, r22          /* Z = c */
 
-    /* the usual case?  T clear: |x|, |y| <= 32767 and lim < 0x3FFF */
+    /* T clear when x and y fit 16 bits */
     clt
     ldd   r24, Z+0          /* x */
     ldd   r25, Z+1
     ldd   r0, Z+2
     ldd   r1, Z+3
-    FIT16 r24, r25, 1f
+    FIT16 r25, 1f
     ldd   r26, Z+4          /* y */
     ldd   r27, Z+5
     ldd   r0, Z+6
     ldd   r1, Z+7
-    FIT16 r26, r27, 1f
-    ldd   r0, Y+11          /* guard bits 11:10 = 01: lim >= 0x3FFF */
-    sbrc  r0, 3
+    FIT16 r27, 1f
     rjmp  2f
-    sbrc  r0, 2
 1:  set
 2:  movw  r12, r26          /* y */
 
@@ -157,14 +153,14 @@ r8k_project:
     ldd   r1, Z+11
     clr   r26
     tst   r1
-    brmi  zone              /* z < 0: as 1 */
+    brmi  .Lzone              /* z < 0: as 1 */
     mov   r27, r0
     or    r27, r1
-    brne  zbig
+    brne  .Lzbig
     tst   r23
     brne  3f
     tst   r22
-    breq  zone              /* z = 0: as 1 */
+    breq  .Lzone              /* z = 0: as 1 */
     mov   r23, r22          /* a byte at once */
     clr   r22
     ldi   r26, 8
@@ -179,18 +175,18 @@ r8k_project:
     andi  r22, 0xF0
     subi  r26, -4
 4:  tst   r23
-    brmi  norm
+    brmi  .Lnorm
 5:  inc   r26               /* then bit by bit */
     lsl   r22
     rol   r23
     brpl  5b
-    rjmp  norm
-zone:
+    rjmp  .Lnorm
+.Lzone:
     ldi   r22, 0x00         /* zn = 2^15, s = 15 */
     ldi   r23, 0x80
     ldi   r26, 15
-    rjmp  norm
-zbig:                       /* z >= 2^16: right shifts, s < 0 */
+    rjmp  .Lnorm
+.Lzbig:                       /* z >= 2^16: right shifts, s < 0 */
     tst   r1
     breq  6f
     mov   r22, r23
@@ -204,13 +200,13 @@ zbig:                       /* z >= 2^16: right shifts, s < 0 */
     tst   r0
     brne  6b
 
-norm:                       /* m from the table, *e = s, *m = m */
+.Lnorm:                       /* m from the table, *e = s, *m = m */
     movw  r30, r16
     st    Z, r26
     mov   r27, r23          /* Z = rec_tab + 2 ((zn >> 8) & 0x7F) */
     lsl   r27
-    ldi   r30, lo8(rec_tab)
-    ldi   r31, hi8(rec_tab)
+    ldi   r30, lo8(r8k_rec_tab)
+    ldi   r31, hi8(r8k_rec_tab)
     add   r30, r27
     brcc  .+2
     inc   r31
@@ -238,7 +234,7 @@ norm:                       /* m from the table, *e = s, *m = m */
     st    Z, r16
     std   Z+1, r17
     brtc  7f
-    rjmp  wide
+    rjmp  .Lwide
 
     /* kk (r17:r16), k = sh - 1 (r27), L (r26), lim (r31:r30) */
 7:  clr   r15
@@ -271,7 +267,7 @@ norm:                       /* m from the table, *e = s, *m = m */
     brcs  10f               /* sh > 255 */
     subi  r27, 1
     brcc  11f
-    rjmp  shzero            /* sh = 0 */
+    rjmp  .Lshzero            /* sh = 0 */
 11: cpi   r27, 31
     brlo  12f
 10: ldi   r27, 30           /* sh > 31: 31 */
@@ -296,9 +292,9 @@ norm:                       /* m from the table, *e = s, *m = m */
     mov   r12, r23
     mov   r13, r24
     rjmp  20f
-reject:
+.Lreject:
     ldi   r24, 1
-    rjmp  ret01
+    rjmp  .Lret01
 20: COORD
     ldd   r0, Y+0           /* out = cx + qx, cy + qy */
     ldd   r1, Y+1
@@ -314,9 +310,9 @@ reject:
     std   Z+2, r23
     std   Z+3, r24
     ldi   r24, 0
-ret01:
+.Lret01:
     ldi   r25, 0
-retp:
+.Lretp:
     clr   r1
     pop   r29
     pop   r28
@@ -328,12 +324,12 @@ retp:
     pop   r12
     ret
 
-shzero:                     /* sh <= 0: only x = y = 0 projects */
+.Lshzero:                     /* sh <= 0: only x = y = 0 projects */
     or    r24, r25
     or    r24, r12
     or    r24, r13
     breq  13f
-    rjmp  reject
+    rjmp  .Lreject
 13: ldd   r12, Y+0
     ldd   r13, Y+1
     ldd   r22, Y+2
@@ -344,9 +340,9 @@ shzero:                     /* sh <= 0: only x = y = 0 projects */
     std   Z+2, r22
     std   Z+3, r23
     ldi   r24, 0
-    rjmp  ret01
+    rjmp  .Lret01
 
-wide:                       /* r8_project_recip(p, c, m, e, out, out + 1) */
+.Lwide:                       /* r8_project_recip(p, c, m, e, out, out + 1) */
     movw  r30, r20
     movw  r20, r16          /* m */
     mov   r18, r26          /* e */
@@ -357,14 +353,14 @@ wide:                       /* r8_project_recip(p, c, m, e, out, out + 1) */
     movw  r14, r30          /* sy */
     clr   r1
     call  r8_project_recip
-    rjmp  retp
+    rjmp  .Lretp
     .size r8k_project, .-r8k_project
 
 /* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16
  * bits): the table of src/proj.c */
     .section .progmem.data.r8k_rec_tab,"a",@progbits
-    .type   rec_tab, @object
-rec_tab:
+    .type   r8k_rec_tab, @object
+r8k_rec_tab:
     .word 65535, 65028, 64528, 64035, 63550, 63072, 62602, 62138, 61681, 61231
     .word 60787, 60350, 59919, 59494, 59075, 58662, 58254, 57852, 57456, 57065
     .word 56680, 56299, 55924, 55554, 55188, 54828, 54471, 54120, 53773, 53431
@@ -378,4 +374,4 @@ rec_tab:
     .word 36792, 36631, 36472, 36314, 36158, 36003, 35849, 35696, 35545, 35395
     .word 35246, 35099, 34953, 34808, 34664, 34521, 34380, 34239, 34100, 33962
     .word 33825, 33689, 33554, 33421, 33288, 33157, 33026, 32897, 32768
-    .size rec_tab, .-rec_tab
+    .size r8k_rec_tab, .-r8k_rec_tab

@@ -367,13 +367,24 @@ static void rnd_edge(r8_s16 *a, r8_s16 *b)
         dx = 0;
     } else if (c < 8) {
         dx = rnds(-40, 40) + (r8_s32)rnds(-3, 3) * dy;
-    } else if (c < 11) {
+    } else if (c < 10) {
         /* |q| near 2048: short rows, x near the middle */
         dy = 1 + rndn(7);
         ax = rnds(-1500, 1500);
         dx = 2048L * dy + rnds((r8_s16)(-dy - 2), (r8_s16)(dy + 2));
         if (rndn(2))
             dx = -dx;
+    } else if (c < 11) {
+        /* ax - 8 + s0 q beyond 16 bits: s0 >= 12, q near +-2048, ax far
+         * out on the same side */
+        ay = (ay & ~15L) + 9 + rndn(4);
+        dy = 1;
+        ax = 9400 + rndn(4600);
+        dx = 1950 + rndn(98);
+        if (rndn(2)) {
+            ax = -ax;
+            dx = -dx;
+        }
     } else if (c < 15) {
         dx = rnds(-16000, 16000);
     } else {
@@ -390,12 +401,12 @@ static void rnd_edge(r8_s16 *a, r8_s16 *b)
 static void test_edge_random(void)
 {
     unsigned long i, n_wide = 0, n_wdy = 0, n_wx = 0, n_wq = 0, n_neg = 0, n_dx0 = 0,
-        n_dy1 = 0, n_steep = 0, n_xlim = 0, n_ytop = 0, n_q0 = 0, n_long = 0;
+        n_dy1 = 0, n_steep = 0, n_xlim = 0, n_ytop = 0, n_q0 = 0, n_long = 0, n_x17 = 0;
     for (i = 0; i < EDGE_CASES; i++) {
         static r8_s16 a[2], b[2];
         r8_interp ia, ir;
         r8_s16 ya, yr;
-        r8_s32 dx;
+        r8_s32 dx, x17;
         rnd_edge(a, b);
         if (a[1] >= b[1]) {
             b[1] = (r8_s16)(a[1] + 1);     /* a[1] = 32767 cannot be an edge top */
@@ -446,6 +457,8 @@ static void test_edge_random(void)
         n_xlim += a[0] < -16380 || a[0] > 16379 || b[0] < -16380 || b[0] > 16379;
         n_ytop += a[1] > 32760;
         n_long += ir.den >= 1000;
+        x17 = a[0] - 8 + (r8_s32)((8 - a[1]) & 15) * ir.q;
+        n_x17 += x17 < -32768L || x17 > 32767L;
     }
     unity_print("r8k_edge: ");
     unity_print_long((long)i);
@@ -461,6 +474,7 @@ static void test_edge_random(void)
     print_count("x within 4 of +-16384:", n_xlim);
     print_count("a[1] > 32760 (y0 = 2048):", n_ytop);
     print_count("dy >= 1000:", n_long);
+    print_count("ax - 8 + s0 q beyond 16 bits:", n_x17);
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wdy);
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wx);
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wq);
@@ -472,6 +486,7 @@ static void test_edge_random(void)
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_xlim);
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_ytop);
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_long);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_x17);
     TEST_ASSERT_LESS_THAN(EDGE_CASES / 2, n_wide);
 }
 
@@ -520,7 +535,7 @@ static r8_s32 rnd_z(void)
 static void test_project_random(void)
 {
     unsigned long i, n_ok = 0, n_out = 0, n_wide = 0, n_shz = 0, n_shz0 = 0, n_sh31 = 0,
-        n_zbig = 0, n_zle0 = 0, n_lim = 0, n_xbig = 0;
+        n_zbig = 0, n_zle0 = 0, n_lim = 0, n_x32 = 0, n_m32768 = 0, n_limhi = 0, n_limneg = 0;
     static r8_proj p;
     for (i = 0; i < PROJ_CASES; i++) {
         static r8_vec3l c, c0;
@@ -528,7 +543,7 @@ static void test_project_random(void)
         r8_s16 oa[3], or_[3], focal;
         r8_u16 ma, mr;
         r8_s8 ea, er;
-        int ra, rr, sh;
+        int ra, rr, sh, big;
         r8_s16 lim;
         unsigned k = rndn(16);
         if (k < 4)
@@ -602,6 +617,7 @@ static void test_project_random(void)
         sh = 31 + p.fsh - er;
         sh -= (r8_u16)(((r8_u32)mr * (r8_u16)p.fn) >> 16) >= 0x4000u ? 16 : 15;
         lim = (r8_s16)(p.guard * 16);
+        big = c.x < -32767L || c.x > 32767L || c.y < -32767L || c.y > 32767L;
         n_ok += rr == 0;
         n_out += rr != 0;
         n_zbig += c.z >= 0x10000L;
@@ -612,11 +628,16 @@ static void test_project_random(void)
             continue;
         }
         n_sh31 += sh > 31;
-        if (c.x < -32767L || c.x > 32767L || c.y < -32767L || c.y > 32767L || lim >= 0x3FFF) {
+        if (big || lim >= 0x3FFF) {
+            /* the reference's proj_wide: the kernel's own code when x and
+             * y fit 16 bits, else r8_project_recip */
             n_wide++;
-            n_xbig += c.x < -32767L || c.x > 32767L || c.y < -32767L || c.y > 32767L;
+            n_x32 += c.x < -32768L || c.x > 32767L || c.y < -32768L || c.y > 32767L;
+            n_m32768 += c.x == -32768L || c.y == -32768L;
+            n_limhi += !big && lim >= 0x3FFF;
         } else {
             n_lim += lim > 16300;
+            n_limneg += lim < 0;
         }
     }
     unity_print("r8k_project: ");
@@ -629,9 +650,12 @@ static void test_project_random(void)
     print_count("sh <= 0:", n_shz);
     print_count("sh <= 0, on the axis (0):", n_shz0);
     print_count("sh > 31:", n_sh31);
-    print_count("lim >= 0x3FFF or |x|, |y| > 32767 (C):", n_wide);
-    print_count("of which |x| or |y| > 32767:", n_xbig);
-    print_count("lim in 16301..16382:", n_lim);
+    print_count("reference's proj_wide (lim >= 0x3FFF or |x|, |y| > 32767):", n_wide);
+    print_count("  x or y beyond 16 bits (kernel's C call):", n_x32);
+    print_count("  x or y = -32768:", n_m32768);
+    print_count("  x, y in 16 bits, lim >= 0x3FFF:", n_limhi);
+    print_count("proj_round, lim in 16301..16382:", n_lim);
+    print_count("proj_round, lim < 0:", n_limneg);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_ok);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_out);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_zbig);
@@ -639,9 +663,11 @@ static void test_project_random(void)
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 500, n_shz);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 2000, n_shz0);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 100, n_sh31);
-    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_wide);
-    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_xbig);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_x32);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 500, n_m32768);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 50, n_limhi);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_lim);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_limneg);
 }
 
 int main(void)
