@@ -8,15 +8,18 @@
  *
  * 1. The reciprocal: z normalised to zn in [2^15, 2^16) by a shift s
  *    (z <= 0 taken as 1; z >= 2^16 shifted right, s < 0, truncating),
- *    then m = t0 - ((t0 - t1) ((zn & 0xFF) >> 1) + 64) >> 7 with t0, t1
+ *    then m = t0 - (((t0 - t1) ((zn & 0xFF) >> 1) + 64) >> 7) with t0, t1
  *    = rec_tab[i], rec_tab[i + 1], i = (zn >> 8) & 0x7F (this file's copy
  *    of the table in proj.c, which is static there).  *m = m, *e = s.
  * 2. kk, sh: k = m fn (32 bits); kk = k >> 16, sh = 15 + fsh - e when
  *    k >= 2^30, else kk = k >> 15, sh = 16 + fsh - e; sh > 31 is 31.
+ *    kk is a signed 16-bit factor (in [2^14, 2^15) for an r8_proj from
+ *    r8_proj_init; any fn and fsh give the reference's result too).
  * 3. sh <= 0: only x = y = 0 projects (to cx, cy).
  * 4. Per coordinate v (x, then y): q = floor((v kk + 2^(sh-1)) / 2^sh)
  *    (proj_round's round(p 2^-(k+1)), k = sh - 1), out of range (1) when
- *    q > lim or q < -lim, lim = 16 guard; out = cx + qx, cy + qy.
+ *    q > lim or q < -lim, lim = 16 guard (16 bits: guard within
+ *    +-2047, as the C needs); out = cx + qx, cy + qy.
  *
  * Step 4 as done here: P = v kk (signed 16 x 16), whole bytes off first
  * (floor(P / 2^(8 (k >> 3))), sign-filled), then a left shift by

@@ -535,7 +535,8 @@ static r8_s32 rnd_z(void)
 static void test_project_random(void)
 {
     unsigned long i, n_ok = 0, n_out = 0, n_wide = 0, n_shz = 0, n_shz0 = 0, n_sh31 = 0,
-        n_zbig = 0, n_zle0 = 0, n_lim = 0, n_x32 = 0, n_m32768 = 0, n_limhi = 0, n_limneg = 0;
+        n_zbig = 0, n_zle0 = 0, n_lim = 0, n_x32 = 0, n_m32768 = 0, n_limhi = 0, n_limneg = 0,
+        n_anyfn = 0;
     static r8_proj p;
     for (i = 0; i < PROJ_CASES; i++) {
         static r8_vec3l c, c0;
@@ -571,6 +572,12 @@ static void test_project_random(void)
         if (rndn(8) == 0) {
             p.cx = (r8_s16)rnd();
             p.cy = (r8_s16)rnd();
+        }
+        if (rndn(16) == 0) {
+            /* not from r8_proj_init: any fn (kk of either sign), fsh */
+            p.fn = (r8_s16)rnd();
+            p.fsh = (r8_u8)rnd();
+            n_anyfn++;
         }
         c.z = rnd_z();
         if (rndn(16) == 0) {
@@ -656,6 +663,7 @@ static void test_project_random(void)
     print_count("  x, y in 16 bits, lim >= 0x3FFF:", n_limhi);
     print_count("proj_round, lim in 16301..16382:", n_lim);
     print_count("proj_round, lim < 0:", n_limneg);
+    print_count("random fn, fsh:", n_anyfn);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_ok);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_out);
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_zbig);
