@@ -32,9 +32,9 @@
  *
  * Registers (avr-gcc ABI): arguments it r25:r24, a r23:r22, b r21:r20;
  * returns r25:r24.  Z = it, r25:r24 = ay (y0 at the end), r23:r22 = ax,
- * r21:r20 = dy, r19:r18 = udx then rd (then 16 dy), r27:r26 = q (then
- * v, w), r1:r0 = divisor (then MUL products), r16 = s0 and r17 scratch
- * (then pl; both saved), T = dx < 0.
+ * r21:r20 = dy, r19:r18 = udx then rd, then s0 and pl, then 16 dy (rd is
+ * read back from it->r), r27:r26 = q, then v and w, r1:r0 = divisor,
+ * then MUL products; T = dx < 0.
  * r1 is cleared before returning.
  *
  * r8_interp offsets (avr-gcc, no padding): val 0, q 2, err 4, r 6, den 8.
@@ -78,9 +78,7 @@ r8k_edge:
     set                     /* dx < 0: udx = ~dx */
     com   r18
     com   r19
-1:  push  r16
-    push  r17
-
+1:
     /* q, rd = udx / dy, udx % dy */
     cp    r18, r20
     cpc   r19, r21
@@ -88,10 +86,8 @@ r8k_edge:
     clr   r26               /* udx < dy: q = 0, rd = udx */
     clr   r27
     rjmp  6f
-.Lwide2:                      /* after the division: r1, r16, r17 back */
+.Lwide2:                      /* after the division: r1 back to 0 */
     clr   r1
-    pop   r17
-    pop   r16
     ldi   r24, 0x00
     ldi   r25, 0x80
     ret
@@ -144,18 +140,18 @@ r8k_edge:
 
     /* X = ax - 8 + s0 q (17 bits: S is its sign); pl = X & 15 (that is
      * p & 15), val = floor(X / 16) (the reference's two floors) */
-    ldi   r16, 8            /* s0 = (8 - ay) & 15 */
-    sub   r16, r24
-    andi  r16, 15
-    mul   r16, r27          /* s0 q, modulo 2^16 */
-    mov   r17, r0
-    mul   r16, r26
-    add   r1, r17
+    ldi   r18, 8            /* s0 = (8 - ay) & 15 (rd: in it->r) */
+    sub   r18, r24
+    andi  r18, 15
+    mul   r18, r27          /* s0 q, modulo 2^16 */
+    mov   r27, r0
+    mul   r18, r26
+    add   r1, r27
     subi  r22, 8            /* ax - 8 */
     sbci  r23, 0
     add   r22, r0
     adc   r23, r1
-    mov   r17, r22          /* (pl) */
+    mov   r19, r22          /* (pl) */
     brvc  22f
     sec                     /* X beyond 16 bits: the first shift */
     sbrc  r23, 7            /* brings in !N, the true sign */
@@ -171,18 +167,21 @@ r8k_edge:
     ror   r22
     asr   r23
     ror   r22
-    andi  r17, 15           /* pl */
+    andi  r19, 15           /* pl */
 
     /* v = dy pl + s0 rd (< 30 dy); val += ceil(v / (16 dy)) (0..2),
      * err = ((v + 16 dy - 1) mod 16 dy) >> 4 */
-    mul   r20, r17
-    movw  r26, r0
-    mul   r21, r17
-    add   r27, r0
-    mul   r16, r18
+    ldd   r26, Z+6          /* rd */
+    ldd   r27, Z+7
+    mul   r18, r27
+    mov   r27, r0
+    mul   r18, r26
+    add   r1, r27
+    movw  r26, r0           /* s0 rd */
+    mul   r20, r19
     add   r26, r0
     adc   r27, r1
-    mul   r16, r19
+    mul   r21, r19
     add   r27, r0
     sbiw  r26, 1            /* w = v - 1 */
     brcs  30f               /* v = 0: err = dy - 1 */
@@ -229,8 +228,6 @@ r8k_edge:
     asr   r25
     ror   r24
 41: clr   r1
-    pop   r17
-    pop   r16
     ret
 
 30: movw  r26, r20          /* v = 0: u = 16 dy - 1 */
