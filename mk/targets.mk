@@ -19,14 +19,16 @@
 # becomes a one-line "SKIP: reason" file, which the runners report.
 # Every firmware links build/x/scenes/scene_S.c (ports/scene_strip.py): the
 # scene table with only its own scene's meshes.
-# AVR assembly kernels (include/r8kern.h): ports/avr/trap.S and xform.S go
-# into both AVR archives, whose library objects are compiled with
-# -DR8_ASM_TRAP -DR8_ASM_XFORM (src/kern.c then leaves its C references
-# out); the host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the
-# AVR libraries without them (AVR_ASM=trap or AVR_ASM=xform: that one
-# only), for before/after figures; as an environment variable it also
-# reaches make bench (`AVR_ASM=0 make bench`).  build/x/avr-kernels.txt
-# records the choice, so changing it rebuilds the AVR libraries.
+# AVR assembly kernels (include/r8kern.h): ports/avr/trap.S, xform.S,
+# edge.S and project.S go into both AVR archives, whose library objects
+# are compiled with -DR8_ASM_TRAP -DR8_ASM_XFORM -DR8_ASM_EDGE
+# -DR8_ASM_PROJECT (src/kern.c then leaves its C references out); the
+# host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
+# libraries without them; AVR_ASM="trap edge" (any of trap xform edge
+# project) with those only, for before/after figures; as an environment
+# variable it also reaches make bench (`AVR_ASM=0 make bench`).
+# build/x/avr-kernels.txt records the choice, so changing it rebuilds
+# the AVR libraries.
 # Test: tests/targets/test_avr_kern.c (each kernel against its reference
 # on random inputs, in libsimavr), step xkern-avr1284.
 
@@ -48,7 +50,7 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
 # The wire encoder's AVR kernels (ports/avr/wire_avr.S; C89 references
 # chosen by R8_ASM_WIRE, see src/r8crc.h) are always in the AVR libraries;
-# the renderer's (trap.S, xform.S) as AVR_ASM chooses (below).
+# the renderer's (trap.S, xform.S, edge.S, project.S) as AVR_ASM chooses.
 AVR_WIRE_S := ports/avr/wire_avr.S
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
@@ -56,8 +58,10 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(IN
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),trap xform,$(filter trap xform,$(AVR_ASM)))
-AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM)
+AVR_KALL   := trap xform edge project
+AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
+AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
+              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p
@@ -221,7 +225,7 @@ $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 # the AVR kernels against their references (src/kern.c, compiled into the
 # test under other names, without R8_ASM_*), whatever AVR_ASM says
 XKERN := $(XB)/avr1284/tests/avr_kern.elf
-XKERN_OBJS := $(XB)/avr1284/obj/trap.o $(XB)/avr1284/obj/xform.o $(XB)/avr1284/obj/unity_target.o
+XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/unity_target.o
 $(XKERN): tests/targets/test_avr_kern.c src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
