@@ -41,7 +41,7 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 AVR_ASM    := $(wildcard ports/avr/*.S)
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 MCU_avr328  := atmega328p
@@ -67,6 +67,11 @@ PLAT_z80     := plat_z80
 $(AVRSIM): emu/avrsim.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
+
+# the 6502 profiler: sim65's CPU and paravirtual I/O, cycles per function
+$(BUILD)/emu/prof65: emu/prof65.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra -std=gnu99 -o $@ $<
 
 $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
@@ -191,7 +196,7 @@ XT_6502    := $(XT_NAMES:%=$(XB)/6502/tests/%.prg)
 XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
 XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
-.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
+.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80 xprof-6502
 xtargets: $(XREADY) $(XT_avr1284) $(XT_6502) $(XT_z80)
 
 # Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
@@ -203,6 +208,10 @@ xtest-z80:
 	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
 XTEST_TIMEOUT ?= 300
 
+# emu/prof65 against sim65: same cycles, exit code and stream.
+xprof-6502:
+	@bash scripts/run-step.sh xprof-6502 $(PY) tests/targets/prof65_check.py
+
 # Bit identity: every scene x method that fits, per target, vs the host.
 xident-%:
 	@bash scripts/run-step.sh xident-$* $(PY) tests/targets/identity.py $*
@@ -210,7 +219,7 @@ xident-%:
 fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
-TEST_STEPS += xtest-avr xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80
+TEST_STEPS += xtest-avr xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
 
 # ---- benchmark
 bench: $(SETUP)
