@@ -119,6 +119,8 @@ static void add_sym(unsigned addr, const char *name)
         return; /* zero page, hardware stack */
     if (name[0] == 'L' && strlen(name) == 5 && strspn(name + 1, "0123456789ABCDEF") == 4)
         return; /* cc65's local labels (L0012) inside a function */
+    if (name[0] == '@')
+        return; /* ca65's cheap local labels */
     if (nsyms == cap) {
         cap = cap ? 2 * cap : 1024;
         syms = realloc(syms, (size_t)cap * sizeof *syms);
@@ -249,6 +251,7 @@ typedef struct {
 static frame stk[4096];
 static int depth;
 static u64 pcyc; /* profiled cycles so far */
+static int profiling; /* inside a profiled frame */
 
 static void call_push(unsigned target)
 {
@@ -266,7 +269,7 @@ static void call_push(unsigned target)
         f->cown = depth ? stk[depth - 1].cown : fn;
     if (fn >= 0) {
         syms[fn].active++;
-        if (syms[fn].addr == target)
+        if (syms[fn].addr == target && profiling)
             syms[fn].calls++;
     }
     depth++;
@@ -831,6 +834,7 @@ int main(int argc, char **argv)
         int c;
         if (PC == mark_addr)
             mark(A);
+        profiling = in_frame && frame_no >= prof_from;
         if (covered) {
             static const unsigned char len[] = {1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 2, 2, 2};
             unsigned k;
@@ -846,7 +850,7 @@ int main(int argc, char **argv)
         if (exited >= 0)
             break; /* sim65 exits inside the JSR/JMP: its cycles are not counted */
         cyc += (u64)c;
-        if (in_frame && frame_no >= prof_from) {
+        if (profiling) {
             pcyc += (u64)c;
             if (owner) {
                 int s = owner[pc0];

@@ -41,7 +41,12 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 AVR_ASM    := $(wildcard ports/avr/*.S)
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(INC) $(XINC)
+# 6502 assembly kernels (ports/6502/*.s, ca65): each R8_ASM_* names one
+# that replaces its C89 reference (tests/c/test_mul.c, test_kern.c,
+# test_wirek.c compare them in sim65).
+C65_ASM    := $(wildcard ports/6502/*.s)
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 MCU_avr328  := atmega328p
@@ -127,7 +132,10 @@ $(XB)/6502/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
 	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
-$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
+$(XB)/6502/obj/%.o: ports/6502/%.s
+	@mkdir -p $(dir $@)
+	ca65 -g -t sim6502 -o $@ $<
+$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o) $(C65_ASM:ports/6502/%.s=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
 $(XB)/z80/obj/%.rel: src/%.c $(XHDRS)

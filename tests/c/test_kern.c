@@ -1,0 +1,128 @@
+/* test_kern.c - the kernels of r8kern.h: the library's (a port's
+ * assembly where it defines R8_ASM_TRAP / R8_ASM_XFORM / R8_ASM_PROJECT,
+ * ports/6502/ assembly) against the C89 references of src/kern.c, compiled in
+ * here under other names, on random inputs; both against a plain model
+ * of each contract too (so the test means something where the two are
+ * the same C). */
+#include "unity.h"
+#include "r8kern.h"
+#include "r8fb.h"
+
+/* src/kern.c's C versions as ref_*, whatever this build links */
+#undef R8_ASM_TRAP
+#undef R8_ASM_XFORM
+#undef R8_ASM_PROJECT
+#define r8k_trap ref_trap
+#define r8k_xform ref_xform
+#define r8k_project ref_project
+#include "../../src/kern.c"
+#undef r8k_trap
+#undef r8k_xform
+#undef r8k_project
+void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
+void ref_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
+int ref_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static r8_u32 seed = 777;
+static r8_u16 rnd16(void)
+{
+    seed = seed * 1103515245ul + 12345ul;
+    return (r8_u16)((seed >> 8) & 0xFFFFu);
+}
+static r8_u16 rndn(r8_u16 n) /* 0 .. n-1 */
+{
+    return (r8_u16)(rnd16() % n);
+}
+
+/* ---- r8k_trap */
+#define MAXW 300
+#define PAGES 3
+static r8_u8 buf_a[MAXW * PAGES + 8], buf_b[MAXW * PAGES + 8], buf_m[MAXW * PAGES + 8];
+
+static void rnd_interp(r8_interp *it, r8_s16 w)
+{
+    it->val = (r8_s16)((r8_s16)rndn((r8_u16)(w + 80)) - 40);
+    it->q = (r8_s16)((r8_s16)rndn(9) - 4);
+    if (!rndn(8))
+        it->q = (r8_s16)((r8_s16)rndn(200) - 100);
+    it->den = (r8_u16)(1u + rndn(rndn(2) ? 30000u : 50u));
+    it->err = rndn(it->den);
+    it->r = rndn(it->den);
+}
+
+/* the contract, pixel by pixel */
+static void model_trap(r8_u8 *buf, r8_s16 w, r8_u8 by, const r8_u8 *pat, r8_u8 k,
+                       r8_interp *l, r8_interp *r, r8_u16 rows)
+{
+    r8_s16 x;
+    while (rows--) {
+        r8_u8 m = (r8_u8)(1u << (by & 7));
+        r8_u8 *page = buf + (unsigned)(by >> 3) * (unsigned)w;
+        for (x = l->val < 0 ? 0 : l->val; x < r->val && x < w; x++) {
+            if ((pat[k] >> (3 - (x & 3))) & 1)
+                page[x] = (r8_u8)(page[x] | m);
+            else
+                page[x] = (r8_u8)(page[x] & ~m);
+        }
+        R8_INTERP_STEP(l);
+        R8_INTERP_STEP(r);
+        k = (r8_u8)((k + 1) & 3);
+        by++;
+    }
+}
+
+static void test_trap(void)
+{
+    unsigned i, j, rows;
+    for (i = 0; i < 400; i++) {
+        r8_trapfill ta, tb;
+        r8_interp la, ra, lb, rb, lm, rm;
+        r8_s16 w = (r8_s16)(1 + rndn(i & 7 ? 140 : MAXW));
+        r8_u8 by = (r8_u8)rndn(8), k = (r8_u8)rndn(4);
+        for (j = 0; j < sizeof buf_a; j++)
+            buf_a[j] = buf_b[j] = buf_m[j] = (r8_u8)rnd16();
+        rnd_interp(&la, w);
+        rnd_interp(&ra, w);
+        if (rndn(2))
+            ra.val = (r8_s16)(la.val + (r8_s16)rndn(60));
+        lb = la;
+        lm = la;
+        rb = ra;
+        rm = ra;
+        ta.page = buf_a + 4;
+        ta.m = (r8_u8)(1u << by);
+        ta.k = k;
+        for (j = 0; j < 4; j++)
+            ta.pat[j] = (r8_u8)(rndn(3) ? rnd16() : (rndn(2) ? 0xFF : 0x00));
+        ta.w = w;
+        tb = ta;
+        tb.page = buf_b + 4;
+        rows = 1u + rndn((r8_u16)(8 * PAGES - by - 1)); /* stays in the buffer */
+        ref_trap(&ta, &la, &ra, (r8_u16)rows);
+        r8k_trap(&tb, &lb, &rb, (r8_u16)rows);
+        model_trap(buf_m + 4, w, by, ta.pat, k, &lm, &rm, (r8_u16)rows);
+        TEST_ASSERT_EQUAL_MEMORY(buf_a, buf_b, sizeof buf_a);
+        TEST_ASSERT_EQUAL_MEMORY(buf_m, buf_b, sizeof buf_a);
+        TEST_ASSERT_TRUE(tb.page == buf_b + (ta.page - buf_a));
+        TEST_ASSERT_EQUAL_HEX8(ta.m, tb.m);
+        TEST_ASSERT_EQUAL_UINT(ta.k, tb.k);
+        TEST_ASSERT_EQUAL_INT(la.val, lb.val);
+        TEST_ASSERT_EQUAL_UINT(la.err, lb.err);
+        TEST_ASSERT_EQUAL_INT(ra.val, rb.val);
+        TEST_ASSERT_EQUAL_UINT(ra.err, rb.err);
+        TEST_ASSERT_EQUAL_INT(lm.val, lb.val);
+        TEST_ASSERT_EQUAL_INT(rm.val, rb.val);
+        TEST_ASSERT_EQUAL_HEX8((r8_u8)(1u << ((by + rows) & 7)), tb.m);
+        TEST_ASSERT_TRUE(tb.page == buf_b + 4 + ((by + rows) >> 3) * (unsigned)w);
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_trap);
+    return UNITY_END();
+}
