@@ -13,7 +13,11 @@
  *               markers 2 and 3, like emu/avrsim -P), written to FILE
  *     -F N      profile frames N and later only (default 0)
  *     -H FILE   per instruction inside the profiled frames: "addr cycles
- *               executions" (hex address), for a disassembly (da65)
+ *               executions" (hex address); with -D, the cycles of code
+ *               without a source line (cc65's runtime library) go to
+ *               the JSR that called it from code with one.
+ *               emu/prof65_lines.py turns it into cycles per C line
+ *     -D FILE   ld65's debug file (default: PROGRAM.dbg if it exists)
  *     -C FILE   code coverage of the whole run, per symbol: "size executed
  *               name" (bytes: its address range up to the next symbol,
  *               the opcode and operand bytes executed at least once),
@@ -88,6 +92,7 @@ static sym *syms;
 static int nsyms;
 static int *owner; /* address -> symbol index, -1 before the first */
 static unsigned code_end = 0x10000; /* where CODE ends (the map's RODATA) */
+static unsigned char *has_line; /* -D: addresses with a source line */
 
 /* the map's segment list: CODE's end, for the last function's size */
 static void read_code_end(const char *map)
@@ -185,6 +190,57 @@ static int load_syms(const char *path)
     return 0;
 }
 
+/* ld65 --dbgfile: which addresses have a source line (C or assembly);
+ * cc65's runtime library has none */
+static int load_lines(const char *path)
+{
+    static unsigned segstart[64];
+    static unsigned *spst, *spsz;
+    static unsigned char *spseg;
+    unsigned nspan = 0, id, a, b, c, k;
+    char line[4096];
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    spst = calloc(1 << 20, sizeof *spst);
+    spsz = calloc(1 << 20, sizeof *spsz);
+    spseg = calloc(1 << 20, 1);
+    has_line = calloc(0x10000, 1);
+    while (fgets(line, sizeof line, f)) {
+        if (sscanf(line, "seg\tid=%u,name=%*[^,],start=0x%x", &id, &a) == 2 && id < 64)
+            segstart[id] = a;
+        else if (sscanf(line, "span\tid=%u,seg=%u,start=%u,size=%u", &id, &a, &b, &c) == 4 &&
+                 id < (1u << 20)) {
+            spseg[id] = (unsigned char)a;
+            spst[id] = b;
+            spsz[id] = c;
+            if (id >= nspan)
+                nspan = id + 1;
+        }
+    }
+    rewind(f);
+    while (fgets(line, sizeof line, f)) {
+        char *p;
+        if (strncmp(line, "line\t", 5) || !(p = strstr(line, "span=")))
+            continue;
+        p += 5;
+        for (;;) {
+            id = (unsigned)strtoul(p, &p, 10);
+            if (id < nspan)
+                for (k = 0; k < spsz[id]; k++)
+                    has_line[(segstart[spseg[id] & 63] + spst[id] + k) & 0xFFFF] = 1;
+            if (*p != '+')
+                break;
+            p++;
+        }
+    }
+    fclose(f);
+    free(spst);
+    free(spsz);
+    free(spseg);
+    return 0;
+}
+
 static int find_sym(const char *name)
 {
     int i;
@@ -245,6 +301,7 @@ static void write_coverage(const char *path)
 /* ---- shadow call stack (for +rt and incl) */
 typedef struct {
     int fn, cown;
+    unsigned rsite; /* -H: the JSR from code with line info that led here */
     unsigned s; /* S inside the callee */
     u64 t0;     /* profiled cycles at entry */
 } frame;
@@ -253,7 +310,7 @@ static int depth;
 static u64 pcyc; /* profiled cycles so far */
 static int profiling; /* inside a profiled frame */
 
-static void call_push(unsigned target)
+static void call_push(unsigned target, unsigned site)
 {
     int fn = owner ? owner[target] : -1;
     frame *f;
@@ -263,6 +320,7 @@ static void call_push(unsigned target)
     f->fn = fn;
     f->s = S;
     f->t0 = pcyc;
+    f->rsite = (!has_line || has_line[site] || !depth) ? site : stk[depth - 1].rsite;
     if (is_c(fn))
         f->cown = fn;
     else
@@ -652,7 +710,7 @@ static int step(void)
         if (PC >= PV_BASE && PC < PV_BASE + PV_N)
             paravirt(PC - PV_BASE);
         else
-            call_push(ea);
+            call_push(ea, (t - 2) & 0xFFFF);
         break;
     case RTS:
         t = pop();
@@ -713,7 +771,7 @@ static int cmp_cself(const void *a, const void *b)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: prof65 [-o OUT] [-m MARKS] [-x CYCLES] [-L LABELS] [-P PROFILE [-F N]]\n"
-               "              [-H HIST] [-C COVERAGE] [-q] PROGRAM.prg [ARG...]\n"
+               "              [-H HIST [-D DBG]] [-C COVERAGE] [-q] PROGRAM.prg [ARG...]\n"
                "runs a cc65 sim6502 program like sim65 (same cycle total), logs plat_mark\n"
                "markers and frame cycles, and profiles cycles per function in frames.\n");
 }
@@ -721,7 +779,7 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     const char *outp = NULL, *markp = NULL, *labp = NULL, *profp = NULL, *histp = NULL;
-    const char *covp = NULL;
+    const char *covp = NULL, *dbgp = NULL;
     u64 limit = 20000000000ULL;
     u64 *hist_c = NULL, *hist_n = NULL;
     unsigned char hdr[12];
@@ -731,7 +789,7 @@ int main(int argc, char **argv)
     FILE *f;
     char lab[4096];
 
-    while ((o = getopt(argc, argv, "+o:m:x:L:P:F:H:C:qh")) != -1) {
+    while ((o = getopt(argc, argv, "+o:m:x:L:P:F:H:C:D:qh")) != -1) {
         switch (o) {
         case 'o': outp = optarg; break;
         case 'm': markp = optarg; break;
@@ -741,6 +799,7 @@ int main(int argc, char **argv)
         case 'F': prof_from = (unsigned)atoi(optarg); break;
         case 'H': histp = optarg; break;
         case 'C': covp = optarg; break;
+        case 'D': dbgp = optarg; break;
         case 'q': quiet = 1; break;
         case 'h': usage(stdout); return 0;
         default: usage(stderr); return 2;
@@ -819,6 +878,23 @@ int main(int argc, char **argv)
     if (covp)
         covered = calloc(0x10000, 1);
     if (histp) {
+        char dbg[4096];
+        if (!dbgp) {
+            const char *dot = strrchr(argv[optind], '.');
+            size_t stem = dot && !strchr(dot, '/') ? (size_t)(dot - argv[optind]) : strlen(argv[optind]);
+            if (stem < sizeof dbg - 8) {
+                memcpy(dbg, argv[optind], stem);
+                strcpy(dbg + stem, ".dbg");
+                if (!access(dbg, R_OK))
+                    dbgp = dbg;
+            }
+        }
+        if (dbgp && load_lines(dbgp)) {
+            fprintf(stderr, "prof65: cannot read %s\n", dbgp);
+            return 2;
+        }
+    }
+    if (histp) {
         hist_c = calloc(0x10000, sizeof *hist_c);
         hist_n = calloc(0x10000, sizeof *hist_n);
     }
@@ -863,8 +939,12 @@ int main(int argc, char **argv)
                 }
             }
             if (hist_c) {
-                hist_c[pc0] += (u64)c;
-                hist_n[pc0]++;
+                unsigned at = pc0;
+                if (has_line && !has_line[pc0] && depth)
+                    at = stk[depth - 1].rsite; /* a runtime helper: its caller */
+                hist_c[at] += (u64)c;
+                if (at == pc0)
+                    hist_n[pc0]++;
             }
         }
         if (cyc >= limit) {
@@ -913,7 +993,7 @@ int main(int argc, char **argv)
     if (hist_c) {
         FILE *hf = fopen(histp, "w");
         for (a = 0; hf && a < 0x10000; a++)
-            if (hist_n[a])
+            if (hist_n[a] || hist_c[a])
                 fprintf(hf, "%04x %llu %llu\n", a, hist_c[a], hist_n[a]);
         if (hf)
             fclose(hf);
