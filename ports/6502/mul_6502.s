@@ -16,11 +16,12 @@
 ; An 8 x 8 product then takes ~28 cycles, the signed 16 x 16 ~190.
 ;
 ; Internal entry for the other kernels: r8m_smul16 multiplies r8m_a by
-; r8m_b (signed) into r8m_p (4 bytes, little-endian); A, X, Y changed,
-; r8m_a, r8m_b kept.
+; r8m_b (signed) into r8m_p (4 bytes, little-endian); A, X, Y, r8m_a and
+; r8m_b changed.  0 takes ~30 cycles; an operand in -128..127 two byte
+; products (~110 cycles), any other four (~200).
 
-        .export         _r8_mul16, r8m_smul16
-        .exportzp       r8m_a, r8m_b, r8m_p
+        .export         _r8_mul16, r8m_smul16, r8m_umul16
+        .exportzp       r8m_a, r8m_b, r8m_p, sq1l, sq1h, sq2l, sq2h
         .importzp       sp, sreg
         .constructor    r8m_init
 
@@ -88,6 +89,61 @@ _r8_mul16:
 .endmacro
 
 r8m_smul16:
+        lda     r8m_b           ; b = 0 or a = 0: 0
+        ora     r8m_b+1
+        beq     @zero
+        lda     r8m_a
+        ora     r8m_a+1
+        bne     @nz
+@zero:  sta     r8m_p           ; (A = 0)
+        sta     r8m_p+1
+        sta     r8m_p+2
+        sta     r8m_p+3
+        rts
+@nz:    lda     r8m_b           ; b in -128..127 (its high byte = its sign)?
+        asl     a
+        lda     r8m_b+1
+        adc     #0
+        bne     :+
+        jmp     small
+:       lda     r8m_a           ; a in -128..127: swap, then the same
+        asl     a
+        lda     r8m_a+1
+        adc     #0
+        bne     @gen
+        ldx     r8m_a
+        ldy     r8m_b
+        stx     r8m_b
+        sty     r8m_a
+        ldx     r8m_a+1
+        ldy     r8m_b+1
+        stx     r8m_b+1
+        sty     r8m_a+1
+        jmp     small
+@gen:   jsr     r8m_umul16
+        ; signed: a < 0 takes b off the high word, b < 0 takes a off
+        bit     r8m_a+1
+        bpl     :+
+        sec
+        lda     r8m_p+2
+        sbc     r8m_b
+        sta     r8m_p+2
+        lda     r8m_p+3
+        sbc     r8m_b+1
+        sta     r8m_p+3
+:       bit     r8m_b+1
+        bpl     :+
+        sec
+        lda     r8m_p+2
+        sbc     r8m_a
+        sta     r8m_p+2
+        lda     r8m_p+3
+        sbc     r8m_a+1
+        sta     r8m_p+3
+:       rts
+
+; unsigned 16 x 16: r8m_a * r8m_b -> r8m_p (4 bytes)
+r8m_umul16:
         lda     r8m_a           ; x = a low
         SETX
         ldy     r8m_b
@@ -129,26 +185,56 @@ r8m_smul16:
         tya
         adc     r8m_p+3
         sta     r8m_p+3
-        ; signed: a < 0 takes b off the high word, b < 0 takes a off
-        bit     r8m_a+1
+        rts
+
+; a (16 bits) * b (-128..127, its low byte): 2 byte products; with
+; a = a_u - 2^16 [a < 0], b = b_l - 2^8 [b < 0]:
+; a * b = a_u * b_l - 2^16 [a < 0] b_l - 2^8 [b < 0] a   (mod 2^32)
+small:  lda     r8m_b
+        SETX
+        ldy     r8m_a
+        MUL8                    ; aL * bL
+        stx     r8m_p
+        sta     r8m_p+1
+        ldy     r8m_a+1
+        MUL8                    ; aH * bL
+        tay
+        txa
+        clc
+        adc     r8m_p+1
+        sta     r8m_p+1
+        tya
+        adc     #0
+        sta     r8m_p+2
+        lda     #0
+        sta     r8m_p+3
+        bit     r8m_a+1         ; a < 0: b_l off bytes 2..3
         bpl     :+
         sec
         lda     r8m_p+2
         sbc     r8m_b
         sta     r8m_p+2
-        lda     r8m_p+3
-        sbc     r8m_b+1
+        lda     #0
+        sbc     #0
         sta     r8m_p+3
-:       bit     r8m_b+1
+:       bit     r8m_b           ; b < 0: a (sign-extended) off bytes 1..3
+        bpl     @done
+        ldx     #0
+        bit     r8m_a+1
         bpl     :+
-        sec
-        lda     r8m_p+2
+        dex
+:       sec
+        lda     r8m_p+1
         sbc     r8m_a
-        sta     r8m_p+2
-        lda     r8m_p+3
+        sta     r8m_p+1
+        lda     r8m_p+2
         sbc     r8m_a+1
+        sta     r8m_p+2
+        stx     r8m_b           ; (the extension byte; b's low byte is done)
+        lda     r8m_p+3
+        sbc     r8m_b
         sta     r8m_p+3
-:       rts
+@done:  rts
 
 ; The tables, before main: f(x + 1) = f(x) + ((x + 1) >> 1); sq1[x] =
 ; f(x) for x = 0..511, sq2[255 + d] = sq2[255 - d] = f(d) (d = 0..256).

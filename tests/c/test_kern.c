@@ -120,9 +120,62 @@ static void test_trap(void)
     }
 }
 
+/* ---- r8k_xform */
+static r8_s32 mul32(r8_s16 a, r8_s16 b) /* the plain C product */
+{
+    r8_s32 p = a;
+    p *= b;
+    return p;
+}
+
+static r8_s16 rnd_coord(void)
+{
+    switch (rndn(4)) {
+    case 0:
+        return (r8_s16)rnd16();                    /* any */
+    case 1:
+        return (r8_s16)((r8_s16)rndn(256) - 128);  /* a byte */
+    case 2:
+        return (r8_s16)((r8_s16)rndn(3) - 1);      /* 0, +-1 */
+    default:
+        return (r8_s16)((r8_s16)rndn(4001) - 2000);
+    }
+}
+
+static void test_xform(void)
+{
+    unsigned i, j;
+    for (i = 0; i < 1500; i++) {
+        r8_mat3 m;
+        r8_vec3l t, oa, ob;
+        r8_s16 v[3];
+        r8_s32 s;
+        for (j = 0; j < 9; j++) {
+            m.m[j] = (r8_s16)((r8_s16)rndn(32769u) - 16384);
+            if (!rndn(4))
+                m.m[j] = (r8_s16)(rndn(3) ? 0 : (rndn(2) ? 16384 : -16384));
+        }
+        for (j = 0; j < 3; j++)
+            v[j] = rnd_coord();
+        t.x = (r8_s32)(r8_s16)rnd16() * 4096L + (r8_s32)rnd16();
+        t.y = (r8_s32)(r8_s16)rnd16() * 16L;
+        t.z = (r8_s32)(r8_s16)rnd16();
+        ref_xform(&m, &t, v, &oa);
+        r8k_xform(&m, &t, v, &ob);
+        TEST_ASSERT_EQUAL_INT32(oa.x, ob.x);
+        TEST_ASSERT_EQUAL_INT32(oa.y, ob.y);
+        TEST_ASSERT_EQUAL_INT32(oa.z, ob.z);
+        s = mul32(m.m[0], v[0]) + mul32(m.m[1], v[1]) + mul32(m.m[2], v[2]) + 512;
+        TEST_ASSERT_EQUAL_INT32(R8_ASR32C(s, 10) + t.x, ob.x);
+        s = mul32(m.m[6], v[0]) + mul32(m.m[7], v[1]) + mul32(m.m[8], v[2]) + 512;
+        TEST_ASSERT_EQUAL_INT32(R8_ASR32C(s, 10) + t.z, ob.z);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_trap);
+    RUN_TEST(test_xform);
     return UNITY_END();
 }

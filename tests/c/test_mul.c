@@ -1,8 +1,10 @@
-/* test_mul.c - r8_mul16, the signed 16 x 16 -> 32-bit product: with
- * R8_ASM_MUL16 a port's assembly (ports/6502/mul_6502.s), elsewhere the C
- * of src/fixed.c; either against the C89 reference (r8_s32 p = a;
- * p *= b) on every sign, the extremes, each byte at 0x00 / 0x7F / 0x80
- * / 0xFF, and random operands. */
+/* test_mul.c - the multiplies: r8_mul16, the signed 16 x 16 -> 32-bit
+ * product (with R8_ASM_MUL16 a port's assembly, ports/6502/mul_6502.s,
+ * elsewhere the C of src/fixed.c) against the C89 reference (r8_s32 p =
+ * a; p *= b); and the compiler's own int and long `*` (on the 6502
+ * ports/6502/rtmul_6502.s replaces cc65's runtime for them) against a
+ * model made of 8-bit products.  On every sign, the extremes, each byte
+ * at 0x00 / 0x7F / 0x80 / 0xFF, and random operands. */
 #include "unity.h"
 #include "r8fixed.h"
 
@@ -52,9 +54,73 @@ static void test_random(void)
     }
 }
 
+/* the low 32 bits of a * b from byte products (no long multiply) */
+static r8_u32 model32(r8_u32 a, r8_u32 b)
+{
+    unsigned acc[8], i, j;
+    r8_u32 r = 0;
+    for (i = 0; i < 8; i++)
+        acc[i] = 0;
+    for (i = 0; i < 4; i++)
+        for (j = 0; i + j < 4; j++) {
+            unsigned p = (unsigned)((a >> (8 * i)) & 0xFFu) * (unsigned)((b >> (8 * j)) & 0xFFu);
+            acc[i + j] += p & 0xFFu;
+            acc[i + j + 1] += p >> 8;
+        }
+    for (i = 0; i < 4; i++) {
+        acc[i + 1] += acc[i] >> 8;
+        r |= (r8_u32)(acc[i] & 0xFFu) << (8 * i);
+    }
+    return r;
+}
+
+static r8_u32 rnd32(void)
+{
+    r8_u32 v = rnd16();
+    v = (v << 16) | rnd16();
+    switch (rnd16() & 7u) {
+    case 0:
+        return v & 0xFFFFu;                            /* unsigned 16 */
+    case 1:
+        return (r8_u32)(r8_s32)(r8_s16)(v & 0xFFFFu);  /* signed 16 */
+    case 2:
+        return (r8_u32)(r8_s32)(r8_s8)(v & 0xFFu);
+    case 3:
+        return v & 0x00FFFFFFul;
+    default:
+        return v;
+    }
+}
+
+static void test_long_and_int(void)
+{
+    static const r8_u32 edge[] = {0, 1, 0xFFFFFFFFul, 0x80000000ul, 0x7FFFFFFFul,
+                                  0xFFFFul, 0x10000ul, 0x8000ul, 0xFFFF8000ul, 0xFF00FF00ul};
+    unsigned i, j;
+    for (i = 0; i < sizeof edge / sizeof edge[0]; i++)
+        for (j = 0; j < sizeof edge / sizeof edge[0]; j++) {
+            r8_u32 a = edge[i], b = edge[j];
+            r8_s32 sa = (r8_s32)a, sb = (r8_s32)b;
+            TEST_ASSERT_EQUAL_UINT32(model32(a, b), a * b);
+            TEST_ASSERT_EQUAL_UINT32(model32(a, b), (r8_u32)(sa * sb));
+        }
+    for (i = 0; i < 3000; i++) {
+        r8_u32 a = rnd32(), b = rnd32();
+        r8_s32 sa = (r8_s32)a, sb = (r8_s32)b;
+        r8_u16 ua = (r8_u16)a, ub = (r8_u16)b;
+        r8_s16 ia = (r8_s16)ua, ib = (r8_s16)ub;
+        TEST_ASSERT_EQUAL_UINT32(model32(a, b), a * b);
+        TEST_ASSERT_EQUAL_UINT32(model32(a, b), (r8_u32)(sa * sb));
+        TEST_ASSERT_EQUAL_UINT32(model32(a, ub), a * ub);          /* long * unsigned */
+        TEST_ASSERT_EQUAL_HEX16((r8_u16)model32(ua, ub), (r8_u16)(ua * ub));
+        TEST_ASSERT_EQUAL_HEX16((r8_u16)model32(ua, ub), (r8_u16)(ia * ib));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_long_and_int);
     RUN_TEST(test_bytes);
     RUN_TEST(test_random);
     return UNITY_END();
