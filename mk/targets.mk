@@ -45,7 +45,7 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
 # that replaces its C89 reference (tests/c/test_mul.c, test_kern.c,
 # test_wirek.c compare them in sim65).
 C65_ASM    := $(wildcard ports/6502/*.s)
-C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"

@@ -172,10 +172,78 @@ static void test_xform(void)
     }
 }
 
+/* ---- r8k_project */
+static r8_s32 rnd_z(void)
+{
+    switch (rndn(6)) {
+    case 0:
+        return (r8_s32)(1 + rndn(300));
+    case 1:
+        return (r8_s32)rnd16() * (r8_s32)(1 + rndn(2000));
+    case 2:
+        return -(r8_s32)rndn(100);          /* behind: r8_recip takes it as 1 */
+    case 3:
+        return (r8_s32)(1u + rndn(0x7FFFu)) << rndn(16);
+    default:
+        return (r8_s32)(256 + rndn(20000));
+    }
+}
+
+static r8_s32 rnd_xy(void)
+{
+    switch (rndn(5)) {
+    case 0:
+        return (r8_s32)(r8_s16)rnd16();
+    case 1:
+        return (r8_s32)(r8_s16)rnd16() * (r8_s32)(1 + rndn(300));   /* wide */
+    case 2:
+        return (r8_s32)((r8_s16)rndn(3) - 1) * 32768L + (r8_s32)rndn(3) - 1;
+    default:
+        return (r8_s32)((r8_s16)rndn(8001) - 4000);
+    }
+}
+
+static void test_project(void)
+{
+    unsigned i;
+    for (i = 0; i < 3000; i++) {
+        r8_proj p;
+        r8_vec3l c;
+        r8_s16 oa[2], ob[2];
+        r8_u16 ma, mb;
+        r8_s8 ea, eb;
+        int ra, rb;
+        r8_proj_init(&p, (r8_s16)(16 + rndn(300)), (r8_s16)(16 + rndn(200)),
+                     (r8_s16)(1 + rndn(i & 1 ? 200 : 2047)), 16);
+        if (!rndn(10))
+            p.guard = (r8_s16)rndn(2048);     /* some beyond 1024 px: the C path */
+        c.x = rnd_xy();
+        c.y = rnd_xy();
+        c.z = rnd_z();
+        oa[0] = oa[1] = ob[0] = ob[1] = 0x5A5A;
+        ra = ref_project(&p, &c, oa, &ma, &ea);
+        rb = r8k_project(&p, &c, ob, &mb, &eb);
+        TEST_ASSERT_EQUAL_INT(ra, rb);
+        TEST_ASSERT_EQUAL_UINT(ma, mb);
+        TEST_ASSERT_EQUAL_INT(ea, eb);
+        TEST_ASSERT_EQUAL_INT(oa[0], ob[0]);
+        TEST_ASSERT_EQUAL_INT(oa[1], ob[1]);
+        /* the contract: r8_recip's reciprocal, r8_project's result */
+        TEST_ASSERT_EQUAL_UINT(r8_recip(c.z, &ea), mb);
+        TEST_ASSERT_EQUAL_INT(ea, eb);
+        TEST_ASSERT_EQUAL_INT(r8_project(&p, &c, &oa[0], &oa[1]), rb);
+        if (!rb) {
+            TEST_ASSERT_EQUAL_INT(oa[0], ob[0]);
+            TEST_ASSERT_EQUAL_INT(oa[1], ob[1]);
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_trap);
     RUN_TEST(test_xform);
+    RUN_TEST(test_project);
     return UNITY_END();
 }
