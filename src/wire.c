@@ -88,11 +88,12 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
 #ifdef R8_ASM_WIRE
 #define TX_LINK(s, q)                                          \
     do {                                                       \
-        if ((s)->code) {                                       \
-            if ((q) - (s)->code > 254) {                       \
+        r8_u8 *c_ = (s)->code; /* once (cc65: one load) */     \
+        if (c_) {                                              \
+            if ((unsigned)((q) - c_) > 254u) { /* q after c_ */ \
                 tx_unlink(s);                                  \
             } else {                                           \
-                *(s)->code = (r8_u8)((q) - (s)->code);         \
+                *c_ = (r8_u8)((q) - c_);                       \
                 (s)->code = (q);                               \
             }                                                  \
         }                                                      \
@@ -504,11 +505,11 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
         f[1] = (r8_u8)(s.g & 0xFFu);
         f[2] = s.f1;
         f[3] = s.f2;
-        changed = 0;
-        for (k = 0; k < 4u; k++) {
-            changed |= (r8_u8)(fp[k] ^ f[k]);
-            fp[k] = f[k];
-        }
+        changed = (r8_u8)((fp[0] ^ f[0]) | (fp[1] ^ f[1]) | (fp[2] ^ f[2]) | (fp[3] ^ f[3]));
+        fp[0] = f[0];
+        fp[1] = f[1];
+        fp[2] = f[2];
+        fp[3] = f[3];
         /* frame CRC: fcrc * x^(8n) ^ the band's CRC from 0 */
         tx->fcrc = (r8_u16)(r8_crc16_mul(tx->fcrc, xn) ^ s.g);
         if (!tx->full && !changed)
