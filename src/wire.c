@@ -471,7 +471,7 @@ unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
  * fp[4] (changed: whether it did) and the frame CRC; z = its leading
  * zeros. */
 static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n,
-                                unsigned y0, r8_u8 *fp, r8_u16 xn, unsigned z)
+                                unsigned y0, register r8_u8 *fp, r8_u16 xn, unsigned z)
 {
     register r8_u8 *b = tx->pkt + 1;
     r8_u8 *from = b, changed, f[4];
