@@ -171,6 +171,14 @@ def measure(t, s, m, need, host_streams):
                 rec["stack_peak_bytes"] = int(mm.group(1))
             rec["identical_to_host"] = (res[FRAMES][2] == 0 and res[FRAMES][1] == ref4 and
                                         (N not in res or res[N][1] == ref2))
+            # where the cycles go: emu/prof65 (sim65's CPU, the same totals)
+            with tempfile.TemporaryDirectory() as td:
+                prof = os.path.join(td, "prof.txt")
+                run([os.path.join(ROOT, "build", "emu", "prof65"), "-q", "-o", os.devnull,
+                     "-m", os.devnull, "-F", str(N), "-P", prof, path], timeout=600)
+                ptext = open(prof).read() if os.path.exists(prof) else ""
+            if ptext:
+                split_profile(rec, prof65_rows(ptext))
     wire = (len(ref4) - len(ref2)) / float(N)
     rec["wire_bytes_per_frame"] = round(wire, 1)
     if wire > 0:
@@ -182,6 +190,20 @@ def measure(t, s, m, need, host_streams):
 
 
 WIRE_FN = re.compile(r"crc|rle|cobs|tx_|put_raw|^out$|plat_|codec|lz77|raw_copy")
+
+
+def prof65_rows(ptext):
+    """6502: emu/prof65 -P as avrsim's "cycles pct name" rows: each C
+    function with the runtime helpers (and assembly labels) it calls, so
+    the rows add up to the frames' cycles."""
+    rows = []
+    for line in ptext.splitlines():
+        f = line.split()
+        if line.startswith("#") or len(f) != 7 or not f[6].startswith("_"):
+            continue
+        rows.append((int(f[2]), f[6][1:]))
+    rows.sort(key=lambda r: -r[0])
+    return "\n".join("%d - %s" % r for r in rows)
 
 
 def split_profile(rec, ptext):
@@ -281,6 +303,17 @@ def write_md(recs, host, elapsed):
             L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
+    prof = [r for r in recs if r["target"] == "6502" and r.get("profile_top")
+            and r["scene"] in ("cube", "torus") and r["method"] in ("cull", "painter", "zbuf16")]
+    if prof:
+        L.append("## Where the 6502 cycles go (emu/prof65, cycles per frame, top C functions "
+                 "with the runtime helpers they call)")
+        L.append("")
+        for r in prof:
+            L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
+                     ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
+        L.append("")
+        L.extend(SECTION_6502)
     mic = micro()
     if mic:
         with open(os.path.join(ROOT, "build", "bench", "micro.json"), "w") as f:
@@ -414,7 +447,7 @@ def git_rev():
 def main():
     t0 = time.time()
     os.chdir(ROOT)
-    ready = ["build/emu/avrsim", "build/emu/fw-host"] + sorted(
+    ready = ["build/emu/avrsim", "build/emu/prof65", "build/emu/fw-host"] + sorted(
         {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in TARGETS})
     if idt.make(ready, keep_going=False):
         sys.exit("bench: cannot build the runners / sizes")

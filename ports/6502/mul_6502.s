@@ -1,11 +1,6 @@
-; mul_6502.s - the 6502 multiply (ca65): r8_mul16, the signed 16 x 16 ->
-; 32-bit product of r8fixed.h, from quarter squares (issue 10).
-;
-; Built into the 6502 library with -DR8_ASM_MUL16 (mk/targets.mk): then
-; r8fixed.h's R8_MUL16 calls this instead of cc65's 32 x 32 multiply
-; (tosmuleax, ~1100 cycles), and src/fixed.c leaves out its C version,
-; the reference (r8_s32 p = a; p *= b).  tests/c/test_mul.c compares
-; the two on random and extreme inputs in sim65.
+; mul_6502.s - the 6502 multiplies (ca65, issue 10) from quarter squares,
+; for the other kernels: mul16_6502.s (r8_mul16, R8_ASM_MUL16),
+; xform_6502.s, proj_6502.s and rtmul_6502.s (cc65's runtime multiplies).
 ;
 ; a * b = f(a + b) - f(a - b), f(x) = floor(x^2 / 4), for bytes a, b
 ; (a + b and a - b have the same parity, so the floors cancel).  Four
@@ -20,7 +15,7 @@
 ; r8m_b changed.  0 takes ~30 cycles; an operand in -128..127 two byte
 ; products (~110 cycles), any other four (~200).
 
-        .export         _r8_mul16, r8m_smul16, r8m_umul16
+        .export         r8m_smul16, r8m_umul16
         .exportzp       r8m_a, r8m_b, r8m_p, sq1l, sq1h, sq2l, sq2h
         .importzp       sp, sreg
         .constructor    r8m_init
@@ -42,32 +37,6 @@ SQ2L    = tab + $400
 SQ2H    = tab + $600
 
         .code
-
-; r8_s32 __fastcall__ r8_mul16(r8_s16 a, r8_s16 b): b in A/X, a on the
-; C stack; the product in A/X/sreg.
-_r8_mul16:
-        sta     r8m_b
-        stx     r8m_b+1
-        ldy     #1
-        lda     (sp),y
-        sta     r8m_a+1
-        dey
-        lda     (sp),y
-        sta     r8m_a
-        jsr     r8m_smul16
-        clc                     ; pop a
-        lda     sp
-        adc     #2
-        sta     sp
-        bcc     :+
-        inc     sp+1
-:       lda     r8m_p+2
-        sta     sreg
-        lda     r8m_p+3
-        sta     sreg+1
-        lda     r8m_p
-        ldx     r8m_p+1
-        rts
 
 ; the table pointers' low bytes = A (sq1) and ~A (sq2)
 .macro  SETX

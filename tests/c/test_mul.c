@@ -1,5 +1,5 @@
 /* test_mul.c - the multiplies: r8_mul16, the signed 16 x 16 -> 32-bit
- * product (with R8_ASM_MUL16 a port's assembly, ports/6502/mul_6502.s,
+ * product (with R8_ASM_MUL16 a port's assembly, ports/6502/mul16_6502.s,
  * elsewhere the C of src/fixed.c) against the C89 reference (r8_s32 p =
  * a; p *= b); and the compiler's own int and long `*` (on the 6502
  * ports/6502/rtmul_6502.s replaces cc65's runtime for them) against a
