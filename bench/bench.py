@@ -189,6 +189,39 @@ def measure(t, s, m, need, host_streams):
     return rec
 
 
+# The 6502 port's assembly and link step, measured by bench/kern6502.py
+# (the cube / cull firmware rebuilt without each piece; it rebuilds
+# build/x/6502, so it is not run from here).
+SECTION_6502 = [
+    "## The 6502 port: what each piece buys (cube / cull)",
+    "",
+    "`python3 bench/kern6502.py` (measured on branch p6502, issue 10): sim65 cycles per "
+    "frame (4-frame run minus 2-frame run, over 2) and image size of the cube / cull firmware "
+    "with one piece left out.  Every variant's stream equals the host's.",
+    "",
+    "| 6502 cube / cull | cycles/frame | vs the build | flash | RAM static |",
+    "|---|---:|---:|---:|---:|",
+    "| all kernels, gc65 (the build) | 484,005 | +0 | 46,610 | 4,636 |",
+    "| without r8k_trap (R8_ASM_TRAP, trap_6502.s) | 808,283 | +324,278 | 47,177 | 4,634 |",
+    "| without the wire kernels (R8_ASM_WIRE, wire_6502.s) | 771,908 | +287,903 | 46,542 | 4,139 |",
+    "| without r8k_project (R8_ASM_PROJECT, proj_6502.s) | 516,572 | +32,567 | 46,412 | 4,648 |",
+    "| without r8k_xform (R8_ASM_XFORM, xform_6502.s) | 507,657 | +23,652 | 46,907 | 4,644 |",
+    "| without cc65's runtime multiplies replaced (rtmul_6502.s) | 504,493 | +20,488 | 46,321 | 4,636 |",
+    "| without r8_mul16 (R8_ASM_MUL16, mul16_6502.s) | 496,886 | +12,881 | 46,832 | 4,640 |",
+    "| without gc65 (whole objects linked) | 483,905 | -100 | 54,258 | 4,785 |",
+    "| none of it (the C, cc65's runtime, whole objects) | 1,383,316 | +899,311 | 51,732 | 2,217 |",
+    "",
+    "* The multiplies (ports/6502/mul_6502.s) are quarter squares: four 512-entry tables "
+    "(2 KB) and the CRC table (512 B) are built in RAM before main (R8PAGE in "
+    "ports/6502/rast8.cfg: RAM static above includes them, the image does not).",
+    "* ports/6502/gc65.py drops every function and data item nothing reaches from `main` "
+    "(cc65 links whole object files), on every 6502 program.",
+    "* emu/prof65 runs the same .prg as sim65 (same cycle totals, tests/targets/prof65_check.py) "
+    "and gives cycles per function (`-P`), per instruction (`-H`, with ld65's debug file; "
+    "`emu/prof65_lines.py` sums them per C line) and coverage (`-C`).",
+    "",
+]
+
 WIRE_FN = re.compile(r"crc|rle|cobs|tx_|put_raw|^out$|plat_|codec|lz77|raw_copy")
 
 

@@ -12,9 +12,9 @@ profiled frames, when given), share, executions of their first
 instruction, file:line and the source text.
 """
 import argparse
-import bisect
 import os
 import re
+import signal
 import sys
 
 
@@ -39,6 +39,7 @@ def parse_dbg(path):
 
 
 def main():
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)   # | head: no traceback
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("-n", type=int, default=40)
     ap.add_argument("--frames", type=int, default=1)
