@@ -177,6 +177,14 @@ def measure(t, s, m, need, host_streams, sh=1):
                 rec["stack_peak_bytes"] = int(mm.group(1))
             rec["identical_to_host"] = (res[FRAMES][2] == 0 and res[FRAMES][1] == ref4 and
                                         (N not in res or res[N][1] == ref2))
+            # where the cycles go: emu/prof65 (sim65's CPU, the same totals)
+            with tempfile.TemporaryDirectory() as td:
+                prof = os.path.join(td, "prof.txt")
+                run([os.path.join(ROOT, "build", "emu", "prof65"), "-q", "-o", os.devnull,
+                     "-m", os.devnull, "-F", str(N), "-P", prof, path], timeout=600)
+                ptext = open(prof).read() if os.path.exists(prof) else ""
+            if ptext:
+                split_profile(rec, prof65_rows(ptext))
     wire = (len(ref4) - len(ref2)) / float(N)
     rec["wire_bytes_per_frame"] = round(wire, 1)
     if wire > 0:
@@ -187,7 +195,54 @@ def measure(t, s, m, need, host_streams, sh=1):
     return rec
 
 
+# The 6502 port's assembly and link step, measured by bench/kern6502.py
+# (the cube / cull firmware rebuilt without each piece; it rebuilds
+# build/x/6502, so it is not run from here).
+SECTION_6502 = [
+    "## The 6502 port: what each piece buys (cube / cull)",
+    "",
+    "`python3 bench/kern6502.py` (measured on branch p6502, issue 10): sim65 cycles per "
+    "frame (4-frame run minus 2-frame run, over 2) and image size of the cube / cull firmware "
+    "with one piece left out.  Every variant's stream equals the host's.",
+    "",
+    "| 6502 cube / cull | cycles/frame | vs the build | flash | RAM static |",
+    "|---|---:|---:|---:|---:|",
+    "| all kernels, gc65 (the build) | 484,005 | +0 | 46,610 | 4,636 |",
+    "| without r8k_trap (R8_ASM_TRAP, trap_6502.s) | 808,283 | +324,278 | 47,177 | 4,634 |",
+    "| without the wire kernels (R8_ASM_WIRE, wire_6502.s) | 771,908 | +287,903 | 46,542 | 4,139 |",
+    "| without r8k_project (R8_ASM_PROJECT, proj_6502.s) | 516,572 | +32,567 | 46,412 | 4,648 |",
+    "| without r8k_xform (R8_ASM_XFORM, xform_6502.s) | 507,657 | +23,652 | 46,907 | 4,644 |",
+    "| without cc65's runtime multiplies replaced (rtmul_6502.s) | 504,493 | +20,488 | 46,321 | 4,636 |",
+    "| without r8_mul16 (R8_ASM_MUL16, mul16_6502.s) | 496,886 | +12,881 | 46,832 | 4,640 |",
+    "| without gc65 (whole objects linked) | 483,905 | -100 | 54,258 | 4,785 |",
+    "| none of it (the C, cc65's runtime, whole objects) | 1,383,316 | +899,311 | 51,732 | 2,217 |",
+    "",
+    "* The multiplies (ports/6502/mul_6502.s) are quarter squares: four 512-entry tables "
+    "(2 KB) and the CRC table (512 B) are built in RAM before main (R8PAGE in "
+    "ports/6502/rast8.cfg: RAM static above includes them, the image does not).",
+    "* ports/6502/gc65.py drops every function and data item nothing reaches from `main` "
+    "(cc65 links whole object files), on every 6502 program.",
+    "* emu/prof65 runs the same .prg as sim65 (same cycle totals, tests/targets/prof65_check.py) "
+    "and gives cycles per function (`-P`), per instruction (`-H`, with ld65's debug file; "
+    "`emu/prof65_lines.py` sums them per C line) and coverage (`-C`).",
+    "",
+]
+
 WIRE_FN = re.compile(r"crc|rle|cobs|tx_|put_raw|^out$|plat_|codec|lz77|raw_copy")
+
+
+def prof65_rows(ptext):
+    """6502: emu/prof65 -P as avrsim's "cycles pct name" rows: each C
+    function with the runtime helpers (and assembly labels) it calls, so
+    the rows add up to the frames' cycles."""
+    rows = []
+    for line in ptext.splitlines():
+        f = line.split()
+        if line.startswith("#") or len(f) != 7 or not f[6].startswith("_"):
+            continue
+        rows.append((int(f[2]), f[6][1:]))
+    rows.sort(key=lambda r: -r[0])
+    return "\n".join("%d - %s" % r for r in rows)
 
 
 def split_profile(rec, ptext):
@@ -291,6 +346,17 @@ def write_md(recs, host, elapsed):
             L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
+    prof = [r for r in recs if r["target"] == "6502" and r.get("profile_top")
+            and r["scene"] in ("cube", "torus") and r["method"] in ("cull", "painter", "zbuf16")]
+    if prof:
+        L.append("## Where the 6502 cycles go (emu/prof65, cycles per frame, top C functions "
+                 "with the runtime helpers they call)")
+        L.append("")
+        for r in prof:
+            L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
+                     ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
+        L.append("")
+        L.extend(SECTION_6502)
     mic = micro()
     if mic:
         with open(os.path.join(ROOT, "build", "bench", "micro.json"), "w") as f:
@@ -483,7 +549,7 @@ def git_rev():
 def main():
     t0 = time.time()
     os.chdir(ROOT)
-    ready = ["build/emu/avrsim", "build/emu/fw-host"] + sorted(
+    ready = ["build/emu/avrsim", "build/emu/prof65", "build/emu/fw-host"] + sorted(
         {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in TARGETS})
     if idt.make(ready, keep_going=False):
         sys.exit("bench: cannot build the runners / sizes")

@@ -54,7 +54,19 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 AVR_WIRE_S := ports/avr/wire_avr.S
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
+# 6502 assembly (ports/6502/*.s, ca65), in the 6502 library: each
+# R8_ASM_* names the kernels that replace their C89 reference (the two go
+# together: bench/kern6502.py builds without each) - R8_ASM_MUL16
+# mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
+# R8_ASM_PROJECT proj_6502.s, R8_ASM_WIRE wire_6502.s; mul_6502.s is their
+# quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
+# long multiplies.  tests/c/test_mul.c, test_kern.c and test_wirek.c
+# compare them with the C in sim65.  Programs link with ports/6502/
+# rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
+# (function-level dead code removal; C65_GC=0: off).
+C65_ASM    := $(wildcard ports/6502/*.s)
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
@@ -86,6 +98,11 @@ PLAT_z80     := plat_z80
 $(AVRSIM): emu/avrsim.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
+
+# the 6502 profiler: sim65's CPU and paravirtual I/O, cycles per function
+$(BUILD)/emu/prof65: emu/prof65.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra -std=gnu99 -o $@ $<
 
 $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
@@ -145,7 +162,10 @@ $(XB)/6502/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
 	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
-$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
+$(XB)/6502/obj/%.o: ports/6502/%.s
+	@mkdir -p $(dir $@)
+	ca65 -g -t sim6502 -o $@ $<
+$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o) $(C65_ASM:ports/6502/%.s=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
 $(XB)/z80/obj/%.rel: src/%.c $(XHDRS)
@@ -238,7 +258,7 @@ XT_6502    := $(XT_NAMES:%=$(XB)/6502/tests/%.prg)
 XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
 XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
-.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
+.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80 xprof-6502
 xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80)
 
 # Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
@@ -249,6 +269,10 @@ xtest-6502:
 xtest-z80:
 	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
 XTEST_TIMEOUT ?= 300
+
+# emu/prof65 against sim65: same cycles, exit code and stream.
+xprof-6502:
+	@bash scripts/run-step.sh xprof-6502 $(PY) tests/targets/prof65_check.py
 
 # Bit identity: every scene x method that fits, per target, vs the host.
 xident-%:
@@ -262,7 +286,7 @@ fw: $(XREADY)
 xtest-avr-kern:
 	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
 
-TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80
+TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
 
 # ---- benchmark
 bench: $(SETUP)
