@@ -92,3 +92,30 @@ def test_version_2_rejects_it(codec_tool):
     got, cnt = _decode_both(bad2, codec_tool)
     assert sorted(got) == [3544, 3545, 3546, 3547] and all(got[f] == ref[f] for f in got)
     assert cnt["incomplete"] == 1 and cnt["bad_packets"] == 0
+
+
+def _rank(nbytes):
+    """Rank of the 48 check bits (packet CRC-16, frame CRC-32) over all
+    damage confined to `nbytes` consecutive bytes."""
+    z = bytes(nbytes)
+    c16, c32 = C.crc16(z), binascii.crc32(z)
+    basis = {}
+    for bit in range(8 * nbytes):
+        m = bytearray(nbytes)
+        m[bit // 8] ^= 1 << (bit % 8)
+        v = ((C.crc16(bytes(m)) ^ c16) << 32) | (binascii.crc32(bytes(m)) ^ c32)
+        while v:
+            h = v.bit_length() - 1
+            if h not in basis:
+                basis[h] = v
+                break
+            v ^= basis[h]
+    return len(basis)
+
+
+def test_crc16_and_crc32_are_independent_checks():
+    # docs/protocol.md 4.1: within 5 bytes no damage passes both (rank =
+    # all 40 bits); from 7 bytes on the 48 check bits are independent, so
+    # 2^-32 of what the packet CRC misses passes the CRC-32
+    assert _rank(5) == 40
+    assert _rank(7) == _rank(64) == 48
