@@ -1,4 +1,4 @@
-/* r8wire.h - the serial display protocol (docs/protocol.md, version 1):
+/* r8wire.h - the serial display protocol (docs/protocol.md, versions 1, 2):
  * CRC-16/CCITT-FALSE, COBS framing, the band-by-band frame encoder
  * (firmware side) and the byte-at-a-time frame decoder (display side).
  *
