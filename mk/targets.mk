@@ -32,6 +32,7 @@
 
 XB       := $(BUILD)/x
 AVRSIM   := $(BUILD)/emu/avrsim
+Z80SIM   := $(BUILD)/emu/z80sim
 FWHOST   := $(BUILD)/emu/fw-host
 XTARGETS := avr328 avr1284 6502 z80
 XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) ports/plat.h $(wildcard examples/spin/app.h)
@@ -82,6 +83,11 @@ PLAT_z80     := plat_z80
 $(AVRSIM): emu/avrsim.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
+
+# the Z80 profiler (emu/z80sim.c: Zilog T-states per function; -u: ucsim's)
+$(Z80SIM): emu/z80sim.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra -std=c99 -o $@ $<
 
 $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
