@@ -54,7 +54,27 @@ AVR_WIRE_S := ports/avr/wire_avr.S
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
-Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
+# Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
+# links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:
+#   mul16    r8_mul16 (-DR8_ASM_MUL16) and the multiply helpers the
+#            others use (always in when any is)
+#   mullong  sdcc's __mullong (long * long), ahead of z80.lib's
+#   wire     the wire encoder's kernels (-DR8_ASM_WIRE, src/r8crc.h)
+#   trap xform project edge   the kernels of include/r8kern.h
+#            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
+# build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks each
+# against its reference, whatever Z80_ASM says.
+Z80_ASM    ?= 1
+Z80_KALL   := mul16 mullong
+Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
+Z80_KERN   := $(if $(Z80_KERN0),mul16) $(filter-out mul16,$(Z80_KERN0))
+Z80_KOBJS  := $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
+Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter trap,$(Z80_KERN)),-DR8_ASM_TRAP) \
+              $(if $(filter xform,$(Z80_KERN)),-DR8_ASM_XFORM) $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) \
+              $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE)
+Z80_KSTAMP := $(XB)/z80-kernels.txt
+Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),trap xform,$(filter trap xform,$(AVR_ASM)))
@@ -150,9 +170,15 @@ $(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/u
 $(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
-$(XB)/z80/obj/%.rel: src/%.c $(XHDRS)
+$(Z80_KSTAMP): z80-kstamp-force
+	@mkdir -p $(dir $@) && echo "$(Z80_KERN)" | cmp -s - $@ || echo "$(Z80_KERN)" > $@
+z80-kstamp-force:
+$(XB)/z80/obj/%.rel: src/%.c $(XHDRS) $(Z80_KSTAMP)
 	@mkdir -p $(dir $@)
-	bash ports/z80/sdcc.sh $(Z80_CFLAGS) --Werror -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) --Werror -c -o $@ $<
+$(XB)/z80/obj/%.rel: ports/z80/%.s
+	@mkdir -p $(dir $@)
+	sdasz80 -o $@ $<
 $(XB)/z80/obj/%.rel: ports/z80/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
 	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
@@ -165,8 +191,8 @@ $(XB)/z80/obj/%.rel: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/z80/obj/%.rel: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
 	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -Itests/unity -c -o $@ $<
-$(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel)
-	rm -f $@ && sdar -rc $@ $^
+$(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel) $(Z80_KOBJS) $(Z80_KSTAMP)
+	rm -f $@ && sdar -rc $@ $(filter %.rel,$^)
 
 # ---- programs per target: sizes, firmware, unit tests
 # $(1) target.  Sizes come from the 1284P for both AVRs (same ABI; the

@@ -3,12 +3,15 @@
 #include "r8fixed.h"
 #include "r8flash.h"
 
+/* With R8_ASM_MUL16 a port links its own (ports/z80/mul16_z80.s). */
+#ifndef R8_ASM_MUL16
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b)
 {
     r8_s32 p = a; /* not (long)a * (long)b: SDCC 4.2 z80 gets that wrong */
     p *= b;
     return p;
 }
+#endif
 
 r8_s32 r8_asr14(r8_s32 v)
 {
