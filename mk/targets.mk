@@ -34,6 +34,7 @@
 
 XB       := $(BUILD)/x
 AVRSIM   := $(BUILD)/emu/avrsim
+Z80SIM   := $(BUILD)/emu/z80sim
 FWHOST   := $(BUILD)/emu/fw-host
 XTARGETS := avr328 avr1284 6502 z80
 XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) ports/plat.h $(wildcard examples/spin/app.h)
@@ -67,7 +68,27 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
 C65_ASM    := $(wildcard ports/6502/*.s)
 C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
-Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC)
+# Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
+# links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:
+#   mul16    r8_mul16 (-DR8_ASM_MUL16) and the multiply helpers the
+#            others use (always in when any is)
+#   mullong  sdcc's __mullong (long * long), ahead of z80.lib's
+#   wire     the wire encoder's kernels (-DR8_ASM_WIRE, src/r8crc.h)
+#   trap xform project edge   the kernels of include/r8kern.h
+#            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
+# build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks each
+# against its reference, whatever Z80_ASM says.
+Z80_ASM    ?= 1
+Z80_KALL   := mul16 mullong
+Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
+Z80_KERN   := $(if $(Z80_KERN0),mul16) $(filter-out mul16,$(Z80_KERN0))
+Z80_KOBJS  := $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
+Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter trap,$(Z80_KERN)),-DR8_ASM_TRAP) \
+              $(if $(filter xform,$(Z80_KERN)),-DR8_ASM_XFORM) $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) \
+              $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE)
+Z80_KSTAMP := $(XB)/z80-kernels.txt
+Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project
@@ -103,6 +124,11 @@ $(AVRSIM): emu/avrsim.c
 $(BUILD)/emu/prof65: emu/prof65.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall -Wextra -std=gnu99 -o $@ $<
+
+# the Z80 profiler (emu/z80sim.c: Zilog T-states per function; -u: ucsim's)
+$(Z80SIM): emu/z80sim.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra -std=c99 -o $@ $<
 
 $(FWHOST): $(FW_SRC) emu/fw_plat_host.c $(XLIB_SRC) $(SCENE_SRC) $(XHDRS)
 	@mkdir -p $(dir $@)
@@ -168,9 +194,15 @@ $(XB)/6502/obj/%.o: ports/6502/%.s
 $(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o) $(C65_ASM:ports/6502/%.s=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
-$(XB)/z80/obj/%.rel: src/%.c $(XHDRS)
+$(Z80_KSTAMP): z80-kstamp-force
+	@mkdir -p $(dir $@) && echo "$(Z80_KERN)" | cmp -s - $@ || echo "$(Z80_KERN)" > $@
+z80-kstamp-force:
+$(XB)/z80/obj/%.rel: src/%.c $(XHDRS) $(Z80_KSTAMP)
 	@mkdir -p $(dir $@)
-	bash ports/z80/sdcc.sh $(Z80_CFLAGS) --Werror -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) --Werror -c -o $@ $<
+$(XB)/z80/obj/%.rel: ports/z80/%.s
+	@mkdir -p $(dir $@)
+	sdasz80 -o $@ $<
 $(XB)/z80/obj/%.rel: ports/z80/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
 	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
@@ -183,8 +215,8 @@ $(XB)/z80/obj/%.rel: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/z80/obj/%.rel: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
 	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -Itests/unity -c -o $@ $<
-$(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel)
-	rm -f $@ && sdar -rc $@ $^
+$(XB)/z80/rast8.lib: $(XOBJ_NAMES:%=$(XB)/z80/obj/%.rel) $(Z80_KOBJS) $(Z80_KSTAMP)
+	rm -f $@ && sdar -rc $@ $(filter %.rel,$^)
 
 # ---- programs per target: sizes, firmware, unit tests
 # $(1) target.  Sizes come from the 1284P for both AVRs (same ABI; the

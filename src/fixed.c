@@ -3,8 +3,9 @@
 #include "r8fixed.h"
 #include "r8flash.h"
 
+/* With R8_ASM_MUL16 a port links its own (ports/6502/mul16_6502.s,
+ * ports/z80/mul16_z80.s); this is their reference (tests/c/test_mul.c). */
 #ifndef R8_ASM_MUL16
-/* (the reference of a port's assembly, R8_ASM_MUL16: tests/c/test_mul.c) */
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b)
 {
     r8_s32 p = a; /* not (long)a * (long)b: SDCC 4.2 z80 gets that wrong */
