@@ -56,6 +56,11 @@ p       = xb
         sbc     (sq2h),y
 .endmacro
 
+; (before the entry: the profile's cycles from _r8k_edge on are its own)
+wide:   lda     #$00            ; R8_EDGE_WIDE, *it untouched
+        ldx     #$80
+        rts
+
 _r8k_edge:
         sta     pp
         stx     pp+1
@@ -120,12 +125,9 @@ _r8k_edge:
         lda     xb+1
         clc
         adc     #$40
-        bpl     :+
-wide:   lda     #$00            ; R8_EDGE_WIDE, *it untouched
-        ldx     #$80
-        rts
+        bmi     wide
         ; y0 = R8_ROW_OF(ay): 2048 past 32760, else floor((ay + 7) / 16)
-:       lda     ya
+        lda     ya
         cmp     #<32761
         lda     ya+1
         sbc     #>32761
@@ -191,8 +193,9 @@ wide:   lda     #$00            ; R8_EDGE_WIDE, *it untouched
         cmp     dy
         lda     #0
         sbc     dy+1
-        bcs     wide
-        ldx     #11
+        bcc     :+
+        jmp     wide
+:       ldx     #11
 @div:   asl     dq
         rol     dq+1
         rol     rd
