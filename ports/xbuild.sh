@@ -58,9 +58,9 @@ case $tgt in
       done
     fi
     # C stack 1 KB instead of 2 (measured peaks are ~300 B): 1 KB more for code
-    cl65 -t sim6502 -C ports/6502/rast8.cfg --ld-args -D,__STACKSIZE__=0x0400,-Ln,"$base.lbl",--dbgfile,"$base.dbg" -m "$base.map" -o "$out" "${link[@]}" \
+    cl65 -t sim6502 -C ports/6502/rast8.cfg --ld-args -D,__STACKSIZE__=0x0200,-Ln,"$base.lbl",--dbgfile,"$base.dbg" -m "$base.map" -o "$out" "${link[@]}" \
       >> "$log" 2>&1 || {
-        grep -q 'overflows memory area' "$log" && skip "$(grep -m1 -o 'Segment.*' "$log") (sim6502: 63 KB for code+data, 1 KB C stack)"; fail; }
+        grep -q 'overflows memory area' "$log" && skip "$(grep -m1 -o 'Segment.*' "$log") (sim6502: 63 KB for code+data, 512 B C stack)"; fail; }
     # segment sizes from the map: CODE+RODATA+DATA (program), DATA+BSS (RAM)
     python3 - "$base.map" > "$out.size" <<'PY'
 import re, sys

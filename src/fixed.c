@@ -106,16 +106,29 @@ void r8_cross3(const r8_vec3 *a, const r8_vec3 *b, r8_vec3l *c)
     c->z = r8_mul16(a->x, b->y) - r8_mul16(a->y, b->x);
 }
 
+/* r8_sat16(R8_ASR32C(q, 14)) on the 16-bit halves of q: floor(q / 2^14)
+ * is hi * 4 + (lo >> 14), in range when hi is in -2^13 .. 2^13 - 1 (no
+ * 32-bit shift or compare on 8-bit CPUs) */
+static r8_s16 sat_asr14(r8_s32 q)
+{
+    r8_u16 hi = (r8_u16)((r8_u32)q >> 16), lo = (r8_u16)((r8_u32)q & 0xFFFFu);
+    if ((r8_u16)(hi + 0x2000u) < 0x4000u)
+        return (r8_s16)((r8_u16)(hi << 2) | (lo >> 14));
+    if (hi & 0x8000u)
+        return (r8_s16)(-32767 - 1);
+    return 32767;
+}
+
 /* round(a * b / 2^14) as r8_mat_mul rounds each entry */
 static r8_s16 rmul(r8_s16 a, r8_s16 b)
 {
-    return r8_sat16(R8_ASR32C(R8_MUL16(a, b) + 8192, 14));
+    return sat_asr14(R8_MUL16(a, b) + 8192);
 }
 
 /* round((a * b + c * d) / 2^14), saturated */
 static r8_s16 rmul2(r8_s16 a, r8_s16 b, r8_s16 c, r8_s16 d)
 {
-    return r8_sat16(R8_ASR32C(R8_MUL16(a, b) + R8_MUL16(c, d) + 8192, 14));
+    return sat_asr14(R8_MUL16(a, b) + R8_MUL16(c, d) + 8192);
 }
 
 void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az)

@@ -747,8 +747,13 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
         const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
         r8_u8 vsh = st->vsh;
         n = R8_RDU8(&fc->n);
-        for (j = 0; j < n; j++)
-            vp[j] = base + (vsh == 1 ? 2u : 4u) * R8_RDU8(&fc->v[j]);
+        if (vsh == 1) {                 /* no run-time multiply */
+            for (j = 0; j < n; j++)
+                vp[j] = base + 2u * R8_RDU8(&fc->v[j]);
+        } else {
+            for (j = 0; j < n; j++)
+                vp[j] = base + 4u * R8_RDU8(&fc->v[j]);
+        }
     }
     *oi = i;
     return n;

@@ -212,7 +212,6 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
     r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
     r8_s16 w = fb->width, y = s->y, by;
     r8_trapfill t;
-    r8_u8 k;
 #ifndef R8_PAGE1_ONLY
     if (fb->format != R8_FMT_PAGE1) {
         /* other layouts: one span at a time */
@@ -253,8 +252,14 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
     t.w = w;
     if (level > 16)
         level = 16;
-    for (k = 0; k < 4; k++)
-        t.pat[k] = R8_FB_DITHER(level, k);
+    {
+        /* R8_FB_DITHER(level, 0..3), the index once */
+        const r8_u8 *dp = r8_fb_dither_tab + ((unsigned)level << 2);
+        t.pat[0] = R8_RDU8(dp);
+        t.pat[1] = R8_RDU8(dp + 1);
+        t.pat[2] = R8_RDU8(dp + 2);
+        t.pat[3] = R8_RDU8(dp + 3);
+    }
     while (y < lim) {
         r8_s16 stop = lim;
         if (judd && !s->front) {

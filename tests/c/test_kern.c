@@ -1,5 +1,6 @@
 /* test_kern.c - the kernels of r8kern.h: the library's (a port's
- * assembly where it defines R8_ASM_TRAP / R8_ASM_XFORM / R8_ASM_PROJECT,
+ * assembly where it defines R8_ASM_TRAP / R8_ASM_XFORM / R8_ASM_PROJECT /
+ * R8_ASM_EDGE,
  * ports/6502/ assembly) against the C89 references of src/kern.c, compiled in
  * here under other names, on random inputs; both against a plain model
  * of each contract too (so the test means something where the two are
@@ -7,18 +8,23 @@
 #include "unity.h"
 #include "r8kern.h"
 #include "r8fb.h"
+#include <string.h>
 
 /* src/kern.c's C versions as ref_*, whatever this build links */
 #undef R8_ASM_TRAP
 #undef R8_ASM_XFORM
 #undef R8_ASM_PROJECT
+#undef R8_ASM_EDGE
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
+#define r8k_edge ref_edge
 #include "../../src/kern.c"
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project
+#undef r8k_edge
+r8_s16 ref_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void ref_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 int ref_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
@@ -257,11 +263,161 @@ static void test_project(void)
     }
 }
 
+/* ---- r8k_edge: classes of edges as tests/targets/test_avr_kern.c
+ * draws them (a[1] < b[1], the contract); the return value and all of
+ * *it (left as it was on R8_EDGE_WIDE) */
+#define EDGE_CASES 4000
+static r8_u32 erng = 0x2545F491UL;
+static r8_u32 ernd(void)
+{
+    erng ^= erng << 13;
+    erng ^= erng >> 17;
+    erng ^= erng << 5;
+    return erng;
+}
+static unsigned erndn(unsigned n) { return (unsigned)(ernd() % n); }
+static r8_s16 ernds(r8_s16 lo, r8_s16 hi)   /* lo..hi */
+{
+    return (r8_s16)((unsigned)lo + erndn((unsigned)hi - (unsigned)lo + 1u));
+}
+static r8_s16 eclamp16(r8_s32 v)
+{
+    if (v > 32767L)
+        return 32767;
+    if (v < -32768L)
+        return (r8_s16)(-32767 - 1);
+    return (r8_s16)v;
+}
+
+static void rnd_edge(r8_s16 *a, r8_s16 *b)
+{
+    unsigned c = erndn(16);
+    r8_s32 ay, dy, ax, dx;
+    if (c < 11)
+        ay = ernds(-300, 1300);
+    else if (c < 13)
+        ay = ernds(32744, 32766);           /* y0 = 2048 past 32760 */
+    else if (c < 14)
+        ay = ernds((r8_s16)(-32767 - 1), -32700);
+    else
+        ay = (r8_s16)ernd();
+    c = erndn(16);
+    if (c < 3)
+        dy = 1;
+    else if (c < 7)
+        dy = 1 + erndn(48);
+    else if (c < 12)
+        dy = 1 + erndn(1423);
+    else if (c < 15)
+        dy = 1414 + erndn(20);              /* the 1424 limit */
+    else
+        dy = 1 + (r8_s32)(ernd() & 0x7FFF);
+    c = erndn(16);
+    if (c < 9)
+        ax = ernds(-400, 2400);
+    else if (c < 12)
+        ax = (c & 1 ? -16384 : 16383) + ernds(-3, 3);
+    else if (c < 15)
+        ax = ernds(-16384, 16383);
+    else
+        ax = (r8_s16)ernd();
+    c = erndn(16);
+    if (c < 2) {
+        dx = 0;
+    } else if (c < 8) {
+        dx = ernds(-40, 40) + (r8_s32)ernds(-3, 3) * dy;
+    } else if (c < 10) {
+        /* |q| near 2048: short rows */
+        dy = 1 + erndn(7);
+        ax = ernds(-1500, 1500);
+        dx = 2048L * dy + ernds((r8_s16)(-dy - 2), (r8_s16)(dy + 2));
+        if (erndn(2))
+            dx = -dx;
+    } else if (c < 11) {
+        /* s0 >= 12, q near +-2048, ax far out on the same side */
+        ay = (ay & ~15L) + 9 + erndn(4);
+        dy = 1;
+        ax = 9400 + erndn(4600);
+        dx = 1950 + erndn(98);
+        if (erndn(2)) {
+            ax = -ax;
+            dx = -dx;
+        }
+    } else if (c < 15) {
+        dx = ernds(-16000, 16000);
+    } else {
+        dx = (r8_s16)ernd() - ax;
+    }
+    if (ay + dy > 32767L)
+        dy = 32767L - ay;
+    a[0] = (r8_s16)ax;
+    a[1] = (r8_s16)ay;
+    b[0] = eclamp16(ax + dx);
+    b[1] = (r8_s16)(ay + dy);
+    if (a[1] >= b[1]) {
+        b[1] = (r8_s16)(a[1] + 1);
+        if (a[1] == 32767) {
+            a[1] = 32766;
+            b[1] = 32767;
+        }
+    }
+}
+
+static void test_edge(void)
+{
+    static r8_s16 a[2], b[2];
+    static r8_interp ia, ir;
+    unsigned i, n_wdy = 0, n_wx = 0, n_wq = 0, n_neg = 0, n_dx0 = 0, n_dy1 = 0,
+        n_steep = 0, n_ytop = 0, n_q0 = 0;
+    for (i = 0; i < EDGE_CASES; i++) {
+        r8_s16 ya, yr;
+        rnd_edge(a, b);
+        memset(&ia, (int)(i & 0xFF), sizeof ia);
+        memset(&ir, (int)(i & 0xFF), sizeof ir);
+        yr = ref_edge(&ir, a, b);
+        ya = r8k_edge(&ia, a, b);
+        TEST_ASSERT_EQUAL_INT16(yr, ya);
+        TEST_ASSERT_EQUAL_INT16(ir.val, ia.val);
+        TEST_ASSERT_EQUAL_INT16(ir.q, ia.q);
+        TEST_ASSERT_EQUAL_UINT16(ir.err, ia.err);
+        TEST_ASSERT_EQUAL_UINT16(ir.r, ia.r);
+        TEST_ASSERT_EQUAL_UINT16(ir.den, ia.den);
+        if (yr == R8_EDGE_WIDE) {
+            if ((r8_u16)(b[1] - a[1]) >= 1424u)
+                n_wdy++;
+            else if (a[0] < -16384 || a[0] > 16383 || b[0] < -16384 || b[0] > 16383)
+                n_wx++;
+            else
+                n_wq++;
+            continue;
+        }
+        /* the contract: the first row's column and the step */
+        TEST_ASSERT_EQUAL_UINT16((r8_u16)((r8_u16)b[1] - (r8_u16)a[1]), ir.den);
+        TEST_ASSERT(ir.err < ir.den && ir.r < ir.den);
+        n_neg += b[0] < a[0];
+        n_dx0 += b[0] == a[0];
+        n_dy1 += ir.den == 1;
+        n_steep += ir.q >= 1900 || ir.q <= -1900;
+        n_q0 += ir.q == 0 || ir.q == -1;
+        n_ytop += a[1] > 32760;
+    }
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wdy);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wx);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wq);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 10, n_neg);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_dx0);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_dy1);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_steep);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_q0);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_ytop);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_trap);
     RUN_TEST(test_xform);
     RUN_TEST(test_project);
+    RUN_TEST(test_edge);
     return UNITY_END();
 }
