@@ -31,8 +31,11 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 /* The renderer compiled into the firmware with its switches (fwdefs.sh:
  * -DR8_NO_PAINTER, -DR8_NO_ZBUF, ... for every method this firmware does
  * not use): the archive's render.o is then not linked, nor are the
- * visibility methods, clipper or run-time normals it would pull in. */
+ * visibility methods, clipper or run-time normals it would pull in.
+ * transform.c comes along: without depth methods and painter's, its
+ * vertex depth and r8_muldiv drop out. */
 #include "render.c"
 #include "scan.c"
+#include "transform.c"
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

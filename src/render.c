@@ -239,10 +239,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    pl->vsh = (r8_u8)(cfg->method >= R8_VIS_Z8 || cfg->shading == R8_SHADE_GOURAUD ? 2 : 1);
+    pl->vsh = (r8_u8)(R8_DEPTH(cfg->method) || R8_GOURAUD(cfg->shading) ? 2 : 1);
     pl->fast = (r8_u8)(pl->vsh == 1);
     pl->nbands = (r8_u16)(((unsigned)cfg->height + (unsigned)cfg->band - 1u) / (unsigned)cfg->band);
-    pl->nheads = cfg->method == R8_VIS_PAINTER ? R8_JEFF_BUCKETS : pl->nbands;
+    pl->nheads = R8_PAINTER(cfg->method) ? R8_JEFF_BUCKETS : pl->nbands;
     /* a clipped polygon adds at most 5 intersections */
     pl->sv_cap = (r8_u16)(nv + 5u * cfg->clip);
     nid = nf + cfg->clip;
@@ -255,8 +255,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
     pl->vnorm = o;
+#if R8_W_GOURAUD
     if (cfg->shading == R8_SHADE_GOURAUD)
         o += align_up(6u * nv);
+#endif
     pl->norms = o; o += align_up(6u * nn);
     pl->next = o; o += align_up(sizeof(r8_fid) * nid);
     pl->heads = o;                  /* band buckets live through the frame */
@@ -266,7 +268,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (pl->npool)
         o += align_up(nid);
     pl->ftop = o;         /* painter's with a pool: each face's first band */
-    if (pl->npool && cfg->method == R8_VIS_PAINTER)
+    if (pl->npool && R8_PAINTER(cfg->method))
         o += align_up(nid);
     pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
     /* One region for memory that is never live at the same time: the
@@ -280,20 +282,32 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (cfg->clip)
         frame_t = align_up(R8_CLIP_BYTES);
 #endif
+#if R8_W_PAINTER
     if (cfg->method == R8_VIS_PAINTER) {
         /* depth buckets: only while the frame is set up */
         pl->heads = o;
         pl->clipbuf = o + align_up(sizeof(r8_fid) * pl->nheads);
         frame_t += align_up(sizeof(r8_fid) * pl->nheads);
     }
+#endif
     pl->tmp = o;
     pl->pool = o + pl->esize;
     pl->depth = pl->pool + pl->esize * pl->npool;
-    pl->snode = pl->depth + align_up(r8_vis_depth_bytes(cfg));
-    pl->shead = pl->snode + align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
+    pl->snode = pl->depth;
+#if R8_W_DEPTH
+    if (cfg->method >= R8_VIS_Z8)
+        pl->snode += align_up(r8_vis_depth_bytes(cfg));
+#endif
+    pl->shead = pl->snode;
+#if R8_W_SBUF
+    if (cfg->method == R8_VIS_SBUF)
+        pl->shead += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
+#endif
     band_t = pl->shead - o;
+#if R8_W_SBUF
     if (cfg->method == R8_VIS_SBUF)
         band_t += align_up(2u * (unsigned)cfg->band);
+#endif
     o += frame_t > band_t ? frame_t : band_t;
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
@@ -410,7 +424,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
     st->next = (r8_fid *)(void *)(base + pl.next);
     st->slot = pl.npool ? base + pl.slot : 0;
-    st->ftop = pl.npool && cfg->method == R8_VIS_PAINTER ? base + pl.ftop : 0;
+    st->ftop = pl.npool && R8_PAINTER(cfg->method) ? base + pl.ftop : 0;
     st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
     st->nclip = cfg->clip;
     st->heads = (r8_fid *)(void *)(base + pl.heads);
@@ -420,15 +434,19 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->esize = pl.esize;
     st->npool = pl.npool;
     st->depth = base + pl.depth;
-    st->depth_bytes = r8_vis_depth_bytes(cfg);
+    st->depth_bytes = R8_DEPTH(cfg->method) ? r8_vis_depth_bytes(cfg) : 0;
     st->snode = (r8_snode *)(void *)(base + pl.snode);
-    st->nsnode = r8_vis_sbuf_nodes(cfg);
+    st->nsnode = R8_SBUF(cfg->method) ? r8_vis_sbuf_nodes(cfg) : 0;
     st->shead = (r8_u16 *)(void *)(base + pl.shead);
     st->attrs = 0;
+#if R8_W_DEPTH
     if (cfg->method >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;
+#endif
+#if R8_W_GOURAUD
     if (cfg->shading == R8_SHADE_GOURAUD)
         st->attrs |= R8_ATTR_S;
+#endif
     st->first = (r8_fid)R8_FID_END;
     st->npoly = 0;
     st->dropped = 0;
@@ -467,8 +485,10 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
         }
 #ifndef R8_NO_GOURAUD
+#if R8_W_GOURAUD
         if (cfg->shading == R8_SHADE_GOURAUD)
             vertex_normals(st, me, o);
+#endif
 #endif
     }
     for (k = 0; k < st->nheads; k++)
@@ -521,7 +541,7 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
 {
     r8_u8 i;
     for (i = 0; i < n; i++)
-        vp[i] = st->sv + ((unsigned)idx[i] << st->vsh);
+        vp[i] = st->sv + ((unsigned)idx[i] << R8_VSH(st));
 }
 
 /* Painter's key of a polygon whose camera-space z summed over its n
@@ -599,12 +619,12 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = st->method == R8_VIS_PAINTER;
+    int painter = R8_PAINTER(st->method);
     const r8_object *ob = &sc->objects[i];
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
-    const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
-    r8_u8 vsh = st->vsh, normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
+    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
     r8_u16 f;
     if (o->hidden)
         return;
@@ -682,7 +702,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = st->method == R8_VIS_PAINTER;
+    int painter = R8_PAINTER(st->method);
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
@@ -744,8 +764,8 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
     {
         const r8_objx *o = &st->obj[i];
         const r8_face *fc = &sc->objects[i].mesh->faces[g - o->fbase];
-        const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
-        r8_u8 vsh = st->vsh;
+        const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
+        r8_u8 vsh = R8_VSH(st);
         n = R8_RDU8(&fc->n);
         for (j = 0; j < n; j++)
             vp[j] = base + (vsh == 1 ? 2u : 4u) * R8_RDU8(&fc->v[j]);
@@ -815,6 +835,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
         n = face_setup(st, g, e->c.vp, &oi);
+#if R8_W_PAINTER
         if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
             /* (with ftop, r8_render_band has already skipped the faces
              * that start lower down) */
@@ -823,6 +844,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
             if (top >= y1)
                 return 2;          /* starts lower down */
         }
+#endif
         if (!r8_scanx_begin(&e->c, n, y0))
             return 1;              /* nothing from this band on */
         if (k != R8_NO_SLOT) {
@@ -875,11 +897,14 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
-    if (st->depth_bytes) {
+#if R8_W_DEPTH
+    if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
         memset(st->depth, 0, st->depth_bytes);
         if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
             memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
     }
+#endif
+#if R8_W_SBUF
     if (st->method == R8_VIS_SBUF) {
         /* the row lists share memory with the frame set-up: start empty */
         r8_s16 k;
@@ -887,6 +912,8 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             st->shead[k] = 0xFFFFu;
         st->sused = 0;
     }
+#endif
+#if R8_W_PAINTER
     if (st->method == R8_VIS_PAINTER) {
         r8_u16 b = band_of(st, y0, r->cfg.band);
         r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
@@ -900,7 +927,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             else
                 link = &st->next[g];
         }
-    } else {
+    } else
+#endif
+    {
         /* merge the faces going on from above (st->first) with the band's
          * bucket, both in scene order; those that go on form the next
          * band's list */
@@ -923,8 +952,10 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     }
     st->first = head;
 #ifndef R8_NO_SBUF
+#if R8_W_SBUF
     if (st->method == R8_VIS_SBUF)
         r8_vis_sbuf_flush(st, fb);
+#endif
 #endif
 }
 
