@@ -53,9 +53,11 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 # chosen by R8_ASM_WIRE, see src/r8crc.h) are always in the AVR libraries;
 # the renderer's (trap.S, xform.S, edge.S, project.S) as AVR_ASM chooses.
 AVR_WIRE_S := ports/avr/wire_avr.S
-# -mcall-prologues: register saves through libgcc's shared sequences,
-# ~1.4 KB less flash on the cube firmware for ~1% more cycles.
-AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -DF_CPU=16000000UL \
+# Flash (the cube firmware): -mcall-prologues, register saves through
+# libgcc's shared sequences (-1.4 KB, ~1% more cycles); -mstrict-X (-0.6
+# KB); -mrelax, with ports/xbuild.sh linking with it: calls in reach
+# become RCALL (-0.3 KB).
+AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mstrict-X -mrelax -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
 # 6502 assembly (ports/6502/*.s, ca65), in the 6502 library: each
 # R8_ASM_* names the kernels that replace their C89 reference (the two go

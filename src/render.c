@@ -246,7 +246,11 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     /* a clipped polygon adds at most 5 intersections */
     pl->sv_cap = (r8_u16)(nv + 5u * cfg->clip);
     nid = nf + cfg->clip;
+#ifdef R8_NO_POOL
+    pl->npool = 0;                  /* cfg->pool is taken as 0 */
+#else
     pl->npool = cfg->pool;
+#endif
     if (pl->npool > (nf + 1u) / 2u)
         pl->npool = (r8_u8)((nf + 1u) / 2u);
     if (pl->npool > R8_POOL_MAX)
@@ -466,6 +470,10 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         vb = (r8_u16)(vb + me->nverts);
         fb = (r8_u16)(fb + me->nfaces);
         o->hidden = 1;      /* until the first r8_render_frame */
+#ifdef R8_NO_RT_NORMALS
+        o->normals = me->normals;   /* every mesh has them (cfg_valid) */
+        o->nflash = R8_HAVE_PROGMEM;
+#else
         if (me->normals) {
             o->normals = me->normals;
             o->nflash = R8_HAVE_PROGMEM;
@@ -476,19 +484,16 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
             for (j = 0; j < i; j++)
                 if (sc->objects[j].mesh == me)
                     o->normals = st->obj[j].normals;
-#ifndef R8_NO_RT_NORMALS
             if (!o->normals) {
                 r8_mesh_normals(me, norms);
                 o->normals = norms;
                 norms += 3u * me->nfaces;
             }
-#endif
         }
+#endif
 #ifndef R8_NO_GOURAUD
-#if R8_W_GOURAUD
         if (cfg->shading == R8_SHADE_GOURAUD)
             vertex_normals(st, me, o);
-#endif
 #endif
     }
     for (k = 0; k < st->nheads; k++)
@@ -692,8 +697,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         }
         st->next[id] = st->heads[key];
         st->heads[key] = id;
+#ifndef R8_NO_POOL
         if (st->slot)
             st->slot[id] = R8_NO_SLOT;
+#endif
         st->npoly++;
     }
 }
@@ -737,12 +744,14 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     st->first = cur;
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
+#ifndef R8_NO_POOL
     st->pool_free = st->npool ? 0 : R8_NO_SLOT;
     for (k = 0; k < st->npool; k++) {
         r8_acthead *e = (r8_acthead *)(void *)ENTRY(st, k);
         e->used = 0;
         e->level = (r8_u8)(k + 1u < st->npool ? k + 1u : R8_NO_SLOT);
     }
+#endif
 }
 
 /* ---- per band ---- */
@@ -821,19 +830,26 @@ static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_s
 static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 {
     r8_acthead *e;
+#ifndef R8_NO_POOL
     r8_u8 k = st->slot ? st->slot[g] : R8_NO_SLOT;
+#endif
     r8_scanx *c;
     int done;
+#ifndef R8_NO_POOL
     if (k != R8_NO_SLOT) {
         e = (r8_acthead *)(void *)ENTRY(st, k);
-    } else {
+    } else
+#endif
+    {
         r8_u8 n, oi;
         /* a pool entry if one is free (kept if the face goes on below
          * this band), else the one-off entry */
         e = (r8_acthead *)(void *)st->tmp;
+#ifndef R8_NO_POOL
         k = st->pool_free;
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
+#endif
         n = face_setup(st, g, e->c.vp, &oi);
 #if R8_W_PAINTER
         if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
@@ -847,12 +863,14 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 #endif
         if (!r8_scanx_begin(&e->c, n, y0))
             return 1;              /* nothing from this band on */
+#ifndef R8_NO_POOL
         if (k != R8_NO_SLOT) {
             st->pool_free = e->level;       /* off the free list */
             e->used = 1;
             st->slot[g] = k;
             st->pool_used++;
         }
+#endif
         e->level = face_level(st, g, oi);
 #ifndef R8_FAST_ONLY
         if (!st->fast) {
@@ -879,6 +897,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 #endif
         r8_scanx_fill(c, y1, st->judd, fb, e->level);
     done = c->y >= c->ybot || c->backface;
+#ifndef R8_NO_POOL
     if (done && k != R8_NO_SLOT) {
         e->used = 0;
         e->level = st->pool_free;           /* back on the free list */
@@ -886,6 +905,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         st->slot[g] = R8_NO_SLOT;
         st->pool_used--;
     }
+#endif
     return done;
 }
 
