@@ -67,31 +67,33 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];
         r8_objx *o = &st->obj[i];
-        r8_s32 d[3];
+        r8_s32 d[3], *ot = &o->t.x, *oe = &o->eye.x;
+        const r8_s16 *pp = &ob->pose.x, *cp = &cam->x;
+        r8_u8 k;
         o->hidden = (r8_u8)(ob->pose.flags & R8_POSE_HIDDEN);
         if ((ob->pose.flags & R8_POSE_MATRIX) && ob->pose.m)
             r = *ob->pose.m;
         else
             r8_mat_rotate(&r, ob->pose.ax, ob->pose.ay, ob->pose.az);
-        d[0] = (r8_s32)ob->pose.x - cam->x;
-        d[1] = (r8_s32)ob->pose.y - cam->y;
-        d[2] = (r8_s32)ob->pose.z - cam->z;
+        /* (x, y, z one after another, as rot_offset takes them: loops
+         * are less flash than three copies of 32-bit code) */
+        for (k = 0; k < 3; k++)
+            d[k] = (r8_s32)pp[k] - cp[k];
         if (turned) {
             r8_mat_mul(&c, &r, &o->m);
             rot_offset(&c, d, &o->t, 0);
         } else {
             o->m = r;
-            o->t.x = d[0] * R8_CSCALE;
-            o->t.y = d[1] * R8_CSCALE;
-            o->t.z = d[2] * R8_CSCALE;
+            for (k = 0; k < 3; k++)
+                ot[k] = d[k] * R8_CSCALE;
         }
-        d[0] = -d[0];
-        d[1] = -d[1];
-        d[2] = -d[2];
+        for (k = 0; k < 3; k++)
+            d[k] = -d[k];
         rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
-        o->eye16 = (r8_u8)((r8_u32)(o->eye.x + 16383) <= 32766UL &&
-                           (r8_u32)(o->eye.y + 16383) <= 32766UL &&
-                           (r8_u32)(o->eye.z + 16383) <= 32766UL);
+        o->eye16 = 1;
+        for (k = 0; k < 3; k++)
+            if ((r8_u32)(oe[k] + 16383) > 32766UL)
+                o->eye16 = 0;
         if (st->shading != R8_SHADE_FLAT)
             r8_mat_apply_t14(&r, &sc->light, &o->light);
     }
