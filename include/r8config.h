@@ -15,6 +15,9 @@
  *                     converter writes them); none are computed
  *   R8_SMALL_SCENE    8-bit face ids: at most 254 faces and clipped
  *                     polygons per scene, 1 byte per face less RAM
+ *   R8_NO_POOL        no scan-state pool (cfg.pool is taken as 0: each
+ *                     face's scan is set up again in every band it
+ *                     crosses; the least RAM, slower on tall faces)
  *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
  */

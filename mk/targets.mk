@@ -27,8 +27,8 @@
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
 # project) with those only, for before/after figures; as an environment
 # variable it also reaches make bench (`AVR_ASM=0 make bench`).
-# build/x/avr-kernels.txt records the choice, so changing it rebuilds
-# the AVR libraries.
+# build/x/avr-kernels.txt records the choice and AVR_CFLAGS, so changing
+# either rebuilds the AVR objects.
 # Test: tests/targets/test_avr_kern.c (each kernel against its reference
 # on random inputs, in libsimavr), step xkern-avr1284.
 
@@ -53,7 +53,11 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 # chosen by R8_ASM_WIRE, see src/r8crc.h) are always in the AVR libraries;
 # the renderer's (trap.S, xform.S, edge.S, project.S) as AVR_ASM chooses.
 AVR_WIRE_S := ports/avr/wire_avr.S
-AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
+# Flash (the cube firmware): -mcall-prologues, register saves through
+# libgcc's shared sequences (-1.4 KB, ~1% more cycles); -mstrict-X (-0.6
+# KB); -mrelax, with ports/xbuild.sh linking with it: calls in reach
+# become RCALL (-0.3 KB).
+AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mstrict-X -mrelax -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
 # 6502 assembly (ports/6502/*.s, ca65), in the 6502 library: each
 # R8_ASM_* names the kernels that replace their C89 reference (the two go
@@ -147,25 +151,25 @@ $(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) ports/scene_strip.py
 # ---- compile rules per target (library, plat, unity, scene tables)
 # (the kernel stamp: rewritten only when AVR_ASM chooses other kernels)
 $(AVR_KSTAMP): avr-kstamp-force
-	@mkdir -p $(dir $@) && echo "$(AVR_KERN)" | cmp -s - $@ || echo "$(AVR_KERN)" > $@
+	@mkdir -p $(dir $@) && echo "$(AVR_KERN) $(AVR_CFLAGS)" | cmp -s - $@ || echo "$(AVR_KERN) $(AVR_CFLAGS)" > $@
 avr-kstamp-force:
 define AVR_OBJ
 $(XB)/$(1)/obj/%.o: src/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) $(AVR_KDEFS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: ports/avr/%.S
+$(XB)/$(1)/obj/%.o: ports/avr/%.S $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: examples/spin/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: examples/spin/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
+$(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
-$(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
+$(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) $(AVR_KSTAMP) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -Itests/unity -c $$< -o $$@
 $(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_KERN:%=$(XB)/$(1)/obj/%.o) $(AVR_WIRE_S:ports/avr/%.S=$(XB)/$(1)/obj/%.o) $(AVR_KSTAMP)

@@ -31,8 +31,14 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 /* The renderer compiled into the firmware with its switches (fwdefs.sh:
  * -DR8_NO_PAINTER, -DR8_NO_ZBUF, ... for every method this firmware does
  * not use): the archive's render.o is then not linked, nor are the
- * visibility methods, clipper or run-time normals it would pull in. */
+ * visibility methods, clipper or run-time normals it would pull in.
+ * transform.c and cull.c come along: without depth methods and
+ * painter's, the vertex depth and r8_muldiv drop out; without run-time
+ * normals, the reads of normals from RAM. */
 #include "render.c"
+#define R8_SCAN_GUARDED  /* only the renderer scans: inside its guard band */
 #include "scan.c"
+#include "transform.c"
+#include "cull.c"
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

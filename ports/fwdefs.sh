@@ -9,9 +9,10 @@
 # theirs), no clipper (the demo camera never sees a face cross the near
 # plane or the guard band; the identity tests compare with the host's
 # full build).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
-# pool and 8-bit face ids (R8_SMALL_SCENE), the least RAM; fw_sizes.c
+# pool (R8_NO_POOL: its code left out too) and 8-bit face ids
+# (R8_SMALL_SCENE), the least RAM; fw_sizes.c
 # measures the same (XSIZES_avr328 in mk/targets.mk).
-SMALL328="-DFW_POOL=0 -DR8_SMALL_SCENE"
+SMALL328="-DFW_POOL=0 -DR8_NO_POOL -DR8_SMALL_SCENE"
 [ "$1" = --small328 ] && { echo "$SMALL328"; exit 0; }
 IFS=- read -r s m f sh <<< "$1"
 sizes=$2

@@ -26,7 +26,7 @@ case $tgt in
     if [ $tgt = avr328 ]; then mcu=atmega328p; ram=2048; flash=32768;
     else mcu=atmega1284p; ram=16384; flash=131072; fi
     avr-gcc -mmcu=$mcu $AVR_CFLAGS "$@" -c "$src" -o "$base.o" > "$log" 2>&1 || fail
-    avr-gcc -mmcu=$mcu -Wl,--gc-sections -Wl,-Map,"$base.map" -o "$out" "$base.o" "${objs[@]}" \
+    avr-gcc -mmcu=$mcu -mrelax -Wl,--gc-sections -Wl,-Map,"$base.map" -o "$out" "$base.o" "${objs[@]}" \
       $X/obj/plat_avr.o $X/librast8.a >> "$log" 2>&1 || {
         grep -Eq 'overflowed|will not fit|not within region' "$log" && skip "$(grep -Eo '(region|will not fit|section).*' "$log" | head -1) (statics exceed the $mcu's $ram B SRAM or $flash B flash)"; fail; }
     read -r text data bss < <(avr-size "$out" | awk 'NR==2 {print $1, $2, $3}')

@@ -19,15 +19,17 @@ void r8_pose_identity(r8_pose *p)
 static void normal_of(const r8_objx *o, r8_u16 f, r8_vec3 *n)
 {
     const r8_s16 *p = o->normals + 3u * f;
-    if (o->nflash) {
-        n->x = R8_RDS16(p);
-        n->y = R8_RDS16(p + 1);
-        n->z = R8_RDS16(p + 2);
-    } else {
+#ifndef R8_NO_RT_NORMALS    /* (without: the mesh's, R8_FLASH data) */
+    if (!o->nflash) {
         n->x = p[0];
         n->y = p[1];
         n->z = p[2];
+        return;
     }
+#endif
+    n->x = R8_RDS16(p);
+    n->y = R8_RDS16(p + 1);
+    n->z = R8_RDS16(p + 2);
 }
 
 /* Front iff n . (eye - v0) > 0 in model space (eye in 1/16 units), v0

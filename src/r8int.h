@@ -26,6 +26,47 @@ typedef r8_u16 r8_fid;
 #define R8_FID_END 0xFFFFu
 #endif
 
+/* A method or shading left out (r8config.h) is refused by cfg_valid, so
+ * these tests fold to 0 and the code behind them drops out: R8_DEPTH, a
+ * method with depth memory and vertex depth (z-buffers, blocks,
+ * S-buffer).  R8_W_* (0 or 1) guard statements with #if (cc65 calls an
+ * if (0) unreachable code).  A sizing build (R8_PLAN_ONLY) plans every
+ * method. */
+#if defined(R8_NO_PAINTER) && !defined(R8_PLAN_ONLY)
+#define R8_PAINTER(m) 0
+#define R8_W_PAINTER 0
+#else
+#define R8_PAINTER(m) ((m) == R8_VIS_PAINTER)
+#define R8_W_PAINTER 1
+#endif
+#if defined(R8_NO_SBUF) && !defined(R8_PLAN_ONLY)
+#define R8_SBUF(m) 0
+#define R8_W_SBUF 0
+#else
+#define R8_SBUF(m) ((m) == R8_VIS_SBUF)
+#define R8_W_SBUF 1
+#endif
+#if defined(R8_NO_ZBUF) && defined(R8_NO_BLOCK) && defined(R8_NO_SBUF) && !defined(R8_PLAN_ONLY)
+#define R8_DEPTH(m) 0
+#define R8_W_DEPTH 0
+#else
+#define R8_DEPTH(m) ((m) >= R8_VIS_Z8)
+#define R8_W_DEPTH 1
+#endif
+#if defined(R8_NO_GOURAUD) && !defined(R8_PLAN_ONLY)
+#define R8_GOURAUD(s) 0
+#define R8_W_GOURAUD 0
+#else
+#define R8_GOURAUD(s) ((s) == R8_SHADE_GOURAUD)
+#define R8_W_GOURAUD 1
+#endif
+/* st->vsh: 2 r8_s16 per screen vertex, or 4 with depth or shade */
+#if R8_W_DEPTH || R8_W_GOURAUD
+#define R8_VSH(st) ((st)->vsh)
+#else
+#define R8_VSH(st) 1
+#endif
+
 /* Screen vertex array: 2 r8_s16 (x, y in 12.4) per vertex, or 4 (x, y,
  * depth, shade) for the depth methods and Gouraud.  x == R8_VX_CLIP
  * marks a vertex behind the near plane or outside the guard band: its

@@ -239,14 +239,18 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    pl->vsh = (r8_u8)(cfg->method >= R8_VIS_Z8 || cfg->shading == R8_SHADE_GOURAUD ? 2 : 1);
+    pl->vsh = (r8_u8)(R8_DEPTH(cfg->method) || R8_GOURAUD(cfg->shading) ? 2 : 1);
     pl->fast = (r8_u8)(pl->vsh == 1);
     pl->nbands = (r8_u16)(((unsigned)cfg->height + (unsigned)cfg->band - 1u) / (unsigned)cfg->band);
-    pl->nheads = cfg->method == R8_VIS_PAINTER ? R8_JEFF_BUCKETS : pl->nbands;
+    pl->nheads = R8_PAINTER(cfg->method) ? R8_JEFF_BUCKETS : pl->nbands;
     /* a clipped polygon adds at most 5 intersections */
     pl->sv_cap = (r8_u16)(nv + 5u * cfg->clip);
     nid = nf + cfg->clip;
+#ifdef R8_NO_POOL
+    pl->npool = 0;                  /* cfg->pool is taken as 0 */
+#else
     pl->npool = cfg->pool;
+#endif
     if (pl->npool > (nf + 1u) / 2u)
         pl->npool = (r8_u8)((nf + 1u) / 2u);
     if (pl->npool > R8_POOL_MAX)
@@ -255,8 +259,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
     pl->vnorm = o;
+#if R8_W_GOURAUD
     if (cfg->shading == R8_SHADE_GOURAUD)
         o += align_up(6u * nv);
+#endif
     pl->norms = o; o += align_up(6u * nn);
     pl->next = o; o += align_up(sizeof(r8_fid) * nid);
     pl->heads = o;                  /* band buckets live through the frame */
@@ -266,7 +272,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (pl->npool)
         o += align_up(nid);
     pl->ftop = o;         /* painter's with a pool: each face's first band */
-    if (pl->npool && cfg->method == R8_VIS_PAINTER)
+    if (pl->npool && R8_PAINTER(cfg->method))
         o += align_up(nid);
     pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
     /* One region for memory that is never live at the same time: the
@@ -280,20 +286,32 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (cfg->clip)
         frame_t = align_up(R8_CLIP_BYTES);
 #endif
+#if R8_W_PAINTER
     if (cfg->method == R8_VIS_PAINTER) {
         /* depth buckets: only while the frame is set up */
         pl->heads = o;
         pl->clipbuf = o + align_up(sizeof(r8_fid) * pl->nheads);
         frame_t += align_up(sizeof(r8_fid) * pl->nheads);
     }
+#endif
     pl->tmp = o;
     pl->pool = o + pl->esize;
     pl->depth = pl->pool + pl->esize * pl->npool;
-    pl->snode = pl->depth + align_up(r8_vis_depth_bytes(cfg));
-    pl->shead = pl->snode + align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
+    pl->snode = pl->depth;
+#if R8_W_DEPTH
+    if (cfg->method >= R8_VIS_Z8)
+        pl->snode += align_up(r8_vis_depth_bytes(cfg));
+#endif
+    pl->shead = pl->snode;
+#if R8_W_SBUF
+    if (cfg->method == R8_VIS_SBUF)
+        pl->shead += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
+#endif
     band_t = pl->shead - o;
+#if R8_W_SBUF
     if (cfg->method == R8_VIS_SBUF)
         band_t += align_up(2u * (unsigned)cfg->band);
+#endif
     o += frame_t > band_t ? frame_t : band_t;
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
@@ -410,7 +428,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
     st->next = (r8_fid *)(void *)(base + pl.next);
     st->slot = pl.npool ? base + pl.slot : 0;
-    st->ftop = pl.npool && cfg->method == R8_VIS_PAINTER ? base + pl.ftop : 0;
+    st->ftop = pl.npool && R8_PAINTER(cfg->method) ? base + pl.ftop : 0;
     st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
     st->nclip = cfg->clip;
     st->heads = (r8_fid *)(void *)(base + pl.heads);
@@ -420,15 +438,19 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->esize = pl.esize;
     st->npool = pl.npool;
     st->depth = base + pl.depth;
-    st->depth_bytes = r8_vis_depth_bytes(cfg);
+    st->depth_bytes = R8_DEPTH(cfg->method) ? r8_vis_depth_bytes(cfg) : 0;
     st->snode = (r8_snode *)(void *)(base + pl.snode);
-    st->nsnode = r8_vis_sbuf_nodes(cfg);
+    st->nsnode = R8_SBUF(cfg->method) ? r8_vis_sbuf_nodes(cfg) : 0;
     st->shead = (r8_u16 *)(void *)(base + pl.shead);
     st->attrs = 0;
+#if R8_W_DEPTH
     if (cfg->method >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;
+#endif
+#if R8_W_GOURAUD
     if (cfg->shading == R8_SHADE_GOURAUD)
         st->attrs |= R8_ATTR_S;
+#endif
     st->first = (r8_fid)R8_FID_END;
     st->npoly = 0;
     st->dropped = 0;
@@ -448,6 +470,10 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         vb = (r8_u16)(vb + me->nverts);
         fb = (r8_u16)(fb + me->nfaces);
         o->hidden = 1;      /* until the first r8_render_frame */
+#ifdef R8_NO_RT_NORMALS
+        o->normals = me->normals;   /* every mesh has them (cfg_valid) */
+        o->nflash = R8_HAVE_PROGMEM;
+#else
         if (me->normals) {
             o->normals = me->normals;
             o->nflash = R8_HAVE_PROGMEM;
@@ -458,14 +484,13 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
             for (j = 0; j < i; j++)
                 if (sc->objects[j].mesh == me)
                     o->normals = st->obj[j].normals;
-#ifndef R8_NO_RT_NORMALS
             if (!o->normals) {
                 r8_mesh_normals(me, norms);
                 o->normals = norms;
                 norms += 3u * me->nfaces;
             }
-#endif
         }
+#endif
 #ifndef R8_NO_GOURAUD
         if (cfg->shading == R8_SHADE_GOURAUD)
             vertex_normals(st, me, o);
@@ -521,7 +546,7 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
 {
     r8_u8 i;
     for (i = 0; i < n; i++)
-        vp[i] = st->sv + ((unsigned)idx[i] << st->vsh);
+        vp[i] = st->sv + ((unsigned)idx[i] << R8_VSH(st));
 }
 
 /* Painter's key of a polygon whose camera-space z summed over its n
@@ -599,12 +624,12 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = st->method == R8_VIS_PAINTER;
+    int painter = R8_PAINTER(st->method);
     const r8_object *ob = &sc->objects[i];
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
-    const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
-    r8_u8 vsh = st->vsh, normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
+    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
     r8_u16 f;
     if (o->hidden)
         return;
@@ -672,8 +697,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         }
         st->next[id] = st->heads[key];
         st->heads[key] = id;
+#ifndef R8_NO_POOL
         if (st->slot)
             st->slot[id] = R8_NO_SLOT;
+#endif
         st->npoly++;
     }
 }
@@ -682,7 +709,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = st->method == R8_VIS_PAINTER;
+    int painter = R8_PAINTER(st->method);
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
@@ -717,12 +744,14 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     st->first = cur;
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
+#ifndef R8_NO_POOL
     st->pool_free = st->npool ? 0 : R8_NO_SLOT;
     for (k = 0; k < st->npool; k++) {
         r8_acthead *e = (r8_acthead *)(void *)ENTRY(st, k);
         e->used = 0;
         e->level = (r8_u8)(k + 1u < st->npool ? k + 1u : R8_NO_SLOT);
     }
+#endif
 }
 
 /* ---- per band ---- */
@@ -744,8 +773,8 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
     {
         const r8_objx *o = &st->obj[i];
         const r8_face *fc = &sc->objects[i].mesh->faces[g - o->fbase];
-        const r8_s16 *base = st->sv + ((unsigned)o->vbase << st->vsh);
-        r8_u8 vsh = st->vsh;
+        const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
+        r8_u8 vsh = R8_VSH(st);
         n = R8_RDU8(&fc->n);
         if (vsh == 1) {                 /* no run-time multiply */
             for (j = 0; j < n; j++)
@@ -806,20 +835,28 @@ static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_s
 static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 {
     r8_acthead *e;
+#ifndef R8_NO_POOL
     r8_u8 k = st->slot ? st->slot[g] : R8_NO_SLOT;
+#endif
     r8_scanx *c;
     int done;
+#ifndef R8_NO_POOL
     if (k != R8_NO_SLOT) {
         e = (r8_acthead *)(void *)ENTRY(st, k);
-    } else {
+    } else
+#endif
+    {
         r8_u8 n, oi;
         /* a pool entry if one is free (kept if the face goes on below
          * this band), else the one-off entry */
         e = (r8_acthead *)(void *)st->tmp;
+#ifndef R8_NO_POOL
         k = st->pool_free;
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
+#endif
         n = face_setup(st, g, e->c.vp, &oi);
+#if R8_W_PAINTER
         if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
             /* (with ftop, r8_render_band has already skipped the faces
              * that start lower down) */
@@ -828,14 +865,17 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
             if (top >= y1)
                 return 2;          /* starts lower down */
         }
+#endif
         if (!r8_scanx_begin(&e->c, n, y0))
             return 1;              /* nothing from this band on */
+#ifndef R8_NO_POOL
         if (k != R8_NO_SLOT) {
             st->pool_free = e->level;       /* off the free list */
             e->used = 1;
             st->slot[g] = k;
             st->pool_used++;
         }
+#endif
         e->level = face_level(st, g, oi);
 #ifndef R8_FAST_ONLY
         if (!st->fast) {
@@ -862,6 +902,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 #endif
         r8_scanx_fill(c, y1, st->judd, fb, e->level);
     done = c->y >= c->ybot || c->backface;
+#ifndef R8_NO_POOL
     if (done && k != R8_NO_SLOT) {
         e->used = 0;
         e->level = st->pool_free;           /* back on the free list */
@@ -869,6 +910,7 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         st->slot[g] = R8_NO_SLOT;
         st->pool_used--;
     }
+#endif
     return done;
 }
 
@@ -880,11 +922,14 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
-    if (st->depth_bytes) {
+#if R8_W_DEPTH
+    if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
         memset(st->depth, 0, st->depth_bytes);
         if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
             memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
     }
+#endif
+#if R8_W_SBUF
     if (st->method == R8_VIS_SBUF) {
         /* the row lists share memory with the frame set-up: start empty */
         r8_s16 k;
@@ -892,6 +937,8 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             st->shead[k] = 0xFFFFu;
         st->sused = 0;
     }
+#endif
+#if R8_W_PAINTER
     if (st->method == R8_VIS_PAINTER) {
         r8_u16 b = band_of(st, y0, r->cfg.band);
         r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
@@ -905,7 +952,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             else
                 link = &st->next[g];
         }
-    } else {
+    } else
+#endif
+    {
         /* merge the faces going on from above (st->first) with the band's
          * bucket, both in scene order; those that go on form the next
          * band's list */
@@ -928,8 +977,10 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     }
     st->first = head;
 #ifndef R8_NO_SBUF
+#if R8_W_SBUF
     if (st->method == R8_VIS_SBUF)
         r8_vis_sbuf_flush(st, fb);
+#endif
 #endif
 }
 

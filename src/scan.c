@@ -51,7 +51,11 @@ static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
  * set-up) leaves.  Returns y0.  For edges over 2047 pixels tall (only
  * direct callers reach them: the renderer's guard band keeps edges under
  * 1800) coordinates are halved: a column can then be off by one where
- * the edge passes within 1/8 pixel of a centre (tests/host/test_stability.c). */
+ * the edge passes within 1/8 pixel of a centre (tests/host/test_stability.c).
+ * R8_SCAN_GUARDED (ports/fw_trim.c: scan.c built into a firmware for its
+ * renderer alone): every vertex lies inside the guard band (|x - cx|,
+ * |y - cy| <= 900 px, proj.c), so |dx| and dy stay under 1800 px and
+ * neither the halved units nor the 32-bit division is built. */
 static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s16 by)
 {
     r8_s32 dx = (r8_s32)bx - ax, dy = (r8_s32)by - ay, p;
@@ -61,6 +65,7 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
     r8_u32 u, d16, udx;
     r8_u16 den, qd, rd;
     r8_u8 pl;
+#ifndef R8_SCAN_GUARDED
     if (dy > 32767) {
         dx = r8_asr32(dx, 1);
         dy = (dy + 1) >> 1;
@@ -76,10 +81,15 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
         it->err = (r8_u16)(((r8_u32)(p + (r8_s32)d16 - 1 - (r8_s32)it->val * (r8_s32)d16)) >> 3);
         return y0;
     }
+#endif
     den = (r8_u16)dy;
     /* dx = qd dy + rd, 0 <= rd < dy (floor division) */
     if (dx >= 0) {
         udx = (r8_u32)dx;
+#ifdef R8_SCAN_GUARDED
+        qd = (r8_u16)((r8_u16)udx / den);
+        rd = (r8_u16)((r8_u16)udx % den);
+#else
         if (udx < 0x10000UL) {
             qd = (r8_u16)((r8_u16)udx / den);
             rd = (r8_u16)((r8_u16)udx % den);
@@ -87,9 +97,14 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
             qd = (r8_u16)(udx / den);
             rd = (r8_u16)(udx % den);
         }
+#endif
         it->q = (r8_s16)qd;
     } else {
         udx = (r8_u32)(-(dx + 1));               /* -dx - 1 >= 0 */
+#ifdef R8_SCAN_GUARDED
+        qd = (r8_u16)((r8_u16)udx / den);
+        rd = (r8_u16)((r8_u16)udx % den);
+#else
         if (udx < 0x10000UL) {
             qd = (r8_u16)((r8_u16)udx / den);
             rd = (r8_u16)((r8_u16)udx % den);
@@ -97,6 +112,7 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
             qd = (r8_u16)(udx / den);
             rd = (r8_u16)(udx % den);
         }
+#endif
         it->q = (r8_s16)(-(r8_s16)qd - 1);
         rd = (r8_u16)(den - 1u - rd);
     }

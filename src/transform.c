@@ -22,13 +22,16 @@ static r8_s32 mulq(r8_s16 a, r8_s32 b)
 static void rot_offset(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int transpose)
 {
     r8_s32 *o = &out->x;
-    r8_u8 i;
+    r8_u8 i, j, row = 3, col = 1;     /* one loop for both: less flash */
+    if (transpose) {
+        row = 1;
+        col = 3;
+    }
     for (i = 0; i < 3; i++) {
-        r8_s32 s;
-        if (transpose)
-            s = mulq(m->m[i], d[0]) + mulq(m->m[3 + i], d[1]) + mulq(m->m[6 + i], d[2]);
-        else
-            s = mulq(m->m[i * 3], d[0]) + mulq(m->m[i * 3 + 1], d[1]) + mulq(m->m[i * 3 + 2], d[2]);
+        const r8_s16 *e = m->m + i * row;
+        r8_s32 s = 0;
+        for (j = 0; j < 3; j++, e += col)
+            s += mulq(*e, d[j]);
         o[i] = r8_asr32(s + 512, 10);
     }
 }
@@ -64,31 +67,33 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];
         r8_objx *o = &st->obj[i];
-        r8_s32 d[3];
+        r8_s32 d[3], *ot = &o->t.x, *oe = &o->eye.x;
+        const r8_s16 *pp = &ob->pose.x, *cp = &cam->x;
+        r8_u8 k;
         o->hidden = (r8_u8)(ob->pose.flags & R8_POSE_HIDDEN);
         if ((ob->pose.flags & R8_POSE_MATRIX) && ob->pose.m)
             r = *ob->pose.m;
         else
             r8_mat_rotate(&r, ob->pose.ax, ob->pose.ay, ob->pose.az);
-        d[0] = (r8_s32)ob->pose.x - cam->x;
-        d[1] = (r8_s32)ob->pose.y - cam->y;
-        d[2] = (r8_s32)ob->pose.z - cam->z;
+        /* (x, y, z one after another, as rot_offset takes them: loops
+         * are less flash than three copies of 32-bit code) */
+        for (k = 0; k < 3; k++)
+            d[k] = (r8_s32)pp[k] - cp[k];
         if (turned) {
             r8_mat_mul(&c, &r, &o->m);
             rot_offset(&c, d, &o->t, 0);
         } else {
             o->m = r;
-            o->t.x = d[0] * R8_CSCALE;
-            o->t.y = d[1] * R8_CSCALE;
-            o->t.z = d[2] * R8_CSCALE;
+            for (k = 0; k < 3; k++)
+                ot[k] = d[k] * R8_CSCALE;
         }
-        d[0] = -d[0];
-        d[1] = -d[1];
-        d[2] = -d[2];
+        for (k = 0; k < 3; k++)
+            d[k] = -d[k];
         rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
-        o->eye16 = (r8_u8)((r8_u32)(o->eye.x + 16383) <= 32766UL &&
-                           (r8_u32)(o->eye.y + 16383) <= 32766UL &&
-                           (r8_u32)(o->eye.z + 16383) <= 32766UL);
+        o->eye16 = 1;
+        for (k = 0; k < 3; k++)
+            if ((r8_u32)(oe[k] + 16383) > 32766UL)
+                o->eye16 = 0;
         if (st->shading != R8_SHADE_FLAT)
             r8_mat_apply_t14(&r, &sc->light, &o->light);
     }
@@ -98,10 +103,13 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
         zf = zn + (zn >> 3) + 16;      /* keeps 1 - zn/zf >= 1/9 */
     st->zn16 = zn;
     st->zf16 = zf;
+#if R8_W_PAINTER
     if (st->method == R8_VIS_PAINTER) {
         st->kmul = (r8_u32)r8_muldiv(R8_JEFF_BUCKETS, 1L << 16, zf - zn);
         st->kmul3 = st->kmul / 3u;
     }
+#endif
+#if R8_W_DEPTH
     if (!(st->attrs & R8_ATTR_D))
         return;                        /* no vertex depth this frame */
     /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
@@ -117,6 +125,7 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
     st->znm = (r8_s16)zn;     /* znear = znm * 2^zne */
     st->wf = (r8_u32)r8_muldiv(st->zn16, 1L << 20, zf);
     st->gh = (r8_u32)r8_muldiv(32767L, 1L << 16, (r8_s32)((1L << 20) - (r8_s32)st->wf));
+#endif
 }
 
 r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
@@ -171,7 +180,7 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
     r8_s16 *out = st->sv + 2u * g;      /* vsh 1: 2 entries a vertex */
     r8_s8 e;
     r8_u16 m;
-    if (st->vsh != 1)                   /* (no run-time multiply) */
+    if (R8_VSH(st) != 1)                /* (no run-time multiply) */
         out += 2u * g;
     if (c->z < st->zn16) {
         out[0] = R8_VX_CLIP;
@@ -181,8 +190,10 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
         out[0] = R8_VX_CLIP;
         return;
     }
+#if R8_W_DEPTH || R8_W_GOURAUD
     if (st->vsh == 2)
         out[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
+#endif
 }
 
 /* Model vertex mv (flash) of object o to screen vertex g. */
@@ -191,6 +202,7 @@ void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
     r8_vec3l c;
     r8k_xform(&o->m, &o->t, mv, &c);
     r8_tf_camera(&c, st, g);
+#if R8_W_GOURAUD
     if (st->attrs & R8_ATTR_S) {
         r8_vec3 n;
         const r8_s16 *vn = st->vnorm + 3u * g;
@@ -199,6 +211,7 @@ void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
         n.z = vn[2];
         st->sv[((unsigned)g << 2) + 3u] = r8_tf_shade(st, &n, &o->light, 16);
     }
+#endif
 }
 
 /* Every vertex of every shown object, or (lazy) only marked R8_VX_TODO:
@@ -206,7 +219,7 @@ void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
 void r8_tf_vertices(r8_state *st, int lazy)
 {
     const r8_scene *sc = st->scene;
-    r8_u8 i, vsh = st->vsh;
+    r8_u8 i, vsh = R8_VSH(st);
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         const r8_objx *o = &st->obj[i];
