@@ -478,7 +478,8 @@ MICRO = [("span", 10, "r8_fb_span_dither, PAGE1, 120-px rows", "pixel"),
          ("edges", 14, "r8_scan_next, depth + shade attributes", "row (both edges)"),
          ("vert", 16, "r8_mat_apply + 3 r8_asr14 + r8_project", "vertex"),
          ("crc", 18, "r8_crc16_update", "byte"),
-         ("rle", 20, "r8_rle_encode", "byte")]
+         ("rle", 20, "r8_rle_encode", "byte"),
+         ("crc32", 22, "r8_crc32_update (R8_WIRE_CRC32's frame check)", "byte")]
 
 
 def micro():

@@ -9,6 +9,8 @@
  *   vert   r8_mat_apply16 + r8_project, 64 vertices            (vertices)
  *   crc    r8_crc16_update over 1024 bytes                     (bytes)
  *   rle    r8_rle_encode of a 1024-byte rendered-like frame    (bytes)
+ *   crc32  r8_crc32_update over 1024 bytes (the protocol-version-2 frame
+ *          check, R8_WIRE_CRC32)                               (bytes)
  */
 #include "plat.h"
 #include "r8fb.h"
@@ -113,6 +115,11 @@ int main(void)
     r8_rle_encode(buf, sizeof buf, out, sizeof out, &len);
     plat_mark(21);
     put_u("rle bytes=", sizeof buf);
+
+    plat_mark(22);
+    sink = (r8_u16)r8_crc32_update(0, buf, sizeof buf);
+    plat_mark(23);
+    put_u("crc32 bytes=", sizeof buf);
     plat_exit(0);
     return 0;
 }

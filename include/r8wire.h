@@ -32,6 +32,12 @@
  * polynomial is the packet CRC's and so misses every error the packet
  * CRC misses in a band's literal bytes.  Decoders accept both. */
 #define R8_WIRE_VERSION2 2
+/* The encoder (r8_tx) sends version 1 unless the library is built with
+ * R8_WIRE_CRC32: then version 2, its frame CRC-32 computed over every
+ * band's raw bytes as r8_tx_band sees them (a cost per raw byte:
+ * docs/protocol.md section 4.1 gives it per CPU).  Both ends of a link
+ * must then be built the same way only on the device side: every
+ * decoder reads both versions. */
 
 #define R8_PKT_FRAME_START 0x01
 #define R8_PKT_BAND 0x02
@@ -142,6 +148,9 @@ typedef struct r8_tx {
     r8_u16 since_full;       /* frames since the last full frame */
     r8_u16 sent;             /* bands sent in this frame */
     r8_u16 fcrc;             /* running CRC of the raw frame */
+#ifdef R8_WIRE_CRC32
+    r8_u32 fcrc32;           /* version 2: running CRC-32 of the raw frame */
+#endif
     r8_u16 hcrc;             /* CRC of this frame's BAND header bytes 0..2 */
     r8_u8 full;              /* this frame is full */
     r8_u8 want_full;         /* a full frame was requested / is due */

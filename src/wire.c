@@ -304,7 +304,12 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     tx->next_idx = 0;
     tx->in_frame = 1;
     p[0] = R8_PKT_FRAME_START;
+#ifdef R8_WIRE_CRC32
+    tx->fcrc32 = 0;
+    p[1] = R8_WIRE_VERSION2;
+#else
     p[1] = R8_WIRE_VERSION;
+#endif
     put16(p + 2, frame);
     /* the CRC of the first 3 bytes of this frame's BAND packets:
      * R8_PKT_BAND (0xC1B2 from 0xFFFF) and the frame number */
@@ -566,6 +571,9 @@ int r8_tx_band(register r8_tx *tx, const r8_fb *band)
         xn = r8_crc16_xpow(n);
     }
     tx->raw_bytes += n;
+#ifdef R8_WIRE_CRC32
+    tx->fcrc32 = r8_crc32_update(tx->fcrc32, band->buf, n);
+#endif
     fp = tx->fp + 4u * idx;
     /* a band of zeros (blank screen): its fingerprint is 0, its CRC from
      * 0 is 0; unchanged in a delta frame, it costs nothing more */
@@ -590,8 +598,14 @@ int r8_tx_frame_end(r8_tx *tx)
     p[0] = R8_PKT_FRAME_END;
     put16(p + 1, tx->frame);
     put16(p + 3, tx->sent);
+#ifdef R8_WIRE_CRC32
+    put16(p + 5, (unsigned)(tx->fcrc32 >> 16));
+    put16(p + 7, (unsigned)(tx->fcrc32 & 0xFFFFu));
+    tx_send(tx, &s, R8_WIRE_END2_BYTES, 1);
+#else
     put16(p + 5, tx->fcrc);
     tx_send(tx, &s, R8_WIRE_END_BYTES, 1);
+#endif
     tx->in_frame = 0;
     return R8_OK;
 }
