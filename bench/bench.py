@@ -2,9 +2,11 @@
 """bench.py - `make bench`: the firmware on every target, every built-in
 scene x visibility method, measured in the simulators.
 
-Writes build/bench/results.json (one record per target x scene x method)
-and docs/benchmarks.md (the same data as tables).  Benchmarks measure;
-nothing here asserts a timing.
+Writes build/bench/results.json (one record per target x scene x method,
+and on the ATmega1284P per shading for the chart's scenes) and
+build/bench/results.md (the same data as tables, with issue 10's targets);
+`make docs` copies the tables to docs/bench-results.md.  Benchmarks
+measure; nothing here asserts a timing.
 
 Method (frames N..2N-1 everywhere, N = 2, so the first full frame and
 the start-up are excluded the same way on every target):
@@ -49,6 +51,9 @@ FRAMES = 2 * N
 CLOCK = {"avr1284": 16000000, "avr328": 16000000, "6502": 985248, "z80": 3500000}
 CPU = {"avr1284": "ATmega1284P", "avr328": "ATmega328P", "6502": "6502", "z80": "Z80"}
 TARGETS = ["avr328", "avr1284", "6502", "z80"]
+SHADINGS = ["flat", "lambert", "gouraud"]   # R8_SHADE_* order
+# every shading of these (the speed-accuracy chart's scenes), on the 1284P
+SHADE_SCENES = ["cube", "torus", "teapot", "cross", "wall"]
 W, H, FMT = 128, 64, "PAGE1"
 
 
@@ -88,14 +93,15 @@ def frames_from(info, key="compute"):
     return sel
 
 
-def measure(t, s, m, need, host_streams):
+def measure(t, s, m, need, host_streams, sh=1):
     rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
+           "shading": SHADINGS[sh],
            "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
            "cycles_per_frame": None, "cycles_exact": None, "host_instructions_per_frame": None,
            "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
            "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
            "fps_compute": None, "identical_to_host": None, "skipped": None}
-    path = idt.fw_path(t, s, m, FRAMES)
+    path = idt.fw_path(t, s, m, FRAMES, sh)
     if not os.path.exists(path):
         rec["skipped"] = "not built"
         return rec
@@ -171,6 +177,14 @@ def measure(t, s, m, need, host_streams):
                 rec["stack_peak_bytes"] = int(mm.group(1))
             rec["identical_to_host"] = (res[FRAMES][2] == 0 and res[FRAMES][1] == ref4 and
                                         (N not in res or res[N][1] == ref2))
+            # where the cycles go: emu/prof65 (sim65's CPU, the same totals)
+            with tempfile.TemporaryDirectory() as td:
+                prof = os.path.join(td, "prof.txt")
+                run([os.path.join(ROOT, "build", "emu", "prof65"), "-q", "-o", os.devnull,
+                     "-m", os.devnull, "-F", str(N), "-P", prof, path], timeout=600)
+                ptext = open(prof).read() if os.path.exists(prof) else ""
+            if ptext:
+                split_profile(rec, prof65_rows(ptext))
     wire = (len(ref4) - len(ref2)) / float(N)
     rec["wire_bytes_per_frame"] = round(wire, 1)
     if wire > 0:
@@ -181,7 +195,54 @@ def measure(t, s, m, need, host_streams):
     return rec
 
 
+# The 6502 port's assembly and link step, measured by bench/kern6502.py
+# (the cube / cull firmware rebuilt without each piece; it rebuilds
+# build/x/6502, so it is not run from here).
+SECTION_6502 = [
+    "## The 6502 port: what each piece buys (cube / cull)",
+    "",
+    "`python3 bench/kern6502.py` (measured on branch p6502, issue 10): sim65 cycles per "
+    "frame (4-frame run minus 2-frame run, over 2) and image size of the cube / cull firmware "
+    "with one piece left out.  Every variant's stream equals the host's.",
+    "",
+    "| 6502 cube / cull | cycles/frame | vs the build | flash | RAM static |",
+    "|---|---:|---:|---:|---:|",
+    "| all kernels, gc65 (the build) | 484,005 | +0 | 46,610 | 4,636 |",
+    "| without r8k_trap (R8_ASM_TRAP, trap_6502.s) | 808,283 | +324,278 | 47,177 | 4,634 |",
+    "| without the wire kernels (R8_ASM_WIRE, wire_6502.s) | 771,908 | +287,903 | 46,542 | 4,139 |",
+    "| without r8k_project (R8_ASM_PROJECT, proj_6502.s) | 516,572 | +32,567 | 46,412 | 4,648 |",
+    "| without r8k_xform (R8_ASM_XFORM, xform_6502.s) | 507,657 | +23,652 | 46,907 | 4,644 |",
+    "| without cc65's runtime multiplies replaced (rtmul_6502.s) | 504,493 | +20,488 | 46,321 | 4,636 |",
+    "| without r8_mul16 (R8_ASM_MUL16, mul16_6502.s) | 496,886 | +12,881 | 46,832 | 4,640 |",
+    "| without gc65 (whole objects linked) | 483,905 | -100 | 54,258 | 4,785 |",
+    "| none of it (the C, cc65's runtime, whole objects) | 1,383,316 | +899,311 | 51,732 | 2,217 |",
+    "",
+    "* The multiplies (ports/6502/mul_6502.s) are quarter squares: four 512-entry tables "
+    "(2 KB) and the CRC table (512 B) are built in RAM before main (R8PAGE in "
+    "ports/6502/rast8.cfg: RAM static above includes them, the image does not).",
+    "* ports/6502/gc65.py drops every function and data item nothing reaches from `main` "
+    "(cc65 links whole object files), on every 6502 program.",
+    "* emu/prof65 runs the same .prg as sim65 (same cycle totals, tests/targets/prof65_check.py) "
+    "and gives cycles per function (`-P`), per instruction (`-H`, with ld65's debug file; "
+    "`emu/prof65_lines.py` sums them per C line) and coverage (`-C`).",
+    "",
+]
+
 WIRE_FN = re.compile(r"crc|rle|cobs|tx_|put_raw|^out$|plat_|codec|lz77|raw_copy")
+
+
+def prof65_rows(ptext):
+    """6502: emu/prof65 -P as avrsim's "cycles pct name" rows: each C
+    function with the runtime helpers (and assembly labels) it calls, so
+    the rows add up to the frames' cycles."""
+    rows = []
+    for line in ptext.splitlines():
+        f = line.split()
+        if line.startswith("#") or len(f) != 7 or not f[6].startswith("_"):
+            continue
+        rows.append((int(f[2]), f[6][1:]))
+    rows.sort(key=lambda r: -r[0])
+    return "\n".join("%d - %s" % r for r in rows)
 
 
 def split_profile(rec, ptext):
@@ -219,9 +280,11 @@ def fmt(v, nd=0):
 
 def write_md(recs, host, elapsed):
     L = []
-    L.append("# Benchmarks (generated by `make bench`, bench/bench.py)")
+    L.append("# Benchmark results (generated by `make bench`, bench/bench.py)")
     L.append("")
-    L.append("Do not edit: regenerated from `build/bench/results.json`.  %s; commit %s; "
+    L.append("Do not edit: `make bench` writes build/bench/results.md from "
+             "`build/bench/results.json` and `make docs` copies it here (docs/benchmarks.md "
+             "explains the figures).  %s; commit %s; "
              "run took %.0f s." % (time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
                                   git_rev(), elapsed))
     L.append("")
@@ -242,16 +305,18 @@ def write_md(recs, host, elapsed):
              "**link fps** = baud / 10 / wire bytes per frame (8N1).")
     L.append("* **RAM static** = .data + .bss including the firmware's arena (`app_ram()` bytes: "
              "renderer work memory + one band + encoder scratch); **stack** = measured high-water "
-             "mark (free RAM painted with 0xA5); **flash** = code + constant data (on AVR and Z80 "
-             "the constant data also sits in RAM: the library has no PROGMEM path).")
+             "mark (free RAM painted with 0xA5); **flash** = code + constant data (tables and "
+             "meshes are R8_FLASH: program memory on AVR, read with `pgm_read_*`).")
     L.append("* **same** = the target's UART stream is byte-identical to the host build's.")
     L.append("")
-    # headline
+    lam = [r for r in recs if r["shading"] == "lambert"]
+    L.extend(targets_md(lam))
+    L.extend(shadings_md(recs))
     L.append("## Headline")
     L.append("")
     L.append("| target | scene | method | cycles/frame | of which render / wire | ms | compute fps | RAM static+stack | flash | same |")
     L.append("|---|---|---|---:|---:|---:|---:|---:|---:|---|")
-    for r in recs:
+    for r in lam:
         if r["scene"] in ("cube", "torus") and r["target"] in ("avr1284", "avr328", "6502", "z80"):
             if r["cycles_per_frame"] is None and r["target"] != "avr328":
                 continue
@@ -272,7 +337,7 @@ def write_md(recs, host, elapsed):
     L.append("*render / wire*: AVR cycles per function (emu/avrsim -P), split into the renderer "
              "and the wire encoder (CRC-16, RLE, COBS, packets, UART writes).")
     L.append("")
-    prof = [r for r in recs if r["target"] == "avr1284" and r.get("profile_top")
+    prof = [r for r in lam if r["target"] == "avr1284" and r.get("profile_top")
             and r["scene"] in ("cube", "torus") and r["method"] in ("cull", "zbuf16", "block")]
     if prof:
         L.append("## Where the AVR cycles go (ATmega1284P, cycles per frame, top functions)")
@@ -281,6 +346,17 @@ def write_md(recs, host, elapsed):
             L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
                      ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
         L.append("")
+    prof = [r for r in recs if r["target"] == "6502" and r.get("profile_top")
+            and r["scene"] in ("cube", "torus") and r["method"] in ("cull", "painter", "zbuf16")]
+    if prof:
+        L.append("## Where the 6502 cycles go (emu/prof65, cycles per frame, top C functions "
+                 "with the runtime helpers they call)")
+        L.append("")
+        for r in prof:
+            L.append("* **%s / %s** (%s cycles): %s" % (r["scene"], r["method"], fmt(r["cycles_per_frame"]),
+                     ", ".join("`%s` %s" % (n, fmt(c)) for n, c in r["profile_top"])))
+        L.append("")
+        L.extend(SECTION_6502)
     mic = micro()
     if mic:
         with open(os.path.join(ROOT, "build", "bench", "micro.json"), "w") as f:
@@ -314,7 +390,7 @@ def write_md(recs, host, elapsed):
         "through `rast8 stats`).",
         ""])
     for t in TARGETS:
-        rs = [r for r in recs if r["target"] == t]
+        rs = [r for r in lam if r["target"] == t]
         L.append("## %s (%s)" % (CPU[t], t))
         L.append("")
         L.append("| scene | method | cycles/frame | host Ir/frame | compute fps | wire B/frame | "
@@ -329,9 +405,71 @@ def write_md(recs, host, elapsed):
                 fmt(r["flash_bytes"]), fmt(r["identical_to_host"]),
                 (r["skipped"] or "").replace("|", "/")[:110]))
         L.append("")
-    os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
-    with open(os.path.join(ROOT, "docs", "benchmarks.md"), "w") as f:
+    with open(os.path.join(ROOT, "build", "bench", "results.md"), "w") as f:
         f.write("\n".join(L) + "\n")
+
+
+# issue 10's figures: (label, target, scene, method, field, must, aim)
+TARGETS10 = [
+    ("AVR cube, cull: render", "avr1284", "cube", "cull", "cycles_render_per_frame", 40000, 25000),
+    ("AVR cube: wire encoding", "avr1284", "cube", "cull", "cycles_wire_per_frame", 30000, 15000),
+    ("AVR torus, cull: render", "avr1284", "torus", "cull", "cycles_render_per_frame", 500000, 300000),
+    ("AVR torus, zbuf16: render", "avr1284", "torus", "zbuf16", "cycles_render_per_frame", 800000, 400000),
+    ("AVR teapot, painter's: render", "avr1284", "teapot", "painter", "cycles_render_per_frame", 600000, 400000),
+    ("6502 cube, cull (with the wire)", "6502", "cube", "cull", "cycles_per_frame", 400000, 200000),
+    ("Z80 cube, cull (with the wire), T-states", "z80", "cube", "cull", "cycles_per_frame", 500000, 250000),
+    ("AVR flash, cube firmware (bytes)", "avr1284", "cube", "cull", "flash_bytes", 12 * 1024, 8 * 1024),
+    ("6502 image, cube firmware (bytes)", "6502", "cube", "cull", "flash_bytes", 24 * 1024, None),
+    ("Z80 image, cube firmware (bytes)", "z80", "cube", "cull", "flash_bytes", 24 * 1024, None),
+]
+
+
+def targets_md(recs):
+    """Issue 10's table: each figure against its must-reach and aim."""
+    by = {(r["target"], r["scene"], r["method"]): r for r in recs}
+    L = ["## Issue 10 targets", "",
+         "| measure | measured | must reach | aim | |", "|---|---:|---:|---:|---|"]
+    for label, t, sc, m, field, must, aim in TARGETS10:
+        r = by.get((t, sc, m))
+        v = r.get(field) if r else None
+        ok = "" if v is None else ("**met**" if v <= must else "missed")
+        if v is not None and aim is not None and v <= aim:
+            ok = "**aim met**"
+        L.append("| %s | %s | <= %s | %s | %s |" % (label, fmt(v), fmt(must),
+                                                     "<= " + fmt(aim) if aim else "-", ok))
+    for sc in ("torus", "teapot"):
+        ps = [r for r in recs if r["target"] == "avr328" and r["scene"] == sc
+              and r["method"] != "cull" and r.get("identical_to_host") and not r["skipped"]]
+        best = max(ps, key=lambda r: r.get("ram_free_bytes") or 0) if ps else None
+        L.append("| ATmega328P (2 KB): %s with painter's or better | %s | runs, identical, >= 64 B free | %s | %s |"
+                 % (sc, "%s, %s B free" % (best["method"], best.get("ram_free_bytes")) if best else "does not fit",
+                    "also the teapot" if sc == "torus" else "-",
+                    ("**met**" if best and (best.get("ram_free_bytes") or 0) >= 64 else "missed")))
+    L.append("")
+    return L
+
+
+def shadings_md(recs):
+    """Render cycles per frame of every method x shading (ATmega1284P)."""
+    rs = [r for r in recs if r["target"] == "avr1284" and r["scene"] in SHADE_SCENES]
+    by = {(r["scene"], r["method"], r["shading"]): r for r in rs}
+    L = ["## Every shading (ATmega1284P, render cycles per frame)", "",
+         "The chart's cost axis (`make chart`).  *same*: all three streams equal the host's.", "",
+         "| scene | method | flat | Lambert | Gouraud | same |", "|---|---|---:|---:|---:|---|"]
+    for sc in SHADE_SCENES:
+        for m in idt.METHODS:
+            cells, same = [], True
+            for sh in SHADINGS:
+                r = by.get((sc, m, sh))
+                if r is None or r["skipped"]:
+                    cells.append("skip" if r is not None else "-")
+                    continue
+                cells.append(fmt(r.get("cycles_render_per_frame")))
+                same = same and bool(r.get("identical_to_host"))
+            L.append("| %s | %s | %s | %s | %s | %s |" % (sc, m, cells[0], cells[1], cells[2],
+                                                         "yes" if same else "**NO**"))
+    L.append("")
+    return L
 
 
 MICRO = [("span", 10, "r8_fb_span_dither, PAGE1, 120-px rows", "pixel"),
@@ -398,10 +536,7 @@ def ram_budget_328():
     L.append("Static RAM %d B (the same program on the 1284P peaks at %s B of stack): %s."
              % (total, rec_stack, ", ".join("`%s` %d" % (nm, n) for n, nm in syms[:14])))
     L.append("`mem` is the firmware's arena (`app_ram()`: renderer work memory, one 128-byte band, "
-             "encoder scratch).  Constant tables (`sin_q14`, `grey17`, `crc_nib`, `bayer4`, the "
-             "scene) sit in SRAM because the library reads them with plain loads; in flash "
-             "(PROGMEM + `pgm_read_*`) they would free %d B."
-             % sum(n for n, nm in syms if nm in ("sin_q14", "grey17", "crc_nib", "bayer4")))
+             "encoder scratch).")
     L.append("")
     return L
 
@@ -414,7 +549,7 @@ def git_rev():
 def main():
     t0 = time.time()
     os.chdir(ROOT)
-    ready = ["build/emu/avrsim", "build/emu/fw-host"] + sorted(
+    ready = ["build/emu/avrsim", "build/emu/prof65", "build/emu/fw-host"] + sorted(
         {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in TARGETS})
     if idt.make(ready, keep_going=False):
         sys.exit("bench: cannot build the runners / sizes")
@@ -426,6 +561,14 @@ def main():
             files.append(os.path.relpath(idt.fw_path(t, s, m, FRAMES), ROOT))
             if t == "6502":
                 files.append(os.path.relpath(idt.fw_path(t, s, m, N), ROOT))
+    # the other shadings (flat, Gouraud) of the chart's scenes on the 1284P
+    shade_jobs = []
+    idt.make(["build/x/avr1284/sizes-sh2.txt"])
+    for s in [idt.SCENES.index(n) for n in SHADE_SCENES]:
+        for m in range(len(idt.METHODS)):
+            for sh in (0, 2):
+                shade_jobs.append((s, m, sh))
+                files.append(os.path.relpath(idt.fw_path("avr1284", s, m, FRAMES, sh), ROOT))
     print("bench: building %d firmware images" % len(files))
     idt.make(files)
     # host streams and callgrind
@@ -457,7 +600,7 @@ def main():
         for s, m, why in skips:
             sizes, _ = idt.read_sizes(t)
             rec = measure(t, s, m, sizes.get((s, m), 0), streams[(s, m)]) if False else None
-            rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
+            rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m], "shading": "lambert",
                    "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t],
                    "arena_bytes": sizes.get((s, m), 0) or None, "cycles_per_frame": None,
                    "cycles_exact": None, "host_instructions_per_frame": None,
@@ -465,13 +608,22 @@ def main():
                    "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
                    "fps_compute": None, "identical_to_host": None, "skipped": why}
             recs.append(rec)
-    print("bench: running %d simulations" % len(jobs))
+    print("bench: running %d simulations" % (len(jobs) + len(shade_jobs)))
     with cf.ThreadPoolExecutor(2) as ex:
-        futs = {ex.submit(measure, t, s, m, need, streams[(s, m)]): (t, s, m) for t, s, m, need in jobs}
+        futs = [ex.submit(measure, t, s, m, need, streams[(s, m)]) for t, s, m, need in jobs]
+        for s, m, sh in shade_jobs:
+            try:
+                st = (idt.host_ref(s, m, N, sh), idt.host_ref(s, m, FRAMES, sh))
+            except Exception as e:  # noqa: BLE001
+                print("bench: host %d %d %s: %s" % (s, m, SHADINGS[sh], e))
+                st = (b"", b"")
+            futs.append(ex.submit(measure, "avr1284", s, m, None, st, sh))
         for f in cf.as_completed(futs):
             recs.append(f.result())
     for r in recs:
         s, m = idt.SCENES.index(r["scene"]), idt.METHODS.index(r["method"])
+        if r["shading"] != "lambert":
+            continue                     # host figures and streams: Lambert's
         r["host_instructions_per_frame"] = host.get((s, m))
         if r["wire_bytes_per_frame"] is None and streams[(s, m)][1]:
             wire = (len(streams[(s, m)][1]) - len(streams[(s, m)][0])) / float(N)
@@ -480,13 +632,14 @@ def main():
                 r["fps_115200"] = round(11520.0 / wire, 2)
                 r["fps_1m"] = round(100000.0 / wire, 2)
     order = {t: i for i, t in enumerate(TARGETS)}
-    recs.sort(key=lambda r: (order[r["target"]], idt.SCENES.index(r["scene"]),
-                             idt.METHODS.index(r["method"])))
+    recs.sort(key=lambda r: (order[r["target"]], SHADINGS.index(r["shading"]) != 1,
+                             idt.SCENES.index(r["scene"]), idt.METHODS.index(r["method"]),
+                             SHADINGS.index(r["shading"])))
     os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
     with open(os.path.join(ROOT, "build", "bench", "results.json"), "w") as f:
         json.dump(recs, f, indent=1)
     write_md(recs, host, time.time() - t0)
-    print("bench: wrote build/bench/results.json (%d records) and docs/benchmarks.md in %.0f s"
+    print("bench: wrote build/bench/results.json (%d records) and build/bench/results.md in %.0f s"
           % (len(recs), time.time() - t0))
     for r in recs:
         if r["scene"] in ("cube", "torus") and r["cycles_per_frame"]:

@@ -4,10 +4,12 @@ For each scene, every visibility method (cull, painter's, z-buffer 8/16
 bits, 4x4 block naive/masked, S-buffer) and shading (flat, Lambert,
 Gouraud) at its cost per frame against its error, Pareto front marked;
 plus cost per frame against face count (24 to 2,000 triangles) per
-method.  Writes docs/speed-accuracy.png and docs/speed-accuracy.md.
+method.  Writes build/chart/speed-accuracy.png and speed-accuracy.md
+(`make docs` copies them to docs/).
 
-Cost: AVR cycles per frame from build/bench/results.json (make bench,
-issue 5) where every variant of a scene has one; otherwise x86-64
+Cost: ATmega1284P render cycles per frame from build/bench/results.json
+(make bench measures every method x shading of these scenes) where every
+variant of a scene has one; otherwise x86-64
 instructions per frame inside r8_render_frame + r8_render_band, counted
 by callgrind on build/r8probe (labelled as such: the same C code, a
 different CPU; use them to compare methods, not targets).
@@ -15,7 +17,7 @@ Error: % of pixels whose shade level differs from the floating-point
 reference (IDX8, 128x64, frames rast8.metrics.FRAMES), with depth-order
 errors and PSNR in the table.
 
-    python bench/chart.py [--quick] [--out-dir docs]
+    python bench/chart.py [--quick] [--out-dir build/chart]
 """
 from __future__ import annotations
 
@@ -69,10 +71,10 @@ def avr_cycles():
     recs = doc if isinstance(doc, list) else doc.get("records", doc.get("results", []))
     out = {}
     for r in recs:
-        if not str(r.get("target", "")).startswith("avr") or not r.get("cycles_per_frame"):
+        cyc = r.get("cycles_render_per_frame") or r.get("cycles_per_frame")
+        if r.get("target") != "avr1284" or not cyc or r.get("skipped"):
             continue
-        key = (r.get("scene"), r.get("method"), str(r.get("shading", "lambert")))
-        out.setdefault(key, r["cycles_per_frame"])
+        out[(r.get("scene"), r.get("method"), str(r.get("shading", "lambert")))] = cyc
     return out
 
 
@@ -147,10 +149,11 @@ def run(quick, out_dir):
     units = {}
     for s in scenes:
         have = all((s, m, sh) in avr for m in METHODS for sh in shadings)
-        units[s] = "AVR cycles/frame (make bench)" if have else "x86-64 instructions/frame (callgrind, host)"
+        units[s] = ("ATmega1284P render cycles/frame (make bench)" if have
+                    else "x86-64 instructions/frame (callgrind, host)")
 
     def cost_of(v):
-        return avr[v] if units[v[0]].startswith("AVR") else cost[v][0]
+        return avr[v] if units[v[0]].startswith("ATmega") else cost[v][0]
 
     # Each shading is measured against the reference with the same
     # shading, so errors compare within a shading: one front per shading.
@@ -281,12 +284,13 @@ def write_md(out_dir, scenes, variants, acc, cost, cost_of, fronts, units, sweep
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="cube and torus, Lambert only")
-    ap.add_argument("--out-dir", default=os.path.join(ROOT, "docs"))
+    ap.add_argument("--out-dir", default=os.path.join(ROOT, "build", "chart"))
     a = ap.parse_args()
     for tool in (PROBE,):
         if not os.path.exists(tool):
             print(f"chart: {tool} missing (make build/r8probe)", file=sys.stderr)
             return 1
+    os.makedirs(a.out_dir, exist_ok=True)
     run(a.quick, a.out_dir)
     print(f"chart: wrote {a.out_dir}/speed-accuracy.png and speed-accuracy.md")
     return 0

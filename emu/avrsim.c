@@ -13,6 +13,10 @@
  *     -P FILE      profile: cycles per function (ELF symbols) spent inside
  *                  frames (between markers 2 and 3), written to FILE
  *     -F N         profile only frames N and later (default 0)
+ *     -i FILE      bytes for the UART receiver (the display's side), one
+ *                  at a time as the firmware reads them: the next byte
+ *                  goes in when RXEN0 is set, RXC0 is clear and the last one went in
+ *                  at least two byte times (400 cycles) before
  *     -H FILE      per instruction: "addr cycles executions" (hex address)
  *                  inside the profiled frames, for avr-objdump annotation
  *
@@ -211,11 +215,15 @@ int main(int argc, char **argv)
     uint32_t flags = 0, freq = 16000000u;
     int state, opt, use_pty = 0, linger = 2, code;
     unsigned long long maxc = 4000000000ULL;
-    const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL;
+    const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL, *inf = NULL;
+    unsigned char *rx = NULL;
+    long rx_n = 0, rx_at = 0;
+    avr_cycle_count_t rx_last = 0;
+    avr_irq_t *rx_irq;
     uint32_t a, static_end, low, sp_min_pc = 0;
     uint16_t sp_min = 0xFFFF;
 
-    while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:H:")) != -1) {
+    while ((opt = getopt(argc, argv, "f:o:pk:l:m:qP:F:H:i:")) != -1) {
         switch (opt) {
         case 'f': freq = strtoul(optarg, 0, 0); break;
         case 'o': out = optarg; break;
@@ -227,12 +235,13 @@ int main(int argc, char **argv)
         case 'P': proff = optarg; break;
         case 'F': prof_from = (unsigned)atoi(optarg); break;
         case 'H': histf = optarg; break;
+        case 'i': inf = optarg; break;
         default: goto usage;
         }
     }
     if (argc - optind != 2) {
 usage:
-        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] [-P FILE [-F N]] [-H FILE] MCU ELF\n", argv[0]);
+        fprintf(stderr, "usage: %s [-f HZ] [-o FILE | -p [-k SEC]] [-l CYCLES] [-m FILE] [-q] [-P FILE [-F N]] [-H FILE] [-i FILE] MCU ELF\n", argv[0]);
         return 2;
     }
     uart_fp = stdout;
@@ -278,6 +287,16 @@ usage:
     avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
                             uart_out, NULL);
     avr_register_io_write(avr, GPIOR0_ADDR, mark_write, NULL);
+    rx_irq = avr_io_getirq(avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_INPUT);
+    if (inf) {
+        FILE *f = fopen(inf, "rb");
+        if (!f || !(rx = malloc(1 << 20))) {
+            fprintf(stderr, "avrsim: cannot read %s\n", inf);
+            return 2;
+        }
+        rx_n = (long)fread(rx, 1, 1 << 20, f);
+        fclose(f);
+    }
 
     if (use_pty) {
         char line[64];
@@ -296,6 +315,12 @@ usage:
             sp_min_pc = pc;
         }
         state = avr_run(avr);
+        if (rx_at < rx_n && (avr->data[0xC1] & 0x10) && !(avr->data[0xC0] & 0x80)
+            && avr->cycle - rx_last >= 400) {
+            /* receiver on (UCSR0B.RXEN0), UCSR0A.RXC0 clear: the next byte */
+            avr_raise_irq(rx_irq, rx[rx_at++]);
+            rx_last = avr->cycle;
+        }
         if (pc >= wait_lo && pc < wait_hi)
             wait_since_mark += avr->cycle - prev_cycle;
         else if (in_frame && frame_no >= prof_from) {

@@ -97,6 +97,11 @@ void plat_putc(r8_u8 c)
     plat_write(&c, 1);
 }
 
+int plat_getc(void)
+{
+    return -1;   /* the emulator feeds app_rx itself (emu/main.c: --rx, --keys) */
+}
+
 void plat_mark(r8_u8 id)
 {
     marks[id & 7]++;

@@ -38,8 +38,9 @@ typedef struct r8_mat3 { r8_s16 m[9]; } r8_mat3;
 /* Full 32-bit product of two 16-bit values. */
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b);
 /* The same in line where the compiler gets it right (SDCC 4.2 does not:
- * there it stays the function). */
-#ifdef __SDCC
+ * there it stays the function), or where a port's assembly does it
+ * faster (R8_ASM_MUL16: ports/6502/mul16_6502.s). */
+#if defined(__SDCC) || defined(R8_ASM_MUL16)
 #define R8_MUL16(a, b) r8_mul16((r8_s16)(a), (r8_s16)(b))
 #else
 #define R8_MUL16(a, b) ((r8_s32)(r8_s16)(a) * (r8_s32)(r8_s16)(b))

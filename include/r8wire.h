@@ -1,4 +1,4 @@
-/* r8wire.h - the serial display protocol (docs/protocol.md, version 1):
+/* r8wire.h - the serial display protocol (docs/protocol.md, versions 1, 2):
  * CRC-16/CCITT-FALSE, COBS framing, the band-by-band frame encoder
  * (firmware side) and the byte-at-a-time frame decoder (display side).
  *
@@ -10,7 +10,8 @@
  *   BAND        02 frame:2 y0:2 codec payload...  (payload = the band
  *               buffer's bytes, encoded with codec)
  *   FRAME_END   03 frame:2 nbands:2 fcrc:2        (bands sent, CRC of
- *               the whole raw frame, clean bands included)
+ *               the whole raw frame, clean bands included; version 2:
+ *               fcrc:4, a CRC-32)
  *   REQUEST     10                                (display -> device:
  *               send a full frame next)
  *   INPUT       11 keys:2                         (display -> device: the
@@ -26,6 +27,11 @@
 #include "r8codec.h"
 
 #define R8_WIRE_VERSION 1
+/* Version 2 (docs/protocol.md section 4.1): FRAME_END carries a CRC-32
+ * of the frame (fcrc:4, R8_WIRE_END2_BYTES) instead of the CRC-16, whose
+ * polynomial is the packet CRC's and so misses every error the packet
+ * CRC misses in a band's literal bytes.  Decoders accept both. */
+#define R8_WIRE_VERSION2 2
 
 #define R8_PKT_FRAME_START 0x01
 #define R8_PKT_BAND 0x02
@@ -55,6 +61,7 @@
 #define R8_WIRE_START_BYTES 14          /* FRAME_START body without palette */
 #define R8_WIRE_BAND_HDR 6              /* BAND body before the payload */
 #define R8_WIRE_END_BYTES 7             /* FRAME_END body */
+#define R8_WIRE_END2_BYTES 9            /* FRAME_END body, version 2 */
 #define R8_WIRE_MAX_BAND 32767u         /* largest raw band in bytes */
 #define R8_WIRE_MAX_DIM 4095            /* largest width/height */
 
@@ -69,6 +76,11 @@ r8_u16 r8_crc16(const r8_u8 *p, unsigned n);
  * and r8_crc16_update(c, d) = that ^ r8_crc16_update(0, d) for n = |d|. */
 r8_u16 r8_crc16_mul(r8_u16 a, r8_u16 b);
 r8_u16 r8_crc16_xpow(unsigned n);
+/* CRC-32 (ISO-HDLC, zlib's crc32): "123456789" -> 0xCBF43926.  The
+ * version-2 frame check.  r8_crc32_update(r8_crc32(a), b) = CRC of a||b;
+ * start from 0. */
+r8_u32 r8_crc32_update(r8_u32 crc, const r8_u8 *p, unsigned n);
+r8_u32 r8_crc32(const r8_u8 *p, unsigned n);
 
 /* ---- COBS (Cheshire & Baker).  Encoded size of n bytes is at most
  * R8_COBS_BOUND(n) (no delimiter included). */
@@ -175,7 +187,8 @@ int r8_tx_frame_end(r8_tx *tx);
  * start, every band it announced (every band for a FULL frame, in
  * increasing y0) and its end arrived intact, a delta frame's number is
  * the last good frame's number + 1, and the CRC of the assembled frame
- * matches.  Identical repeats of a packet are ignored. */
+ * matches (CRC-16 in version 1, CRC-32 in version 2).  Identical repeats
+ * of a packet are ignored. */
 #define R8_DEC_NONE 0       /* nothing finished */
 #define R8_DEC_FRAME 1      /* a complete, CRC-checked frame is in fb */
 #define R8_DEC_PACKET 2     /* a packet was accepted (not a frame end) */
@@ -196,6 +209,7 @@ typedef struct r8_dec {
     unsigned pal_size;
     /* current frame */
     r8_u8 in_frame, full, format, codec, valid, npal;
+    r8_u8 version;           /* its FRAME_START's version (1 or 2) */
     r8_u16 frame, nbands_got, width, height, band;
     r8_u16 next_y;           /* smallest y0 the next band may have */
     r8_u16 last_y0;          /* y0 of the last band accepted */

@@ -1,7 +1,8 @@
 # mk/chart.mk - accuracy and stability (issue 6): the floating-point
 # reference's tests, the stability suite (tests/host/test_stability*.c,
 # built and run by mk/core.mk), short libFuzzer runs, `make fuzz` for long
-# ones and `make chart` (docs/speed-accuracy.{png,md}).
+# ones and `make chart` (build/chart/speed-accuracy.{png,md}; `make docs`
+# copies them to docs/).
 #
 #   build/r8probe            renders built-in scenes or scene blobs: frames,
 #                            per-pixel face ids, C-projected vertices
@@ -44,7 +45,7 @@ fuzz: $(FUZZ_BIN)
 
 TEST_STEPS += test-fuzz
 
-# ---- make chart: docs/speed-accuracy.{png,md}
+# ---- make chart: build/chart/speed-accuracy.{png,md}
 # Uses AVR cycles from build/bench/results.json (make bench, issue 5) when
 # present, adding the accuracy fields to its records first; otherwise (or
 # for variants the bench does not cover) host instructions by callgrind.
@@ -55,3 +56,13 @@ chart: $(R8PROBE) $(SETUP)
 	  $(MAKE) --no-print-directory bench || echo "chart: make bench failed; charting host instruction counts"; fi
 	@if [ -f $(BUILD)/bench/results.json ]; then $(PY) bench/accuracy.py $(BUILD)/bench/results.json; fi
 	$(PY) bench/chart.py $(CHART_ARGS)
+
+# ---- make docs: the generated tables and chart into the tracked docs
+# (the only target that writes docs/: make bench and make chart write to
+# build/)
+.PHONY: docs
+docs:
+	@test -f $(BUILD)/bench/results.md || { echo "docs: build/bench/results.md missing: run make bench"; exit 1; }
+	cp $(BUILD)/bench/results.md docs/bench-results.md
+	@if [ -f $(BUILD)/chart/speed-accuracy.md ]; then cp $(BUILD)/chart/speed-accuracy.md $(BUILD)/chart/speed-accuracy.png docs/; \
+	  else echo "docs: no build/chart (make chart): docs/speed-accuracy.* unchanged"; fi

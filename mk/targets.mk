@@ -5,7 +5,7 @@
 #
 #   make xtargets   runners, target libraries, per-target sizes, unit tests
 #   make fw         every firmware build the identity tests use
-#   make bench      build/bench/results.json + docs/benchmarks.md
+#   make bench      build/bench/results.json + results.md (make docs copies it)
 #
 # Under build/x/<target>/ (target = avr328 avr1284 6502 z80):
 #   obj/            library objects (src/*.c, examples/spin/app.c), plat, scene_S
@@ -19,14 +19,16 @@
 # becomes a one-line "SKIP: reason" file, which the runners report.
 # Every firmware links build/x/scenes/scene_S.c (ports/scene_strip.py): the
 # scene table with only its own scene's meshes.
-# AVR assembly kernels (include/r8kern.h): ports/avr/trap.S and xform.S go
-# into both AVR archives, whose library objects are compiled with
-# -DR8_ASM_TRAP -DR8_ASM_XFORM (src/kern.c then leaves its C references
-# out); the host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the
-# AVR libraries without them (AVR_ASM=trap or AVR_ASM=xform: that one
-# only), for before/after figures; as an environment variable it also
-# reaches make bench (`AVR_ASM=0 make bench`).  build/x/avr-kernels.txt
-# records the choice, so changing it rebuilds the AVR libraries.
+# AVR assembly kernels (include/r8kern.h): ports/avr/trap.S, xform.S,
+# edge.S and project.S go into both AVR archives, whose library objects
+# are compiled with -DR8_ASM_TRAP -DR8_ASM_XFORM -DR8_ASM_EDGE
+# -DR8_ASM_PROJECT (src/kern.c then leaves its C references out); the
+# host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
+# libraries without them; AVR_ASM="trap edge" (any of trap xform edge
+# project) with those only, for before/after figures; as an environment
+# variable it also reaches make bench (`AVR_ASM=0 make bench`).
+# build/x/avr-kernels.txt records the choice, so changing it rebuilds
+# the AVR libraries.
 # Test: tests/targets/test_avr_kern.c (each kernel against its reference
 # on random inputs, in libsimavr), step xkern-avr1284.
 
@@ -49,11 +51,23 @@ XOBJ_NAMES := $(notdir $(XLIB_SRC:.c=))
 
 # The wire encoder's AVR kernels (ports/avr/wire_avr.S; C89 references
 # chosen by R8_ASM_WIRE, see src/r8crc.h) are always in the AVR libraries;
-# the renderer's (trap.S, xform.S) as AVR_ASM chooses (below).
+# the renderer's (trap.S, xform.S, edge.S, project.S) as AVR_ASM chooses.
 AVR_WIRE_S := ports/avr/wire_avr.S
 AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -DF_CPU=16000000UL \
               -ffunction-sections -fdata-sections $(INC) $(XINC) -DR8_ASM_WIRE
-C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl $(INC) $(XINC)
+# 6502 assembly (ports/6502/*.s, ca65), in the 6502 library: each
+# R8_ASM_* names the kernels that replace their C89 reference (the two go
+# together: bench/kern6502.py builds without each) - R8_ASM_MUL16
+# mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
+# R8_ASM_PROJECT proj_6502.s, R8_ASM_WIRE wire_6502.s; mul_6502.s is their
+# quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
+# long multiplies.  tests/c/test_mul.c, test_kern.c and test_wirek.c
+# compare them with the C in sim65.  Programs link with ports/6502/
+# rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
+# (function-level dead code removal; C65_GC=0: off).
+C65_ASM    := $(wildcard ports/6502/*.s)
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT
+C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 # Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
 # links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:
 #   mul16    r8_mul16 (-DR8_ASM_MUL16); the multiply helpers the others
@@ -77,8 +91,10 @@ Z80_KSTAMP := $(XB)/z80-kernels.txt
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),trap xform,$(filter trap xform,$(AVR_ASM)))
-AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM)
+AVR_KALL   := trap xform edge project
+AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
+AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
+              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p
@@ -103,6 +119,11 @@ PLAT_z80     := plat_z80
 $(AVRSIM): emu/avrsim.c
 	@mkdir -p $(dir $@)
 	$(CC) -O2 -Wall $$(pkg-config --cflags simavr) -o $@ $< $$(pkg-config --libs --static simavr) -lutil
+
+# the 6502 profiler: sim65's CPU and paravirtual I/O, cycles per function
+$(BUILD)/emu/prof65: emu/prof65.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra -std=gnu99 -o $@ $<
 
 # the Z80 profiler (emu/z80sim.c: Zilog T-states per function; -u: ucsim's)
 $(Z80SIM): emu/z80sim.c
@@ -167,7 +188,10 @@ $(XB)/6502/obj/%.o: $(XB)/scenes/%.c $(XHDRS)
 $(XB)/6502/obj/%.o: tests/targets/%.c $(XHDRS) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $(dir $@)
 	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS) -Itests/unity
-$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o)
+$(XB)/6502/obj/%.o: ports/6502/%.s
+	@mkdir -p $(dir $@)
+	ca65 -g -t sim6502 -o $@ $<
+$(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o) $(C65_ASM:ports/6502/%.s=$(XB)/6502/obj/%.o)
 	rm -f $@ && ar65 a $@ $^
 
 $(Z80_KSTAMP): z80-kstamp-force
@@ -231,6 +255,13 @@ $(foreach t,$(XTARGETS),$(eval $(call XPROG,$(t))))
 XSZ = $(XSCENES:%=$(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)))
 $(XB)/avr1284/sizes.txt: $(call XSZ,avr1284) $(AVRSIM) tests/targets/sizes.sh
 	bash tests/targets/sizes.sh avr1284 $@ $(call XSZ,avr1284)
+# Gouraud's arenas (make bench measures every shading): sizers built so
+XSZG = $(XSCENES:%=$(XB)/avr1284/sizesg/sizes-%.elf)
+$(XB)/avr1284/sizesg/sizes-%.elf: tests/targets/fw_sizes.c ports/fw_trim.c $(XB)/avr1284/obj/scene_%.o $(XDEPS_avr1284)
+	@mkdir -p $(dir $@)
+	$(XENV) bash ports/xbuild.sh avr1284 $@ $< $(XB)/avr1284/obj/scene_$*.o -- $(FW_DEFS) -DFW_SCENE=$* -Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_PLAN_ONLY -DFW_SHADING=2
+$(XB)/avr1284/sizes-sh2.txt: $(XSZG) $(AVRSIM) tests/targets/sizes.sh
+	bash tests/targets/sizes.sh avr1284 $@ $(XSZG)
 XSZ328 = $(XSCENES:%=$(XB)/avr1284/sizes328/sizes-%.elf)
 $(XB)/avr1284/sizes328/sizes-%.elf: tests/targets/fw_sizes.c ports/fw_trim.c ports/fwdefs.sh $(XB)/avr1284/obj/scene_%.o $(XDEPS_avr1284)
 	@mkdir -p $(dir $@)
@@ -246,7 +277,7 @@ $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 # the AVR kernels against their references (src/kern.c, compiled into the
 # test under other names, without R8_ASM_*), whatever AVR_ASM says
 XKERN := $(XB)/avr1284/tests/avr_kern.elf
-XKERN_OBJS := $(XB)/avr1284/obj/trap.o $(XB)/avr1284/obj/xform.o $(XB)/avr1284/obj/unity_target.o
+XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/unity_target.o
 $(XKERN): tests/targets/test_avr_kern.c src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
@@ -270,7 +301,7 @@ XT_6502    := $(XT_NAMES:%=$(XB)/6502/tests/%.prg)
 XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
 XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
-.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80
+.PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80 xprof-6502
 xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80) $(XKERNZ)
 
 # Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
@@ -281,6 +312,10 @@ xtest-6502:
 xtest-z80:
 	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
 XTEST_TIMEOUT ?= 300
+
+# emu/prof65 against sim65: same cycles, exit code and stream.
+xprof-6502:
+	@bash scripts/run-step.sh xprof-6502 $(PY) tests/targets/prof65_check.py
 
 # Bit identity: every scene x method that fits, per target, vs the host.
 xident-%:
@@ -297,7 +332,7 @@ xtest-avr-kern:
 xtest-z80-kern:
 	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xkern-z80 bash tests/targets/unit.sh z80 $(XKERNZ)
 
-TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xident-avr328 xident-avr1284 xident-6502 xident-z80
+TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
 
 # ---- benchmark
 bench: $(SETUP)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fwdefs.sh S-M-F SIZES [TARGET]  ->  the -D flags of one firmware build:
+# fwdefs.sh S-M-F[-SH] SIZES [TARGET]  ->  the -D flags of one firmware build:
 # scene S, method M, F frames, FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
 # firmware then reports APP_E_RAM/APP_E_CFG instead of rendering), and
@@ -13,10 +13,20 @@
 # measures the same (XSIZES_avr328 in mk/targets.mk).
 SMALL328="-DFW_POOL=0 -DR8_SMALL_SCENE"
 [ "$1" = --small328 ] && { echo "$SMALL328"; exit 0; }
-IFS=- read -r s m f <<< "$1"
-ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$2")
+IFS=- read -r s m f sh <<< "$1"
+sizes=$2
+[ "${sh:-1}" = 2 ] && sizes=${2%.txt}-sh2.txt
+ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$sizes")
 case "$ram" in ''|0) ram=1 ;; esac
-trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY"
+trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY"
+# SH: shading (R8_SHADE_*: 0 flat, 1 Lambert, 2 Gouraud; default Lambert,
+# the demo's; make bench builds the others: fw-S-M-F-SH; Gouraud's
+# arena from sizes-sh2.txt beside SIZES)
+case "${sh:-1}" in
+  2) trim="$trim -DFW_SHADING=2" ;;
+  0) trim="$trim -DFW_SHADING=0 -DR8_NO_GOURAUD" ;;
+  *) trim="$trim -DR8_NO_GOURAUD" ;;
+esac
 [ "$m" != 1 ] && trim="$trim -DR8_NO_PAINTER"
 [ "$m" != 2 ] && [ "$m" != 3 ] && trim="$trim -DR8_NO_ZBUF"
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"

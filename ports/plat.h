@@ -11,6 +11,8 @@
 void plat_init(void);
 void plat_putc(r8_u8 c);                     /* one UART byte, binary-safe */
 void plat_write(const r8_u8 *p, unsigned n); /* n UART bytes */
+int plat_getc(void);                         /* a received UART byte, or -1
+                                                when none is waiting */
 void plat_mark(r8_u8 id);                    /* cycle marker (GPIOR0 etc.) */
 void plat_exit(int code);                    /* end of run */
 

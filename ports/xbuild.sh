@@ -38,8 +38,27 @@ case $tgt in
     bash ports/6502/cc65c.sh "$base.o" "$src" $C65_CFLAGS "$@" > "$log" 2>&1 || {
       grep -q 'Constant integer expression expected' "$log" &&
         skip "cc65 cannot evaluate ?: in a constant expression: $(grep -m1 'Constant integer' "$log")"; fail; }
+    # Function-level dead-code removal (ports/6502/gc65.py; C65_GC=0: off):
+    # the program's and the library members' ca65 sources, only what
+    # _main reaches, assembled in $base.gc/ and linked as objects.
+    link=("$base.o" "${objs[@]}" $X/obj/plat_sim65.o $X/rast8.lib)
+    if [ "${C65_GC:-1}" != 0 ]; then
+      progs=("$base.s")
+      for o in "${objs[@]}" $X/obj/plat_sim65.o; do progs+=("${o%.*}.s"); done
+      members=()
+      for m in $(ar65 t $X/rast8.lib); do
+        if [ -e "$X/obj/${m%.o}.s" ]; then members+=("$X/obj/${m%.o}.s"); else members+=("ports/6502/${m%.o}.s"); fi
+      done
+      rm -rf "$base.gc"
+      gcs=$(python3 ports/6502/gc65.py "$base.gc" "${progs[@]}" -- "${members[@]}" 2>> "$log") || fail
+      link=()
+      for g in $gcs; do
+        ca65 -g -t sim6502 -o "${g%.s}.o" "$g" >> "$log" 2>&1 || fail
+        link+=("${g%.s}.o")
+      done
+    fi
     # C stack 1 KB instead of 2 (measured peaks are ~300 B): 1 KB more for code
-    cl65 -t sim6502 --ld-args -D,__STACKSIZE__=0x0400 -m "$base.map" -o "$out" "$base.o" "${objs[@]}" $X/obj/plat_sim65.o $X/rast8.lib \
+    cl65 -t sim6502 -C ports/6502/rast8.cfg --ld-args -D,__STACKSIZE__=0x0400,-Ln,"$base.lbl",--dbgfile,"$base.dbg" -m "$base.map" -o "$out" "${link[@]}" \
       >> "$log" 2>&1 || {
         grep -q 'overflows memory area' "$log" && skip "$(grep -m1 -o 'Segment.*' "$log") (sim6502: 63 KB for code+data, 1 KB C stack)"; fail; }
     # segment sizes from the map: CODE+RODATA+DATA (program), DATA+BSS (RAM)
@@ -56,8 +75,9 @@ for line in open(sys.argv[1]):
             sz[m.group(1)] = int(m.group(4), 16)
         elif line.strip() == "" and sz:
             break
-prog = sum(v for k, v in sz.items() if k not in ("BSS", "ZEROPAGE", "EXEHDR"))
-ram = sz.get("DATA", 0) + sz.get("BSS", 0)
+# R8PAGE: page-aligned RAM (bss) for the 6502 kernels' tables (ports/6502/rast8.cfg)
+prog = sum(v for k, v in sz.items() if k not in ("BSS", "ZEROPAGE", "EXEHDR", "R8PAGE"))
+ram = sz.get("DATA", 0) + sz.get("BSS", 0) + sz.get("R8PAGE", 0)
 print("flash=%d ram_static=%d" % (prog, ram))
 PY
     ;;

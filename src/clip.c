@@ -71,7 +71,9 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
     r8_s32 big = 0, zn = st->zn16;
     const r8_mesh *me = ob->mesh;
     r8_proj wide;
-    unsigned stride = 1u << st->vsh;
+    unsigned stride = 2u;   /* 1 << vsh: no run-time shift (cc65 trap, DEVELOPERS.md) */
+    if (st->vsh == 2)
+        stride = 4u;
     for (i = 0; i < n; i++) {
         r8_u16 g = (r8_u16)(o->vbase + vi[i]);
         const r8_s16 *mv = me->verts + 3u * vi[i];

@@ -7,7 +7,10 @@
  *     bands in increasing y0, every band for a FULL frame;
  *   - it is FULL, or a delta whose number is the last good frame's
  *     number + 1 and the frame buffer still holds that frame;
- *   - the CRC of the whole assembled frame matches the one in FRAME_END.
+ *   - the check of the whole assembled frame matches the one in
+ *     FRAME_END: CRC-16 in version 1, CRC-32 in version 2 (the packet
+ *     CRC's polynomial makes the CRC-16 blind to every error the packet
+ *     CRC missed in a band's literal bytes: docs/protocol.md 4.1).
  * Identical repeats of a packet cost nothing; packets of an older frame
  * are ignored.  See docs/protocol.md sections 4 and 5. */
 #include "r8wire.h"
@@ -15,6 +18,11 @@
 static unsigned get16(const r8_u8 *p)
 {
     return ((unsigned)p[0] << 8) | p[1];
+}
+
+static r8_u32 get32(const r8_u8 *p)
+{
+    return ((r8_u32)get16(p) << 16) | get16(p + 2);
 }
 
 /* Bytes of `rows` rows in format, in 32 bits (may not fit an int). */
@@ -50,6 +58,7 @@ void r8_dec_init(r8_dec *d, r8_u8 *pkt, unsigned pkt_size, r8_u8 *fb,
     d->codec = 0;
     d->valid = 0;
     d->npal = 0;
+    d->version = 0;
     d->frame = 0;
     d->nbands_got = 0;
     d->width = 0;
@@ -167,7 +176,8 @@ static int on_start(r8_dec *d, const r8_u8 *p, unsigned n, unsigned crc)
     fmt = p[8];
     band = get16(p + 9);
     codec = p[11];
-    if (p[1] != R8_WIRE_VERSION || n != R8_WIRE_START_BYTES + 3u * npal ||
+    if ((p[1] != R8_WIRE_VERSION && p[1] != R8_WIRE_VERSION2) ||
+        n != R8_WIRE_START_BYTES + 3u * npal ||
         fmt > R8_FMT_IDX8 || codec >= R8_CODEC_COUNT || w == 0 || h == 0 ||
         w > R8_WIRE_MAX_DIM || h > R8_WIRE_MAX_DIM || band == 0 || band > h ||
         (fmt == R8_FMT_PAGE1 && (band & 7u)))
@@ -187,6 +197,7 @@ static int on_start(r8_dec *d, const r8_u8 *p, unsigned n, unsigned crc)
     d->format = fmt;
     d->band = (r8_u16)band;
     d->codec = codec;
+    d->version = p[1];
     d->full = (r8_u8)(p[12] & R8_FLAG_FULL);
     d->start_crc = (r8_u16)crc;
     d->nbands_got = 0;
@@ -257,15 +268,20 @@ static int on_band(r8_dec *d, const r8_u8 *p, unsigned n, unsigned crc)
 static int on_end(r8_dec *d, const r8_u8 *p, unsigned n)
 {
     unsigned f;
-    if (n != R8_WIRE_END_BYTES)
+    int ok;
+    if (n != R8_WIRE_END_BYTES && n != R8_WIRE_END2_BYTES)
         return bad(d);
     f = get16(p + 1);
     d->packets++;
     if (!d->in_frame || f != d->frame)
         return other_frame(d, f);
-    if (!d->valid || get16(p + 3) != d->nbands_got ||
-        (d->full && d->nbands_got != R8_WIRE_NBANDS(d->height, d->band)) ||
-        r8_crc16(d->fb, d->frame_bytes) != get16(p + 5)) {
+    ok = d->valid && get16(p + 3) == d->nbands_got &&
+         (!d->full || d->nbands_got == R8_WIRE_NBANDS(d->height, d->band));
+    if (ok && d->version == R8_WIRE_VERSION2)
+        ok = n == R8_WIRE_END2_BYTES && r8_crc32(d->fb, d->frame_bytes) == get32(p + 5);
+    else if (ok)
+        ok = n == R8_WIRE_END_BYTES && r8_crc16(d->fb, d->frame_bytes) == get16(p + 5);
+    if (!ok) {
         frame_fail(d);
         return R8_DEC_INCOMPLETE;
     }

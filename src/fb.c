@@ -47,7 +47,10 @@ void r8_fb_clear(r8_fb *fb, r8_u8 c)
     r8_u8 v = c;
     if (fb->format != R8_FMT_IDX8)
         v = (r8_u8)(c ? 0xFF : 0x00);
-    memset(fb->buf, v, r8_fb_bytes(fb->format, fb->width, fb->rows));
+    if (fb->format == R8_FMT_PAGE1 && fb->width > 0 && fb->rows > 0) /* (no call) */
+        memset(fb->buf, v, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
+    else
+        memset(fb->buf, v, r8_fb_bytes(fb->format, fb->width, fb->rows));
 }
 
 /* Ordered 4x4 dither thresholds: level s lights pixel (x,y) iff

@@ -3,7 +3,8 @@
 #include "r8fixed.h"
 #include "r8flash.h"
 
-/* With R8_ASM_MUL16 a port links its own (ports/z80/mul16_z80.s). */
+/* With R8_ASM_MUL16 a port links its own (ports/6502/mul16_6502.s,
+ * ports/z80/mul16_z80.s); this is their reference (tests/c/test_mul.c). */
 #ifndef R8_ASM_MUL16
 r8_s32 r8_mul16(r8_s16 a, r8_s16 b)
 {
@@ -40,11 +41,13 @@ r8_s32 r8_asr32(r8_s32 v, r8_u8 n)
 
 r8_s16 r8_sat16(r8_s32 v)
 {
-    if (v > 32767)
-        return 32767;
-    if (v < -32768L)
+    /* on the two 16-bit halves: no 32-bit compares on 8-bit CPUs */
+    r8_u16 hi = (r8_u16)((r8_u32)v >> 16), lo = (r8_u16)((r8_u32)v & 0xFFFFu);
+    if (hi == (r8_u16)((lo & 0x8000u) ? 0xFFFFu : 0u))
+        return (r8_s16)v;                   /* -32768 .. 32767 */
+    if (hi & 0x8000u)
         return (r8_s16)(-32767 - 1);
-    return (r8_s16)v;
+    return 32767;
 }
 
 r8_s16 r8_mulq(r8_s16 a, r8_s16 b, r8_u8 frac)

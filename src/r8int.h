@@ -170,6 +170,11 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
 r8_u8 r8_vis_level(r8_s16 s);
 void r8_vis_plain(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bits16);
+/* The z-buffer's fast path (flat and Lambert shading, page layout): the
+ * rows < ylimit of a face filled straight from its edges, the same
+ * pixels and depths as r8_scan_next + r8_vis_zbuf, without a span
+ * record or a division per span. */
+void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16);
 void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span *sp, int mask);
 void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);

@@ -529,16 +529,28 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
  * and zfar, 0 = far .. 63 = near (the seed's midpoint sort). */
 static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
 {
-    r8_s32 z = zsum - st->zn16 * n;   /* n (centroid z - znear) */
+    r8_s32 zn = st->zn16, zr = st->zf16 - st->zn16, z;
     r8_u32 k;
+    if (n == 4) {
+        zn <<= 2;
+        zr <<= 2;
+    } else if (n == 3) {
+        zn += zn << 1;
+        zr += zr << 1;
+    } else {
+        zn *= n;
+        zr *= n;
+    }
+    z = zsum - zn;                     /* n (centroid z - znear) */
     if (z < 0)
         z = 0;
-    if (z >= (st->zf16 - st->zn16) * n)
+    if (z >= zr)
         return 0;
+    /* z kmul < 2^24 (kmul = 64 2^16 / range): the key is its top bits */
     if (n == 4)
-        k = ((r8_u32)z * st->kmul) >> 18;
+        k = (r8_u16)((r8_u32)z * st->kmul >> 16) >> 2;
     else if (n == 3)
-        k = ((r8_u32)z * st->kmul3) >> 16;
+        k = (r8_u16)((r8_u32)z * st->kmul3 >> 16);
     else
         k = ((r8_u32)z / n * st->kmul) >> 16;
     if (k > R8_JEFF_BUCKETS - 1)
@@ -550,7 +562,7 @@ static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
  * added in model space (flash), then the one product row. */
 static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8_u8 n)
 {
-    r8_s32 sx = 0, sy = 0, sz = 0;
+    r8_s32 sx = 0, sy = 0, sz = 0, tz;
     r8_u8 k, sh = 0;
     for (k = 0; k < n; k++) {
         const r8_s16 *mv = me->verts + 3u * vi[k];
@@ -567,7 +579,16 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
     }
     sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
                    R8_MUL16(o->m.m[8], sz) + 512, 10);
-    return (r8_s32)((r8_u32)sx << sh) + o->t.z * n;
+    if (sh)
+        sx = (r8_s32)((r8_u32)sx << sh);
+    tz = o->t.z;
+    if (n == 4)
+        tz <<= 2;
+    else if (n == 3)
+        tz += tz << 1;
+    else
+        tz *= n;
+    return sx + tz;
 }
 
 /* Object i's faces into their buckets (r8_render_frame): cull, vertex
@@ -608,7 +629,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         for (j = 0; j < n; j++) {
             if (j)
                 vi[j] = R8_RDU8(&fc->v[j]);
-            vp[j] = base + ((unsigned)vi[j] << vsh);
+            vp[j] = base + (vsh == 1 ? 2u * vi[j] : 4u * vi[j]);   /* no variable shift */
             if (vp[j][0] == R8_VX_TODO)
                 r8_tf_vertex(st, o, me->verts + 3u * vi[j], (r8_u16)(o->vbase + vi[j]));
             if (vp[j][0] == R8_VX_CLIP)
@@ -727,7 +748,7 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
         r8_u8 vsh = st->vsh;
         n = R8_RDU8(&fc->n);
         for (j = 0; j < n; j++)
-            vp[j] = base + ((unsigned)R8_RDU8(&fc->v[j]) << vsh);
+            vp[j] = base + (vsh == 1 ? 2u : 4u) * R8_RDU8(&fc->v[j]);
     }
     *oi = i;
     return n;
@@ -794,7 +815,9 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
         n = face_setup(st, g, e->c.vp, &oi);
-        if (st->method == R8_VIS_PAINTER) {
+        if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
+            /* (with ftop, r8_render_band has already skipped the faces
+             * that start lower down) */
             r8_s16 top, bot;
             face_rows(st, e->c.vp, n, &top, &bot);
             if (top >= y1)
@@ -822,6 +845,12 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     if (!st->fast) {
         r8_act *a = (r8_act *)(void *)e;
         r8_span sp;
+#ifndef R8_NO_ZBUF
+        if ((st->method == R8_VIS_Z8 || st->method == R8_VIS_Z16) &&
+            !(st->attrs & R8_ATTR_S) && fb->format == R8_FMT_PAGE1)
+            r8_zfill(st, a, y1, fb, st->method == R8_VIS_Z16);   /* the common case */
+        else
+#endif
         while (r8_scan_next(&a->s, y1, st->judd, &sp))
             draw_span(st, fb, e->level, g, &sp);
     } else

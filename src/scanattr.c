@@ -72,6 +72,21 @@ static void attr_step(const r8_scan *s, r8_interp *d, r8_interp *sh)
         R8_INTERP_STEP(sh);
 }
 
+int r8_scan_row_attrs(r8_scan *s, r8_s16 y, int judd)
+{
+    r8_edge *l = &s->c.l, *r = &s->c.r;
+    r8_u8 lv = l->vi, rv = r->vi;
+    if (!r8_scan_row(&s->c, y, judd))
+        return 0;
+    if (s->attrs) {
+        if (l->vi != lv)
+            attr_start(s, l, -1, y, &s->ld, &s->ls);
+        if (r->vi != rv)
+            attr_start(s, r, 1, y, &s->rd, &s->rs);
+    }
+    return 1;
+}
+
 int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
 {
     r8_scanx *c = &s->c;
@@ -79,15 +94,8 @@ int r8_scan_next(r8_scan *s, r8_s16 ylimit, int judd, r8_span *out)
     r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit;
     while (c->y < lim) {
         r8_s16 y = c->y, xl, xr;
-        r8_u8 lv = l->vi, rv = r->vi;
-        if (!r8_scan_row(c, y, judd))
+        if (!r8_scan_row_attrs(s, y, judd))
             return 0;
-        if (s->attrs) {
-            if (l->vi != lv)
-                attr_start(s, l, -1, y, &s->ld, &s->ls);
-            if (r->vi != rv)
-                attr_start(s, r, 1, y, &s->rd, &s->rs);
-        }
         xl = l->x.val;
         xr = r->x.val;
         R8_INTERP_STEP(&l->x);

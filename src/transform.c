@@ -168,7 +168,7 @@ r8_s16 r8_tf_shade(const r8_state *st, const r8_vec3 *n, const r8_vec3 *light,
 /* Camera point c (<< R8_CFRAC) to screen vertex g: x, y (and depth). */
 void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
 {
-    r8_s16 *out = st->sv + ((unsigned)g << st->vsh);
+    r8_s16 *out = st->sv + (st->vsh == 1 ? 2u : 4u) * g;
     r8_s8 e;
     r8_u16 m;
     if (c->z < st->zn16) {

@@ -24,7 +24,10 @@
 #include "r8crc.h"
 
 /* The hot loops are kept out of line: each then has the registers to
- * itself (avr-gcc spills the pointers otherwise). */
+ * itself (avr-gcc spills the pointers otherwise).  `register` on the
+ * hot pointers: cc65 (-Or) keeps them in zero page (its 6-byte register
+ * bank), where p->field is one indexed load instead of a runtime call;
+ * the other compilers allocate registers as they would anyway. */
 #if defined(__GNUC__)
 #define TX_NOINLINE __attribute__((noinline))
 #else
@@ -35,13 +38,17 @@ static const r8_u8 delim = 0;
 
 typedef r8_tx_st tx_st;
 
+/* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
+ * twice: no side effects) */
+#define PUT16(p, v) ((p)[0] = (r8_u8)((unsigned)(v) >> 8), (p)[1] = (r8_u8)((unsigned)(v) & 0xFFu))
+
 static void put16(r8_u8 *p, unsigned v)
 {
     p[0] = (r8_u8)((v >> 8) & 0xFFu);
     p[1] = (r8_u8)(v & 0xFFu);
 }
 
-static void out(r8_tx *tx, const r8_u8 *p, unsigned n)
+static void out(register r8_tx *tx, const r8_u8 *p, unsigned n)
 {
     tx->put(tx->ctx, p, n);
     tx->bytes += n;
@@ -88,11 +95,12 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
 #ifdef R8_ASM_WIRE
 #define TX_LINK(s, q)                                          \
     do {                                                       \
-        if ((s)->code) {                                       \
-            if ((q) - (s)->code > 254) {                       \
+        r8_u8 *c_ = (s)->code; /* once (cc65: one load) */     \
+        if (c_) {                                              \
+            if ((unsigned)((q) - c_) > 254u) { /* q after c_ */ \
                 tx_unlink(s);                                  \
             } else {                                           \
-                *(s)->code = (r8_u8)((q) - (s)->code);         \
+                *c_ = (r8_u8)((q) - c_);                       \
                 (s)->code = (q);                               \
             }                                                  \
         }                                                      \
@@ -109,7 +117,7 @@ static void tx_link(tx_st *s, r8_u8 *q)
 #endif
 
 /* Link the zeros of q .. end. */
-static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
+static void tx_links(register tx_st *s, register r8_u8 *q, const r8_u8 *end)
 {
     for (; q != end; q++)
         if (!*q)
@@ -120,7 +128,7 @@ static void tx_links(tx_st *s, r8_u8 *q, const r8_u8 *end)
  * linked yet and its CRC is to be computed (s is set up here); else it
  * is linked and its CRC is s->crc.  Then: the CRC bytes, the last code,
  * the delimiter, one put; or, if the chain stopped, r8_cobs_write. */
-static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 all)
+static void tx_send(register r8_tx *tx, register tx_st *s, unsigned n, r8_u8 all)
 {
     r8_u8 *p = tx->pkt, *end = p + n + 3;
     if (all) {
@@ -128,7 +136,7 @@ static void tx_send(r8_tx *tx, tx_st *s, unsigned n, r8_u8 all)
         s->crc = r8_crc16(p + 1, n);
         tx_links(s, p + 1, end - 2);
     }
-    put16(end - 2, s->crc);
+    PUT16(end - 2, s->crc);
     if (!end[-2])
         TX_LINK(s, end - 2);
     if (!end[-1])
@@ -379,7 +387,7 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
  * COBS chain, s gets the band's CRC from 0 and Fletcher sums.  Returns
  * the payload length, or cap + 1 when it does not fit (nothing is
  * written past o + cap). */
-static unsigned tx_rle(tx_st *s, const r8_u8 *p, unsigned n, r8_u8 *o,
+static unsigned tx_rle(register tx_st *s, register const r8_u8 *p, unsigned n, register r8_u8 *o,
                        unsigned cap, unsigned z)
 {
     const r8_u8 *end = p + n;
@@ -462,16 +470,17 @@ unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
 /* Encode and send band src[0..n) at row y0: the packet, the fingerprint
  * fp[4] (changed: whether it did) and the frame CRC; z = its leading
  * zeros. */
-static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
-                                unsigned y0, r8_u8 *fp, r8_u16 xn, unsigned z)
+static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n,
+                                unsigned y0, register r8_u8 *fp, r8_u16 xn, unsigned z)
 {
-    r8_u8 *b = tx->pkt + 1, *from = b, changed, f[4];
+    register r8_u8 *b = tx->pkt + 1;
+    r8_u8 *from = b, changed, f[4];
     unsigned len = n, k;
     tx_st s;
     /* header; the CRC of bytes 0..2 is tx->hcrc */
     b[0] = R8_PKT_BAND;
-    put16(b + 1, tx->frame);
-    put16(b + 3, y0);
+    PUT16(b + 1, tx->frame);
+    PUT16(b + 3, y0);
     b[5] = tx->cfg.codec;
 #ifndef R8_NO_RLE
     if (b[5] == R8_CODEC_RLE) {
@@ -504,11 +513,11 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
         f[1] = (r8_u8)(s.g & 0xFFu);
         f[2] = s.f1;
         f[3] = s.f2;
-        changed = 0;
-        for (k = 0; k < 4u; k++) {
-            changed |= (r8_u8)(fp[k] ^ f[k]);
-            fp[k] = f[k];
-        }
+        changed = (r8_u8)((fp[0] ^ f[0]) | (fp[1] ^ f[1]) | (fp[2] ^ f[2]) | (fp[3] ^ f[3]));
+        fp[0] = f[0];
+        fp[1] = f[1];
+        fp[2] = f[2];
+        fp[3] = f[3];
         /* frame CRC: fcrc * x^(8n) ^ the band's CRC from 0 */
         tx->fcrc = (r8_u16)(r8_crc16_mul(tx->fcrc, xn) ^ s.g);
         if (!tx->full && !changed)
@@ -532,7 +541,7 @@ static void TX_NOINLINE tx_band(r8_tx *tx, const r8_u8 *src, unsigned n,
     tx->sent++;
 }
 
-int r8_tx_band(r8_tx *tx, const r8_fb *band)
+int r8_tx_band(register r8_tx *tx, const r8_fb *band)
 {
     unsigned idx, n, z;
     r8_s16 y0 = band->y0;

@@ -1,6 +1,18 @@
 /* app.c - the demo firmware's main loop (see app.h): render each frame
  * band by band and stream it with the display protocol.  C89, no
- * malloc, no stdio; all memory is the caller's arena. */
+ * malloc, no stdio; all memory is the caller's arena.
+ *
+ * The application itself is a few lines; the rest of this file is the
+ * harness every target shares (arena layout, the stream, host hooks):
+ *     r8_demo_setup(&run, scene, width);        objects, camera (once)
+ *     r8_render_init(&ren, &cfg, work, size);   cfg.scene = &run.scene
+ *     per frame n:
+ *         r8_demo_pose(&run, n);                the application turns the objects
+ *         r8_render_frame(&ren, &run.cam);      the camera stays where it is
+ *         for each band: r8_fb_set_band, r8_render_band, r8_tx_band
+ * (examples/ssd1306/oled_cube.c is the same with its own mesh and pose
+ * and a display instead of the stream; examples/flythrough moves the
+ * camera instead.) */
 #include "app.h"
 #include "plat.h"
 
@@ -138,9 +150,10 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     r8_tx_sync(&tx);
     for (i = 0; !cfg->frames || i < cfg->frames; i++) {
         no = (r8_u16)(cfg->first_frame + i);
+        app_poll();                   /* the display's bytes since the last frame */
         plat_mark(PLAT_MARK_FRAME_BEGIN);
-        r8_demo_pose(&run, no);
-        r8_render_frame(&ren, &run.cam);
+        r8_demo_pose(&run, no);            /* the spin: angle = start + turn * frame */
+        r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
         r8_tx_frame_begin(&tx, no);
         for (y = 0; y < band_fb.height; y = (r8_s16)(y + band_fb.rows)) {
             r8_fb_set_band(&band_fb, y);
@@ -161,6 +174,13 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 void app_rx(r8_u8 c)
 {
     r8_tx_rx(&tx, c);
+}
+
+void app_poll(void)
+{
+    int c;
+    while ((c = plat_getc()) >= 0)
+        app_rx((r8_u8)c);
 }
 
 r8_u16 app_keys(void)

@@ -88,6 +88,9 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size);
 /* One byte received from the display (safe to call from the UART ISR
  * while app_run runs: it only sets a flag for the next frame). */
 void app_rx(r8_u8 c);
+/* Every byte the port has received (plat_getc) to app_rx: app_run calls
+ * it before each frame, so a polled UART needs no ISR. */
+void app_poll(void);
 /* The key state from the display's last INPUT packet (R8_KEY_* bits,
  * 1 = pressed; 0 before any). */
 r8_u16 app_keys(void);

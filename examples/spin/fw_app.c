@@ -6,6 +6,8 @@
  *                        fw_sizes.c (mk/targets.mk passes it in)
  *   FW_POOL              scan-state pool (default R8_POOL_AUTO; the 2 KB
  *                        ATmega328P builds use 0: least RAM)
+ *   FW_SHADING           R8_SHADE_* (default Lambert; make bench measures
+ *                        every shading)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
  * emu/fw_plat_host.c (stdout). */
@@ -20,6 +22,9 @@
 #endif
 #ifndef FW_FRAMES
 #define FW_FRAMES 4
+#endif
+#ifndef FW_SHADING
+#define FW_SHADING R8_SHADE_LAMBERT
 #endif
 
 static app_cfg cfg;
@@ -37,6 +42,7 @@ int main(int argc, char **argv)
     cfg.scene = (r8_u8)(argc > 1 ? atoi(argv[1]) : FW_SCENE);
     cfg.render.method = (r8_u8)(argc > 2 ? atoi(argv[2]) : FW_METHOD);
     cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
+    cfg.render.shading = (r8_u8)(argc > 4 ? atoi(argv[4]) : FW_SHADING);
     need = app_ram(&cfg);
     if (need == 0 || need > sizeof mem)
         plat_exit(APP_E_CFG);
@@ -60,6 +66,7 @@ int main(void)
 #endif
     cfg.scene = FW_SCENE;
     cfg.render.method = FW_METHOD;
+    cfg.render.shading = FW_SHADING;
     cfg.frames = FW_FRAMES;
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;

@@ -24,7 +24,7 @@ extern "C" {
 #ifndef SPIN_RAM
 /* app_ram() of this configuration on AVR (larger on 32-bit boards:
  * raise it there, app_run returns APP_E_RAM when it is too small). */
-#define SPIN_RAM 756
+#define SPIN_RAM 770
 #endif
 
 static r8_u8 arena[SPIN_RAM];
@@ -40,6 +40,7 @@ static void poll_rx(void)
 void plat_init(void) { Serial.begin(SPIN_BAUD); }
 void plat_putc(r8_u8 c) { poll_rx(); Serial.write(c); }
 void plat_write(const r8_u8 *p, unsigned n) { poll_rx(); Serial.write(p, n); }
+int plat_getc(void) { return Serial.available() > 0 ? Serial.read() : -1; }
 void plat_mark(r8_u8 id) { (void)id; }
 void plat_exit(int code) { (void)code; }
 

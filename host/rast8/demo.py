@@ -13,7 +13,7 @@ import subprocess
 import sys
 import tempfile
 
-from .cli import Capture
+from .capture import Capture
 from .protocol import StreamDecoder, read_dump, fb_bytes
 from .source import open_source
 

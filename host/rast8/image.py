@@ -1,7 +1,7 @@
 """Frames to PIL images (layouts from include/r8fb.h)."""
 from PIL import Image
 
-from .protocol import FMT_PAGE1, FMT_ROW1, FMT_IDX8
+from .formats import FMT_PAGE1, FMT_ROW1, FMT_IDX8
 
 
 def frame_to_image(frame, scale=1):

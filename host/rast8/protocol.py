@@ -11,12 +11,16 @@ the same bytes.
         frame.to_image().save(...)
     dec.counters()                     # bad packets, dropped, incomplete...
 """
+import binascii
 from dataclasses import dataclass, field
 
 from . import codec as _codec
 from .codec import crc16, CodecError
+from .formats import FMT_PAGE1, FMT_ROW1, FMT_IDX8, FORMAT_NAMES, FORMAT_BY_ID  # noqa: F401
 
-VERSION = 1
+VERSION = 1          # what Encoder writes by default (R8_WIRE_VERSION)
+VERSION2 = 2         # FRAME_END carries a CRC-32 of the frame (section 4.1)
+VERSIONS = (VERSION, VERSION2)    # what the decoders accept
 PKT_FRAME_START, PKT_BAND, PKT_FRAME_END, PKT_REQUEST = 0x01, 0x02, 0x03, 0x10
 PKT_INPUT = 0x11
 PKT_TO_DEVICE_FIRST, PKT_TO_DEVICE_LAST = 0x10, 0x1F     # display -> device kinds
@@ -26,11 +30,9 @@ KEY_BITS = {"up": 0x0001, "down": 0x0002, "left": 0x0004, "right": 0x0008,
             "x": 0x0100, "y": 0x0200, "l": 0x0400, "r": 0x0800}
 FLAG_FULL = 0x01
 START_BYTES, BAND_HDR, END_BYTES, CRC_BYTES = 14, 6, 7, 2
+END2_BYTES = 9                       # FRAME_END body, version 2
 MAX_DIM = 4095
 MAX_BAND = 32767
-FMT_PAGE1, FMT_ROW1, FMT_IDX8 = 0, 1, 2
-FORMAT_NAMES = {"page1": FMT_PAGE1, "row1": FMT_ROW1, "idx8": FMT_IDX8}
-FORMAT_BY_ID = {v: k for k, v in FORMAT_NAMES.items()}
 
 
 def fb_bytes(fmt, width, rows):
@@ -40,6 +42,19 @@ def fb_bytes(fmt, width, rows):
     if fmt == FMT_ROW1:
         return ((width + 7) >> 3) * rows
     return width * rows
+
+
+def crc32(data):
+    """CRC-32 (ISO-HDLC, zlib's): the version-2 frame check (r8_crc32)."""
+    return binascii.crc32(data) & 0xFFFFFFFF
+
+
+def frame_check(version, pixels):
+    """FRAME_END's fcrc field for a frame: CRC-16 (version 1) or CRC-32
+    (version 2) of its raw bytes."""
+    if version == VERSION2:
+        return crc32(pixels).to_bytes(4, "big")
+    return crc16(pixels).to_bytes(2, "big")
 
 
 def pkt_bytes(band_bytes, npal):
@@ -135,6 +150,7 @@ class StreamDecoder:
         self.format = self.codec = 0
         self.valid = False
         self.npal = 0
+        self.version = 0
         self.palette = []
         self.frame = 0
         self.nbands_got = 0
@@ -309,7 +325,7 @@ class StreamDecoder:
         fmt = p[8]
         band = (p[9] << 8) | p[10]
         codec = p[11]
-        if (p[1] != VERSION or n != START_BYTES + 3 * npal or fmt > FMT_IDX8 or
+        if (p[1] not in VERSIONS or n != START_BYTES + 3 * npal or fmt > FMT_IDX8 or
                 codec > 2 or w == 0 or h == 0 or w > MAX_DIM or h > MAX_DIM or
                 band == 0 or band > h or (fmt == FMT_PAGE1 and band & 7)):
             return self._bad("bad frame start (version %d)" % p[1])
@@ -326,6 +342,7 @@ class StreamDecoder:
         self.frame = f
         self.width, self.height, self.format, self.band = w, h, fmt, band
         self.codec = codec
+        self.version = p[1]
         self.full = bool(p[12] & FLAG_FULL)
         self.start_crc = crc
         self.nbands_got = 0
@@ -388,7 +405,7 @@ class StreamDecoder:
         return None
 
     def _on_end(self, p):
-        if len(p) != END_BYTES:
+        if len(p) not in (END_BYTES, END2_BYTES):
             return self._bad("bad frame end")
         f = (p[1] << 8) | p[2]
         self.packets += 1
@@ -396,7 +413,7 @@ class StreamDecoder:
             return self._other_frame(f)
         if (not self.valid or ((p[3] << 8) | p[4]) != self.nbands_got or
                 (self.full and self.nbands_got != (self.height + self.band - 1) // self.band) or
-                crc16(memoryview(self.fb)[:self.frame_bytes]) != ((p[5] << 8) | p[6])):
+                p[5:] != frame_check(self.version, memoryview(self.fb)[:self.frame_bytes])):
             self._frame_fail()
             return None
         self.in_frame = False
@@ -415,7 +432,10 @@ class Encoder:
     """The C band encoder (src/wire.c) in Python: same bytes out."""
 
     def __init__(self, fmt, width, height, band, codec=_codec.RLE,
-                 full_period=32, dirty=True, palette=None):
+                 full_period=32, dirty=True, palette=None, version=VERSION):
+        if version not in VERSIONS:
+            raise ValueError("protocol version must be one of %r" % (VERSIONS,))
+        self.version = version
         self.fmt, self.width, self.height, self.band = fmt, width, height, band
         self.codec = codec
         self.full_period = full_period
@@ -451,7 +471,7 @@ class Encoder:
         self.since_full += 1
         out = bytearray()
         pal = b"".join(bytes(c) for c in self.palette)
-        body = bytes([PKT_FRAME_START, VERSION]) + number.to_bytes(2, "big")
+        body = bytes([PKT_FRAME_START, self.version]) + number.to_bytes(2, "big")
         body += self.width.to_bytes(2, "big") + self.height.to_bytes(2, "big")
         body += bytes([self.fmt]) + self.band.to_bytes(2, "big")
         body += bytes([self.codec, FLAG_FULL if full else 0, len(self.palette)]) + pal
@@ -475,7 +495,7 @@ class Encoder:
                           y0.to_bytes(2, "big") + bytes([codec]) + enc)
             sent += 1
         out += packet(bytes([PKT_FRAME_END]) + number.to_bytes(2, "big") +
-                      sent.to_bytes(2, "big") + crc16(pixels).to_bytes(2, "big"))
+                      sent.to_bytes(2, "big") + frame_check(self.version, pixels))
         return bytes(out)
 
 

@@ -13,7 +13,7 @@ import sys
 import threading
 import time
 
-from .cli import Capture
+from .capture import Capture
 from .protocol import KEY_BITS, input_packet
 
 # Tk keysym -> key name (rast8.protocol.KEY_BITS, R8_KEY_* in C)

@@ -4,4 +4,4 @@
 # writes it next to the source, which collides in parallel builds and
 # litters the source tree).
 obj=$1; src=$2; shift 2
-cc65 "$@" -o "${obj%.*}.s" "$src" && ca65 -t sim6502 -o "$obj" "${obj%.*}.s"
+cc65 "$@" -o "${obj%.*}.s" "$src" && ca65 -g -t sim6502 -o "$obj" "${obj%.*}.s"

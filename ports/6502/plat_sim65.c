@@ -20,13 +20,20 @@ extern char _MAIN_START__[], _MAIN_SIZE__[], _STACKSIZE__[];
 static r8_u8 hw_s0;
 static r8_u8 *c_lo;
 
+static unsigned c_sp;
+
 void plat_init(void)
 {
-    r8_u8 here;
     r8_u8 *p, *top;
     r8_u8 s;
     c_lo = (r8_u8 *)((unsigned)_MAIN_START__ + (unsigned)_MAIN_SIZE__);
-    top = &here - 32;
+    /* the C stack pointer itself (locals are static with -Cl: no local's
+     * address tells where the stack is) */
+    __asm__("lda sp");
+    __asm__("sta %v", c_sp);
+    __asm__("lda sp+1");
+    __asm__("sta %v+1", c_sp);
+    top = (r8_u8 *)c_sp - 32;
     for (p = c_lo; p < top; p++)
         *p = PAINT;
     __asm__("tsx");
@@ -43,6 +50,11 @@ void plat_putc(r8_u8 c)
 void plat_write(const r8_u8 *p, unsigned n)
 {
     write(1, p, n);
+}
+
+int plat_getc(void)
+{
+    return -1;   /* sim65: no receive path */
 }
 
 void plat_mark(r8_u8 id)

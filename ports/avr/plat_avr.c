@@ -1,6 +1,6 @@
 /* plat_avr.c - platform layer for ATmega328P / ATmega1284P (avr-gcc).
  *
- * UART: USART0, polled, 8N1.  UBRR0 = 0 without U2X gives 1 Mbaud at
+ * UART: USART0, polled, 8N1, both ways (emu/avrsim -i feeds the receiver).  UBRR0 = 0 without U2X gives 1 Mbaud at
  * 16 MHz (exact); simavr charges ~11 bit-times per byte, so the runner
  * (emu/avrsim.c) subtracts the cycles spent in plat_avr_txwait() and
  * reports compute cycles separately from link time.
@@ -29,7 +29,7 @@ void plat_init(void)
     UBRR0L = 0;
     UCSR0A = 0;
     UCSR0C = (1 << UCSZ01) | (1 << UCSZ00); /* 8N1 */
-    UCSR0B = (1 << TXEN0);
+    UCSR0B = (1 << TXEN0) | (1 << RXEN0);
 }
 
 void plat_putc(r8_u8 c)
@@ -44,6 +44,13 @@ void plat_write(const r8_u8 *p, unsigned n)
         plat_avr_txwait();
         UDR0 = *p++;
     }
+}
+
+int plat_getc(void)
+{
+    if (!(UCSR0A & (1 << RXC0)))
+        return -1;
+    return UDR0;
 }
 
 void plat_mark(r8_u8 id)

@@ -59,6 +59,11 @@ void plat_write(const r8_u8 *p, unsigned n)
     }
 }
 
+int plat_getc(void)
+{
+    return -1;   /* ucsim runs: no receive path */
+}
+
 void plat_mark(r8_u8 id)
 {
     MARK = id;

@@ -3,6 +3,8 @@
  * requests, and fault injection (bit flips, dropped and inserted bytes,
  * truncation, garbage): no corrupt frame is ever reported good, and the
  * first clean full frame after a fault decodes. */
+#include <string.h>
+
 #include "unity.h"
 #include "r8wire.h"
 
@@ -337,6 +339,120 @@ static void test_echoed_request_is_ignored(void)
     TEST_ASSERT_EQUAL_UINT(0, wrong);
 }
 
+/* CRC-32 (the version-2 frame check): the check value, and pieces chain. */
+static void test_crc32(void)
+{
+    static const r8_u8 nine[] = "123456789";
+    TEST_ASSERT_EQUAL_UINT32(0xCBF43926uL, r8_crc32(nine, 9));
+    TEST_ASSERT_EQUAL_UINT32(0xCBF43926uL, r8_crc32_update(r8_crc32(nine, 4), nine + 4, 5));
+    TEST_ASSERT_EQUAL_UINT32(0, r8_crc32(nine, 0));
+}
+
+/* The wrong frame of the soak (issue 12, docs/protocol.md 4.1): band y0 8
+ * of frame 3548 as sent, and as a burst left it.  The error (14 bytes in
+ * an RLE literal run) is a multiple of the CRC polynomial: both packets
+ * have a good CRC-16, both bands decode to 64 bytes, and a frame holding
+ * either has the same CRC-16.  In a version-1 stream the decoder reports
+ * the wrong frame good; in version 2 the CRC-32 fails it. */
+static const r8_u8 band3548[40] = {
+    0x02, 0x0D, 0xDC, 0x00, 0x08, 0x01, 0x12, 0x00, 0x9B, 0x40,
+    0xE0, 0x50, 0xF8, 0x54, 0xFF, 0x55, 0xFF, 0x55, 0xFF, 0x55,
+    0xFA, 0x55, 0xAA, 0x55, 0xAA, 0x55, 0xAA, 0x55, 0xAA, 0x55,
+    0xAA, 0x55, 0xAA, 0x50, 0xA0, 0x40, 0x13, 0x00, 0x07, 0xD3
+};
+static const r8_u8 band3548_hit[40] = {
+    0x02, 0x0D, 0xDC, 0x00, 0x08, 0x01, 0x12, 0x00, 0x9B, 0x6B,
+    0xF2, 0xD3, 0xC5, 0xA8, 0x91, 0xEA, 0x03, 0xE0, 0xBD, 0x0A,
+    0x5C, 0x8D, 0xF7, 0x55, 0xAA, 0x55, 0xAA, 0x55, 0xAA, 0x55,
+    0xAA, 0x55, 0xAA, 0x50, 0xA0, 0x40, 0x13, 0x00, 0x07, 0xD3
+};
+
+static unsigned put_pkt(r8_u8 *out, r8_u8 *body, unsigned n)
+{
+    unsigned len = 0;
+    r8_u16 c = r8_crc16(body, n);
+    body[n] = (r8_u8)(c >> 8);
+    body[n + 1] = (r8_u8)c;
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_cobs_encode(body, n + 2, out, 200, &len));
+    out[len] = 0;
+    return len + 1;
+}
+
+/* Frame 0x0DDC, 64x32 PAGE1, full: bands 0, 16, 24 raw `fill`, band 8
+ * the given packet; FRAME_END with the check of `frame` for `version`.
+ * Returns what the decoder said at FRAME_END. */
+static int feed_3548(int version, const r8_u8 *band8, const r8_u8 *frame)
+{
+    static r8_u8 s[600], body[80], p2[R8_DEC_PKT_BYTES(256)], f2[256];
+    unsigned n = 0, k, y;
+    int rc = R8_DEC_NONE;
+    r8_u32 c;
+    r8_dec d2;
+    s[n++] = 0;
+    memcpy(body, "\x01\x01\x0d\xdc\x00\x40\x00\x20\x00\x00\x08\x01\x01\x00", 14);
+    body[1] = (r8_u8)version;
+    n += put_pkt(s + n, body, 14);
+    for (y = 0; y < 32; y += 8) {
+        if (y == 8) {
+            memcpy(body, band8, 38);
+            n += put_pkt(s + n, body, 38);
+            continue;
+        }
+        memcpy(body, "\x02\x0d\xdc\x00\x00\x00", 6);
+        body[4] = (r8_u8)y;
+        memcpy(body + 6, frame + y / 8 * 64, 64);
+        n += put_pkt(s + n, body, 70);
+    }
+    memcpy(body, "\x03\x0d\xdc\x00\x04", 5);
+    if (version == 2) {
+        c = r8_crc32(frame, 256);
+        for (k = 0; k < 4; k++)
+            body[5 + k] = (r8_u8)(c >> (24 - 8 * k));
+        n += put_pkt(s + n, body, 9);
+    } else {
+        c = r8_crc16(frame, 256);
+        body[5] = (r8_u8)(c >> 8);
+        body[6] = (r8_u8)c;
+        n += put_pkt(s + n, body, 7);
+    }
+    r8_dec_init(&d2, p2, sizeof p2, f2, sizeof f2, 0, 0);
+    for (k = 0; k < n; k++) {
+        int r = r8_dec_feed(&d2, s[k]);
+        if (r == R8_DEC_FRAME || r == R8_DEC_INCOMPLETE)
+            rc = r;
+    }
+    TEST_ASSERT_EQUAL_UINT(0, d2.bad_packets);
+    if (rc == R8_DEC_FRAME)
+        TEST_ASSERT_EQUAL_MEMORY(frame, f2, 64); /* band 0 as sent */
+    if (rc == R8_DEC_FRAME && band8 == band3548_hit) {
+        /* what was accepted: band 8 as the burst left it */
+        TEST_ASSERT_TRUE(memcmp(f2 + 64, frame + 64, 64) != 0);
+    }
+    return rc;
+}
+
+static void test_soak_wrong_frame_3548(void)
+{
+    static r8_u8 frame[256], band_hit[64];
+    unsigned k, len;
+    for (k = 0; k < 256; k++)
+        frame[k] = (r8_u8)(k * 7u);
+    TEST_ASSERT_EQUAL_HEX16(r8_crc16(band3548, 38), (band3548[38] << 8) | band3548[39]);
+    TEST_ASSERT_EQUAL_HEX16(r8_crc16(band3548_hit, 38),
+                            (band3548_hit[38] << 8) | band3548_hit[39]);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_codec_decode(1, band3548 + 6, 32, frame + 64, 64, &len));
+    TEST_ASSERT_EQUAL_UINT(64, len);
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_codec_decode(1, band3548_hit + 6, 32, band_hit, 64, &len));
+    TEST_ASSERT_EQUAL_UINT(64, len);
+    TEST_ASSERT_TRUE(memcmp(band_hit, frame + 64, 64) != 0);
+    /* version 1: the wrong band passes both CRC-16s and the frame is good */
+    TEST_ASSERT_EQUAL_INT(R8_DEC_FRAME, feed_3548(1, band3548, frame));
+    TEST_ASSERT_EQUAL_INT(R8_DEC_FRAME, feed_3548(1, band3548_hit, frame));
+    /* version 2: the CRC-32 sees it */
+    TEST_ASSERT_EQUAL_INT(R8_DEC_FRAME, feed_3548(2, band3548, frame));
+    TEST_ASSERT_EQUAL_INT(R8_DEC_INCOMPLETE, feed_3548(2, band3548_hit, frame));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -353,5 +469,7 @@ int main(void)
     RUN_TEST(test_oversized_packet_is_dropped);
     RUN_TEST(test_frame_too_big_for_display);
     RUN_TEST(test_echoed_request_is_ignored);
+    RUN_TEST(test_crc32);
+    RUN_TEST(test_soak_wrong_frame_3548);
     return UNITY_END();
 }

@@ -202,9 +202,23 @@ static void test_recip(void)
     }
 }
 
+static void test_sat16(void)
+{
+    static const long in[] = {0, 1, -1, 32767, 32768L, -32768L, -32769L, 65535L, 65536L,
+                              -65536L, -65537L, 0x7FFF8000L, -0x7FFF8000L, 2147483647L,
+                              -2147483647L - 1, 0x18000L, -0x18000L, 0x10000L + 5};
+    static const int out[] = {0, 1, -1, 32767, 32767, -32767 - 1, -32767 - 1, 32767, 32767,
+                              -32767 - 1, -32767 - 1, 32767, -32767 - 1, 32767,
+                              -32767 - 1, 32767, -32767 - 1, 32767};
+    unsigned i;
+    for (i = 0; i < sizeof in / sizeof in[0]; i++)
+        TEST_ASSERT_EQUAL_INT(out[i], r8_sat16(in[i]));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_sat16);
     RUN_TEST(test_mul16_extremes);
     RUN_TEST(test_mulq_rounding_and_saturation);
     RUN_TEST(test_shift_and_division);

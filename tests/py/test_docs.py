@@ -2,7 +2,7 @@
 import os
 import re
 
-from rast8.protocol import Encoder, request_packet
+from rast8.protocol import Encoder, request_packet, VERSIONS
 from rast8 import codec as C
 from conftest import ROOT
 
@@ -20,12 +20,15 @@ def test_example_stream():
     enc = Encoder(0, 16, 8, 8, C.RLE, full_period=32, dirty=True)
     assert block("example-stream-0") == enc.sync() + enc.frame(0, px)
     assert block("example-stream-1") == enc.frame(1, px)
+    enc2 = Encoder(0, 16, 8, 8, C.RLE, full_period=32, dirty=True, version=2)
+    assert block("example-stream-v2") == enc2.sync() + enc2.frame(0, px)
 
 
 def test_request_bytes_and_version():
     assert "`00 04 10 F3 C1 00`" in DOC
     assert request_packet() == bytes.fromhex("000410F3C100")
-    assert DOC.startswith("# rast8 serial display protocol — version 1")
+    assert DOC.startswith("# rast8 serial display protocol — versions %s\n"
+                          % " and ".join(str(v) for v in VERSIONS))
 
 
 def test_seed_examples_in_doc():

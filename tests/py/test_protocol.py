@@ -54,6 +54,27 @@ def test_decoders_give_the_emulator_framebuffers(emu_stream, codec_tool, args):
     assert [f.pixels for f in read_dump(r.stdout)] == [f.pixels for f in frames]
 
 
+
+@pytest.mark.parametrize("args", CONFIGS[:3] + CONFIGS[5:7], ids=lambda a: " ".join(a))
+def test_version_2_streams_decode_in_both_decoders(emu_stream, codec_tool, args):
+    """The emulator's frames re-encoded as version 2 (CRC-32 frame check,
+    docs/protocol.md 4.1): the same frames from both decoders."""
+    stream, frames = emu_stream("--frames", "12", *args)
+    fmt = FORMAT_NAMES[_opt(args, "--format", "page1")]
+    w, h = int(_opt(args, "--width", 128)), int(_opt(args, "--height", 64))
+    enc = Encoder(fmt, w, h, int(_opt(args, "--band", 8)),
+                  C.CODEC_NAMES[_opt(args, "--codec", "rle")],
+                  int(_opt(args, "--full-period", 32)), "--no-dirty" not in args, version=2)
+    v2 = enc.sync() + b"".join(enc.frame(f.number, f.pixels) for f in frames)
+    assert v2 != stream
+    dec = StreamDecoder()
+    got = dec.feed(v2)
+    dec.finish()
+    assert [(f.number, f.pixels) for f in got] == [(f.number, f.pixels) for f in frames]
+    assert dec.counters()["bad_packets"] == dec.incomplete == 0
+    r = subprocess.run([codec_tool, "dec"], input=v2, capture_output=True)
+    assert [f.pixels for f in read_dump(r.stdout)] == [f.pixels for f in frames]
+
 def _damage(stream, rnd):
     s = bytearray(stream)
     for _ in range(rnd.randint(1, 4)):

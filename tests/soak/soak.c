@@ -3,7 +3,8 @@
  *
  *   r8soak STREAM DUMP [--faults N] [--seed S] [--quiet]
  *
- * STREAM is `rast8-emu --out`, DUMP its `--dump` (the reference frames).
+ * STREAM is `rast8-emu --out` (or tests/soak/wire2.py's version-2 copy of
+ * it), DUMP its `--dump` (the reference frames).
  * Each pass copies the stream with faults in it, at most one fault per
  * frame and fault frames at least 3 apart, decodes it with r8_dec and
  * checks:
@@ -38,6 +39,7 @@ static unsigned *frame_no;         /* frame number of frame i */
 static unsigned char **ref;        /* reference pixels of frame i */
 static unsigned fbytes;
 static long period;                /* P: largest gap between full frames */
+static int version;                /* the stream's protocol version */
 
 static unsigned long long rng = 88172645463325252ULL;
 static unsigned long rnd(void)
@@ -88,6 +90,7 @@ static void index_stream(void)
                 r8_cobs_decode(stream + start, (unsigned)(i - start), body, sizeof body, &n) == R8_OK) {
                 fi++;
                 frame_first_pkt[fi] = k;
+                version = body[1];
                 if (body[12] & R8_FLAG_FULL) {
                     if (last_full >= 0 && fi - last_full > period)
                         period = fi - last_full;
@@ -363,7 +366,7 @@ int main(int argc, char **argv)
         if (!quiet && passes % 200 == 0)
             fprintf(stderr, "r8soak: %llu faults...\n", faults);
     }
-    printf("soak C decoder: %llu faults (", faults);
+    printf("soak C decoder (protocol v%d): %llu faults (", version, faults);
     for (a = 0; a < F_KINDS; a++)
         printf("%s%s %llu", a ? ", " : "", kind_name[a], kinds[a]);
     printf(", truncation %llu), %llu frames checked, %llu wrong frames accepted, "

@@ -30,6 +30,7 @@ def index_stream(stream):
     """Packets as (start, end = index of its 0x00, frame index); the first
     packet of each frame; the full-frame period P."""
     pkts, first, fi, last_full, period = [], [], -1, -1, 1
+    version = 0
     start = None
     for i, b in enumerate(stream):
         if b:
@@ -40,6 +41,7 @@ def index_stream(stream):
                 body = C.cobs_decode(stream[start:i])
                 fi += 1
                 first.append(len(pkts))
+                version = body[1]
                 if body[12] & FLAG_FULL:
                     if last_full >= 0:
                         period = max(period, fi - last_full)
@@ -48,7 +50,7 @@ def index_stream(stream):
         start = i + 1
     period = max(period, fi - last_full)
     first.append(len(pkts))
-    return pkts, first, fi + 1, period
+    return pkts, first, fi + 1, period, version
 
 
 class Stats:
@@ -171,7 +173,7 @@ def one_pass(rnd, stream, pkts, first, nframes, period, ref, idx, fbytes, npass,
 def run(stream_path, dump_path, want, seed, job=0, jobs=1, progress=True):
     stream = open(stream_path, "rb").read()
     frames = read_dump(dump_path)
-    pkts, first, nframes, period = index_stream(stream)
+    pkts, first, nframes, period, version = index_stream(stream)
     if len(frames) != nframes:
         raise SystemExit("soak: the dump has %d frames, the stream %d" % (len(frames), nframes))
     ref = [f.pixels for f in frames]
@@ -186,7 +188,7 @@ def run(stream_path, dump_path, want, seed, job=0, jobs=1, progress=True):
         npass += 1
         if progress and npass % 20 == 0:
             print("soak.py: %d faults..." % st.faults, file=sys.stderr, flush=True)
-    return st, period
+    return st, period, version
 
 
 def main(argv=None):
@@ -205,17 +207,17 @@ def main(argv=None):
             res = list(ex.map(run, [a.stream] * a.jobs, [a.dump] * a.jobs, [per] * a.jobs,
                               [a.seed] * a.jobs, range(a.jobs), [a.jobs] * a.jobs,
                               [not a.quiet and j == 0 for j in range(a.jobs)]))
-        st, period = Stats(), res[0][1]
-        for r, _ in res:
+        st, period, version = Stats(), res[0][1], res[0][2]
+        for r, _, _ in res:
             st.add(r)
     else:
-        st, period = run(a.stream, a.dump, a.faults, a.seed, progress=not a.quiet)
+        st, period, version = run(a.stream, a.dump, a.faults, a.seed, progress=not a.quiet)
     kinds = ", ".join("%s %d" % (k, st.kinds[k]) for k in KINDS)
     wk = " ".join("%s %d" % (k, st.worst_kind[k]) for k in KINDS)
-    print("soak Python decoder: %d faults (%s, truncation %d), %d frames checked, %d wrong "
+    print("soak Python decoder (protocol v%d): %d faults (%s, truncation %d), %d frames checked, %d wrong "
           "frames accepted, worst frames lost per fault %d (bound P+1 = %d; %s), %d over the "
           "bound, %d duplicates that cost a frame, %d frames lost outside a fault window" % (
-              st.faults, kinds, st.truncs, st.checked, st.wrong, st.worst, period + 1, wk,
+              version, st.faults, kinds, st.truncs, st.checked, st.wrong, st.worst, period + 1, wk,
               st.over, st.dup_lost, st.unexplained))
     bad = st.wrong or st.over or st.dup_lost or st.unexplained or st.worst > period + 1
     return 1 if bad else 0

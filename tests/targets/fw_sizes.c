@@ -52,6 +52,9 @@ int main(void)
 #ifdef FW_POOL
             acfg.render.pool = FW_POOL;
 #endif
+#ifdef FW_SHADING
+            acfg.render.shading = FW_SHADING;
+#endif
             acfg.scene = s;
             acfg.render.method = m;
             put_u(app_ram(&acfg));

@@ -68,8 +68,11 @@ def read_sizes(t):
     return sizes, why
 
 
-def fw_path(t, s, m, frames):
-    return os.path.join(XB, t, "fw", "fw-%d-%d-%d.%s" % (s, m, frames, EXT[t]))
+def fw_path(t, s, m, frames, sh=1):
+    """Firmware of scene s, method m, `frames` frames; shading sh
+    (R8_SHADE_*; Lambert, the demo's, unless make bench asks)."""
+    tail = "" if sh == 1 else "-%d" % sh
+    return os.path.join(XB, t, "fw", "fw-%d-%d-%d%s.%s" % (s, m, frames, tail, EXT[t]))
 
 
 def is_skip(path):
@@ -108,13 +111,14 @@ def run_target(t, path, timeout=300):
     return data, rc, d
 
 
-def host_ref(s, m, frames):
-    cache = os.path.join(XB, "host", "ref-%d-%d-%d.bin" % (s, m, frames))
+def host_ref(s, m, frames, sh=1):
+    cache = os.path.join(XB, "host", "ref-%d-%d-%d-%d.bin" % (s, m, frames, sh))
     fwhost = os.path.join(ROOT, "build", "emu", "fw-host")
     if os.path.exists(cache) and os.path.getmtime(cache) >= os.path.getmtime(fwhost):
         return open(cache, "rb").read()
     os.makedirs(os.path.dirname(cache), exist_ok=True)
-    r = subprocess.run([fwhost, str(s), str(m), str(frames)], stdout=subprocess.PIPE, timeout=120)
+    r = subprocess.run([fwhost, str(s), str(m), str(frames), str(sh)], stdout=subprocess.PIPE,
+                       timeout=120)
     if r.returncode:
         raise RuntimeError("fw-host %d %d %d exit %d" % (s, m, frames, r.returncode))
     with open(cache, "wb") as f:

@@ -1,0 +1,174 @@
+# mk/examples.mk - the example applications beside examples/spin
+# (issue 11), their host builds, target firmware and checks:
+#   build/examples/flythrough    the flythrough on the host (--pty: fly it
+#                                from `rast8 view`)
+#   build/x/T/fly/fly-F.*        the flythrough firmware for target T
+#                                (F frames, the test key script compiled in)
+# Targets T: avr328 avr1284 6502 z80 (mk/targets.mk builds their libraries,
+# plat objects and scene tables; ports/xbuild.sh links, or writes a
+# one-line "SKIP: reason" when a program does not fit).
+
+EXB := $(BUILD)/x
+EXH := $(BUILD)/examples
+EX_HOST_CFLAGS := -std=gnu99 -Wall -Wextra -Werror -O2 -g
+EX_HDRS := ports/plat.h $(wildcard include/*.h src/*.h scenes/*.h)
+
+# compile one C file for a target: $(call ex_cc,TARGET,OUT,SRC,FLAGS)
+# (AVR_CFLAGS, C65_CFLAGS and Z80_CFLAGS come from mk/targets.mk)
+ex_cc = $(if $(filter avr%,$(1)),avr-gcc -mmcu=$(if $(filter avr328,$(1)),atmega328p,atmega1284p) \
+  $(AVR_CFLAGS) $(4) -c $(3) -o $(2),$(if $(filter 6502,$(1)),bash ports/6502/cc65c.sh $(2) $(3) \
+  $(C65_CFLAGS) $(4),bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(4) -c -o $(2) $(3)))
+
+# ---- flythrough
+FLY_DIR    := examples/flythrough
+FLY_HDR    := $(FLY_DIR)/fly.h $(EX_HDRS)
+FLY_KEYS   := tests/examples/fly.keys
+FLY_FRAMES := 24
+FLY_TARGETS := avr328 avr1284 6502 z80
+# what the firmware leaves out (fw_fly.c compiles render.c and scan.c in
+# with these): the flythrough is painter's, Lambert, SSD1306 pages, RLE,
+# meshes with their normals; it keeps the clipper
+FLY_XDEFS  := -Isrc -I$(FLY_DIR) -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF
+FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(FLY_FRAMES).elf \
+  $(EXB)/6502/fly/fly-$(FLY_FRAMES).prg $(EXB)/z80/fly/fly-$(FLY_FRAMES).ihx
+
+ALL_TARGETS += $(EXH)/flythrough
+
+$(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/plat_host.h $(FLY_HDR) $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(FLY_DIR) $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c \
+	  emu/plat_host.c $(LIBS) -o $@
+
+# the key script as the INPUT packets a display sends (fw_fly.c FLY_KEYS)
+# (and as bytes for the UART: emu/avrsim -i, the FLY_UART firmware)
+$(EXB)/fly/fly_keys.h: $(FLY_KEYS) $(FLY_DIR)/keys2c.py $(SETUP)
+	@mkdir -p $(dir $@)
+	$(PY) $(FLY_DIR)/keys2c.py $(FLY_KEYS) -o $@ --bin $(EXB)/fly/fly_keys.bin
+
+$(EXB)/%/fly/fly.o: $(FLY_DIR)/fly.c $(FLY_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,$*,$@,$<,$(FLY_XDEFS))
+$(EXB)/z80/fly/fly.rel: $(FLY_DIR)/fly.c $(FLY_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,z80,$@,$<,$(FLY_XDEFS))
+
+# link: $(call fly_link,TARGET,OUT,OBJ-EXT,EXTRA-FLAGS)
+fly_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(FLY_DIR)/fw_fly.c $(EXB)/$(1)/fly/fly.$(3) \
+  $(EXB)/$(1)/obj/scene_3.$(3) -- $(FLY_XDEFS) $(4)
+# the firmware: the arena is fly_ram() as the sizer measured it on the target
+fly_fw = if head -c 5 $(EXB)/$(1)/fly/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/fly/ram.txt $(2); \
+  else $(call fly_link,$(1),$(2),$(3),-DFLY_KEYS -DFLY_FRAMES=$(FLY_FRAMES) -DFLY_RAM=$$(cat $(EXB)/$(1)/fly/ram.txt)); fi
+
+FLY_DEPS = $(FLY_DIR)/fw_fly.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+$(EXB)/%/fly/size.elf: $(FLY_DEPS) $(EXB)/%/fly/fly.o $(EXB)/%/obj/scene_3.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
+	$(call fly_link,$*,$@,o,-DFLY_SIZE_ONLY)
+$(EXB)/6502/fly/size.prg: $(FLY_DEPS) $(EXB)/6502/fly/fly.o $(EXB)/6502/obj/scene_3.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
+	$(call fly_link,6502,$@,o,-DFLY_SIZE_ONLY)
+$(EXB)/z80/fly/size.ihx: $(FLY_DEPS) $(EXB)/z80/fly/fly.rel $(EXB)/z80/obj/scene_3.rel $(EXB)/z80/obj/plat_z80.rel $(EXB)/z80/rast8.lib
+	$(call fly_link,z80,$@,rel,-DFLY_SIZE_ONLY)
+
+$(EXB)/%/fly/ram.txt: tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
+$(EXB)/avr328/fly/ram.txt: $(EXB)/avr328/fly/size.elf
+$(EXB)/avr1284/fly/ram.txt: $(EXB)/avr1284/fly/size.elf
+$(EXB)/6502/fly/ram.txt: $(EXB)/6502/fly/size.prg
+$(EXB)/z80/fly/ram.txt: $(EXB)/z80/fly/size.ihx
+
+$(EXB)/%/fly/fly-$(FLY_FRAMES).elf: $(EXB)/%/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/%/fly/size.elf
+	$(call fly_fw,$*,$@,o)
+# the ATmega1284P with the keys over its UART (plat_getc) instead
+$(EXB)/avr1284/fly/fly-uart-$(FLY_FRAMES).elf: $(EXB)/avr1284/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/avr1284/fly/size.elf
+	$(call fly_link,avr1284,$@,o,-DFLY_KEYS -DFLY_UART -DFLY_FRAMES=$(FLY_FRAMES) -DFLY_RAM=$$(cat $(EXB)/avr1284/fly/ram.txt))
+$(EXB)/6502/fly/fly-$(FLY_FRAMES).prg: $(EXB)/6502/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/6502/fly/size.prg
+	$(call fly_fw,6502,$@,o)
+$(EXB)/z80/fly/fly-$(FLY_FRAMES).ihx: $(EXB)/z80/fly/ram.txt $(EXB)/fly/fly_keys.h $(EXB)/z80/fly/size.ihx
+	$(call fly_fw,z80,$@,rel)
+
+.SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/fly/fly.o $(EXB)/$(t)/obj/scene_3.o) \
+  $(EXB)/z80/fly/fly.rel $(EXB)/z80/obj/scene_3.rel
+
+.PHONY: fly-fw test-flythrough
+fly-fw: $(EXH)/flythrough $(FLY_FW)
+
+# the host build against a fixed key script, then every target's stream
+# byte for byte against it (tests/examples/fly_check.py)
+test-flythrough: $(SETUP)
+	@bash scripts/run-step.sh flythrough $(PY) tests/examples/fly_check.py --frames $(FLY_FRAMES)
+
+TEST_STEPS += test-flythrough
+
+# ---- ssd1306: an ATmega328P drawing on an SSD1306 over SPI
+#   build/emu/ssd1306sim          libsimavr + simavr's SSD1306 part on SPI
+#   build/examples/ssd1306        the same application on the host
+#   build/x/avr328/oled/oled-F.elf  the firmware (F frames; -small: its
+#                                 arena one byte under oled_cube_ram())
+OLED_DIR    := examples/ssd1306
+OLED_HDR    := $(OLED_DIR)/oled_cube.h $(OLED_DIR)/ssd1306_spi.h $(EX_HDRS)
+OLED_FRAMES := 16
+OLED_STEP   := 5
+OLED_X      := $(EXB)/avr328/oled
+OLED_XDEFS  := -Isrc -I$(OLED_DIR) -DOLED_TRIM -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK \
+  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY
+OLED_OBJS   := $(OLED_X)/oled_cube.o $(OLED_X)/ssd1306_spi.o
+SSDSIM      := $(BUILD)/emu/ssd1306sim
+
+ALL_TARGETS += $(EXH)/ssd1306
+
+$(SSDSIM): emu/ssd1306sim.c
+	@mkdir -p $(dir $@)
+	$(CC) -O2 -Wall -Wextra $$(pkg-config --cflags simavr simavrparts) -o $@ $< \
+	  -l:libsimavrparts.a $$(pkg-config --libs simavr) -lelf
+
+$(EXH)/ssd1306: $(OLED_DIR)/ssd1306_host.c $(OLED_DIR)/oled_cube.c $(OLED_HDR) $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(STRICT) -O2 $(INC) -I$(OLED_DIR) $(OLED_DIR)/ssd1306_host.c $(OLED_DIR)/oled_cube.c $(LIBS) -o $@
+
+$(OLED_X)/%.o: $(OLED_DIR)/%.c $(OLED_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,avr328,$@,$<,$(OLED_XDEFS))
+
+oled_link = $(XENV) bash ports/xbuild.sh avr328 $(1) $(OLED_DIR)/fw_ssd1306.c $(OLED_OBJS) -- $(OLED_XDEFS) $(2)
+OLED_DEPS = $(OLED_DIR)/fw_ssd1306.c $(OLED_OBJS) $(EXB)/avr328/obj/plat_avr.o $(EXB)/avr328/librast8.a \
+  ports/xbuild.sh src/render.c src/scan.c
+$(OLED_X)/size.elf: $(OLED_DEPS)
+	$(call oled_link,$@,-DOLED_SIZE_ONLY)
+$(OLED_X)/ram.txt: $(OLED_X)/size.elf tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh avr328 $< $@
+$(OLED_X)/oled-$(OLED_FRAMES).elf: $(OLED_DEPS) $(OLED_X)/ram.txt
+	$(call oled_link,$@,-DOLED_FRAMES=$(OLED_FRAMES) -DOLED_STEP=$(OLED_STEP) -DOLED_RAM=$$(cat $(OLED_X)/ram.txt))
+$(OLED_X)/oled-small.elf: $(OLED_DEPS) $(OLED_X)/ram.txt
+	$(call oled_link,$@,-DOLED_FRAMES=$(OLED_FRAMES) -DOLED_STEP=$(OLED_STEP) -DOLED_RAM=$$(($$(cat $(OLED_X)/ram.txt) - 1)))
+
+# the Arduino sketch (make arduino): examples/ssd1306/ssd1306.ino and these
+ARDUINO_FILES_ssd1306 := $(OLED_DIR)/oled_cube.c $(OLED_DIR)/oled_cube.h $(OLED_DIR)/ssd1306_spi.c \
+  $(OLED_DIR)/ssd1306_spi.h
+
+.PHONY: test-ssd1306
+# simavr's SSD1306 display RAM after every frame against the host build
+# and r8dump (tests/examples/ssd1306_check.py)
+# (the zip through the phony `arduino`: mk/package.mk, where ARDUINO_ZIP
+# is set, is read after this file)
+test-ssd1306: $(SETUP) arduino
+	@bash scripts/run-step.sh ssd1306 $(PY) tests/examples/ssd1306_check.py --frames $(OLED_FRAMES) --step $(OLED_STEP)
+
+TEST_STEPS += test-ssd1306
+
+# ---- two-objects: the analyser's choice for two separate convex objects
+TWO_DIR := examples/two-objects
+ALL_TARGETS += $(EXH)/two-objects
+
+$(EXH)/two-objects: $(TWO_DIR)/two_host.c $(TWO_DIR)/two.c $(TWO_DIR)/two.h $(EX_HDRS) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -I$(TWO_DIR) $(TWO_DIR)/two_host.c $(TWO_DIR)/two.c $(LIB) -o $@
+
+.PHONY: test-two-objects test-examples-c89
+test-two-objects: $(EXH)/two-objects $(SETUP)
+	@bash scripts/run-step.sh two-objects $(PY) tests/examples/two_check.py
+
+# the examples' application files run on the targets: the library's C89
+# gate (gcc, clang) and the three cross compilers
+test-examples-c89:
+	@bash scripts/run-step.sh examples-c89 bash tests/examples/c89.sh
+
+TEST_STEPS += test-two-objects test-examples-c89

@@ -1,0 +1,239 @@
+/* edge.S - r8k_edge (include/r8kern.h) for AVR with MUL (ATmega).
+ *
+ *   r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
+ *
+ * The 16-bit column-DDA set-up of one polygon edge, bit for bit the C
+ * reference in src/kern.c: the same R8_EDGE_WIDE cases (dy >= 1424, ax
+ * or bx outside [-16384, 16383], |q| >= 2048 after the floor division),
+ * *it untouched then; otherwise it->val, q, err, r, den and y0 as the
+ * reference computes them (16-bit arithmetic modulo 2^16 where it has).
+ *
+ *   dy = by - ay, dx = bx - ax, y0 = floor((ay + 7) / 16) (17 bits)
+ *   s0 = 16 y0 + 8 - ay = (8 - ay) & 15
+ *   udx = dx, or ~dx = -dx - 1 when dx < 0 (T set)
+ *   q, rd = udx / dy, udx % dy; when dx < 0: q = ~q, rd = dy - 1 - rd
+ *   X = ax - 8 + s0 q (17 bits), pl = X & 15, val = floor(X / 16)
+ *     (the reference's p = ((ax - 8) & 15) + s0 q: p & 15 = pl and
+ *     floor((ax - 8) / 16) + floor(p / 16) = val)
+ *   v = dy pl + s0 rd (< 30 dy): the reference's loop on
+ *     u = v + 16 dy - 1 adds ceil(v / 16 dy) (0..2) to val and leaves
+ *     err = ((v + 16 dy - 1) mod 16 dy) >> 4: dy - 1 for v = 0; else,
+ *     w = v - 1 (< 32 dy): val + 1, and once more (w -= 16 dy) if
+ *     w >= 16 dy; err = w >> 4
+ *
+ * The division walks the quotient's bits from its top one, as the
+ * reference's udivmod: the divisor doubles while it stays <= udx, then
+ * one restoring step per doubling (+1).  The quotient register starts
+ * all ones but a 0 sentinel at bit 15 that moves right per doubling;
+ * each step shifts in the complement of its bit (the carry of the
+ * compare/subtract), and the step that shifts the sentinel out is the
+ * last one; a final complement leaves the quotient.  udx < 2^15, so the
+ * doubled divisor never overflows.
+ *
+ * Registers (avr-gcc ABI): arguments it r25:r24, a r23:r22, b r21:r20;
+ * returns r25:r24.  Z = it, r25:r24 = ay (y0 at the end), r23:r22 = ax,
+ * r21:r20 = dy, r19:r18 = udx then rd, then s0 and pl, then 16 dy (rd is
+ * read back from it->r), r27:r26 = q, then v and w, r1:r0 = divisor,
+ * then MUL products; T = dx < 0.
+ * r1 is cleared before returning.
+ *
+ * r8_interp offsets (avr-gcc, no padding): val 0, q 2, err 4, r 6, den 8.
+ */
+
+    .section .text.r8k_edge,"ax",@progbits
+    .global r8k_edge
+    .type   r8k_edge, @function
+.Lwide:                       /* (before the entry: in branch range) */
+    ldi   r24, 0x00         /* R8_EDGE_WIDE = -32768 */
+    ldi   r25, 0x80
+    ret
+r8k_edge:
+    movw  r26, r22          /* X = a */
+    movw  r30, r20          /* Z = b */
+    ld    r22, X+           /* ax */
+    ld    r23, X+
+    ld    r18, Z+           /* bx */
+    ld    r19, Z+
+    ld    r20, Z+           /* by */
+    ld    r21, Z
+    movw  r30, r24          /* Z = it */
+    ld    r24, X+           /* ay */
+    ld    r25, X
+    sub   r20, r24          /* dy = by - ay */
+    sbc   r21, r25
+    ldi   r26, hi8(1424)    /* dy >= 1424: wide */
+    cpi   r20, lo8(1424)
+    cpc   r21, r26
+    brsh  .Lwide
+    mov   r26, r23          /* ax + 0x4000 negative: ax outside */
+    subi  r26, 0xC0         /* [-16384, 16383], wide */
+    brmi  .Lwide
+    mov   r26, r19          /* the same for bx */
+    subi  r26, 0xC0
+    brmi  .Lwide
+    sub   r18, r22          /* dx = bx - ax (no overflow) */
+    sbc   r19, r23
+    clt
+    brpl  1f
+    set                     /* dx < 0: udx = ~dx */
+    com   r18
+    com   r19
+1:
+    /* q, rd = udx / dy, udx % dy */
+    cp    r18, r20
+    cpc   r19, r21
+    brsh  2f
+    clr   r26               /* udx < dy: q = 0, rd = udx */
+    clr   r27
+    rjmp  6f
+.Lwide2:                      /* after the division: r1 back to 0 */
+    clr   r1
+    ldi   r24, 0x00
+    ldi   r25, 0x80
+    ret
+2:  movw  r0, r20           /* divisor D = dy */
+    ldi   r26, 0xFF         /* all ones, the sentinel 0 at bit 15 */
+    ldi   r27, 0x7F
+3:  lsl   r0                /* D doubles while 2 D <= udx */
+    rol   r1
+    cp    r18, r0
+    cpc   r19, r1
+    brlo  4f
+    sec                     /* one more quotient bit: sentinel right */
+    ror   r27
+    ror   r26
+    rjmp  3b
+4:  lsr   r1                /* back to the largest D <= udx */
+    ror   r0
+5:  cp    r18, r0           /* one quotient bit: C = 1 when it is 0 */
+    cpc   r19, r1
+    brlo  .+4
+    sub   r18, r0           /* (no borrow: C = 0) */
+    sbc   r19, r1
+    rol   r26               /* the bit's complement in, the top out */
+    rol   r27
+    brcc  55f               /* that was the sentinel: done */
+    lsr   r1
+    ror   r0
+    rjmp  5b
+55: com   r26
+    com   r27
+6:  cpi   r27, 8            /* q >= 2048: wide */
+    brsh  .Lwide2
+    brtc  7f
+    com   r26               /* dx < 0: q = -q - 1 */
+    com   r27
+    cpi   r26, 0            /* q == -2048: wide */
+    brne  .+4
+    cpi   r27, 0xF8
+    breq  .Lwide2
+    com   r18               /* rd = dy - 1 - rd = dy + ~rd */
+    com   r19
+    add   r18, r20
+    adc   r19, r21
+7:  std   Z+2, r26          /* it->q, it->r, it->den */
+    std   Z+3, r27
+    std   Z+6, r18
+    std   Z+7, r19
+    std   Z+8, r20
+    std   Z+9, r21
+
+    /* X = ax - 8 + s0 q (17 bits: S is its sign); pl = X & 15 (that is
+     * p & 15), val = floor(X / 16) (the reference's two floors) */
+    ldi   r18, 8            /* s0 = (8 - ay) & 15 (rd: in it->r) */
+    sub   r18, r24
+    andi  r18, 15
+    mul   r18, r27          /* s0 q, modulo 2^16 */
+    mov   r27, r0
+    mul   r18, r26
+    add   r1, r27
+    subi  r22, 8            /* ax - 8 */
+    sbci  r23, 0
+    add   r22, r0
+    adc   r23, r1
+    mov   r19, r22          /* (pl) */
+    brvc  22f
+    sec                     /* X beyond 16 bits: the first shift */
+    sbrc  r23, 7            /* brings in !N, the true sign */
+    clc
+    ror   r23
+    ror   r22
+    rjmp  21f
+22: asr   r23
+    ror   r22
+21: asr   r23
+    ror   r22
+    asr   r23
+    ror   r22
+    asr   r23
+    ror   r22
+    andi  r19, 15           /* pl */
+
+    /* v = dy pl + s0 rd (< 30 dy); val += ceil(v / (16 dy)) (0..2),
+     * err = ((v + 16 dy - 1) mod 16 dy) >> 4 */
+    ldd   r26, Z+6          /* rd */
+    ldd   r27, Z+7
+    mul   r18, r27
+    mov   r27, r0
+    mul   r18, r26
+    add   r1, r27
+    movw  r26, r0           /* s0 rd */
+    mul   r20, r19
+    add   r26, r0
+    adc   r27, r1
+    mul   r21, r19
+    add   r27, r0
+    sbiw  r26, 1            /* w = v - 1 */
+    brcs  30f               /* v = 0: err = dy - 1 */
+    movw  r18, r20          /* d16 = 16 dy */
+    lsl   r18
+    rol   r19
+    lsl   r18
+    rol   r19
+    lsl   r18
+    rol   r19
+    lsl   r18
+    rol   r19
+    subi  r22, 0xFF         /* val++ */
+    sbci  r23, 0xFF
+    cp    r26, r18
+    cpc   r27, r19
+    brlo  31f
+    sub   r26, r18          /* w >= 16 dy: once more */
+    sbc   r27, r19
+    subi  r22, 0xFF
+    sbci  r23, 0xFF
+31: lsr   r27               /* err = w >> 4 */
+    ror   r26
+    lsr   r27
+    ror   r26
+    lsr   r27
+    ror   r26
+    lsr   r27
+    ror   r26
+32: st    Z, r22
+    std   Z+1, r23
+    std   Z+4, r26
+    std   Z+5, r27
+
+    /* y0 = floor((ay + 7) / 16); 2048 when ay + 7 passes 32767 */
+    adiw  r24, 7
+    brvs  40f
+    asr   r25
+    ror   r24
+    asr   r25
+    ror   r24
+    asr   r25
+    ror   r24
+    asr   r25
+    ror   r24
+41: clr   r1
+    ret
+
+30: movw  r26, r20          /* v = 0: u = 16 dy - 1 */
+    sbiw  r26, 1
+    rjmp  32b
+40: ldi   r24, 0x00         /* y0 = 2048 */
+    ldi   r25, 0x08
+    rjmp  41b
+    .size r8k_edge, .-r8k_edge

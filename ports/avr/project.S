@@ -1,0 +1,380 @@
+/* project.S - r8k_project (include/r8kern.h) for AVR with MUL (ATmega).
+ *
+ *   int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out,
+ *                   r8_u16 *m, r8_s8 *e);
+ *
+ * Bit for bit the C reference in src/kern.c, r8_recip then
+ * r8_project_recip (src/proj.c):
+ *
+ * 1. The reciprocal: z normalised to zn in [2^15, 2^16) by a shift s
+ *    (z <= 0 taken as 1; z >= 2^16 shifted right, s < 0, truncating),
+ *    then m = t0 - (((t0 - t1) ((zn & 0xFF) >> 1) + 64) >> 7) with t0, t1
+ *    = rec_tab[i], rec_tab[i + 1], i = (zn >> 8) & 0x7F (this file's copy
+ *    of the table in proj.c, which is static there).  *m = m, *e = s.
+ * 2. kk, sh: k = m fn (32 bits); kk = k >> 16, sh = 15 + fsh - e when
+ *    k >= 2^30, else kk = k >> 15, sh = 16 + fsh - e; sh > 31 is 31.
+ *    kk is a signed 16-bit factor (in [2^14, 2^15) for an r8_proj from
+ *    r8_proj_init; any fn and fsh give the reference's result too).
+ * 3. sh <= 0: only x = y = 0 projects (to cx, cy).
+ * 4. Per coordinate v (x, then y): q = floor((v kk + 2^(sh-1)) / 2^sh)
+ *    (proj_round's round(p 2^-(k+1)), k = sh - 1), out of range (1) when
+ *    q > lim or q < -lim, lim = 16 guard (16 bits: guard within
+ *    +-2047, as the C needs); out = cx + qx, cy + qy.
+ *
+ * Step 4 as done here: P = v kk (signed 16 x 16), whole bytes off first
+ * (floor(P / 2^(8 (k >> 3))), sign-filled), then a left shift by
+ * L = 7 - (k & 7) (a sign change means |q| >= 2^23: out), so that
+ * floor(P / 2^sh) is bytes 3..1 and the rounding bit (bit k of P) bit 7
+ * of byte 0; q itself overflowing 16 bits fails the lim test.
+ *
+ * The reference runs proj_round when |x|, |y| <= 32767 and lim < 0x3FFF,
+ * proj_wide otherwise.  For coordinates of 16 bits both are step 4:
+ * proj_wide computes the same q and tests the same bounds; proj_round
+ * also rejects floor(P / 2^k) outside [-0x7FFE, 0x7FFD], which with
+ * lim < 0x3FFF only a q outside [-lim, lim] has.  (A negative lim, a
+ * guard below 0, rejects every q either way.)  So this file does every
+ * input whose x and y fit 16 bits; for the others (T set) it still takes
+ * the reciprocal, and r8_project_recip (C: proj_wide) does the rest.
+ *
+ * Registers (avr-gcc ABI): arguments p r25:r24, c r23:r22, out r21:r20,
+ * m r19:r18, e r17:r16; returns r25:r24.  Y = p; r15:r14 = c (for the
+ * C call), then zero; r25:r24 = x, r13:r12 = y, then qx; z in
+ * r1:r0:r23:r22, s r26; m r17:r16, then kk; k r27, L r26; lim r31:r30;
+ * the coordinate in r19:r18 (MULS operands in r16..r23), P in
+ * r25:r24:r23:r22.  Saves r12..r17, r28, r29; r1 is cleared before
+ * returning.
+ *
+ * Offsets (avr-gcc, no padding): r8_proj {cx 0, cy 2, focal 4, znear 6,
+ * guard 10, fn 12, fsh 14}; r8_vec3l {x 0, y 4, z 8}.
+ */
+
+/* v (byte 1 hi, bytes 2, 3 in r0, r1) fits 16 bits, else to fail */
+.macro FIT16 hi, fail
+    cp    r0, r1            /* bytes 2, 3 equal ... */
+    brne  \fail
+    sbrc  \hi, 7            /* ... and the sign of byte 1 */
+    com   r0
+    tst   r0
+    brne  \fail
+.endm
+
+/* q (r24:r23) of the coordinate in r19:r18: kk r17:r16, k r27, L r26,
+ * lim r31:r30, zero r15; to .Lreject when out of range */
+.macro COORD
+    mul   r18, r16          /* P = v kk: al kl (u x u), at byte 0 */
+    movw  r22, r0
+    muls  r19, r17          /* ah kh (s x s), at byte 2 */
+    movw  r24, r0
+    mulsu r19, r16          /* ah kl (s x u), at byte 1; C = its sign */
+    sbc   r25, r15          /* its sign extension: -2^24 */
+    add   r23, r0
+    adc   r24, r1
+    adc   r25, r15
+    mulsu r17, r18          /* kh al (s x u), at byte 1 */
+    sbc   r25, r15
+    add   r23, r0
+    adc   r24, r1
+    adc   r25, r15
+    sbrs  r27, 4            /* k & 16: two bytes off */
+    rjmp  1f
+    movw  r22, r24
+    mov   r24, r23
+    lsl   r24
+    sbc   r24, r24
+    mov   r25, r24
+1:  sbrs  r27, 3            /* k & 8: one byte off */
+    rjmp  2f
+    mov   r22, r23
+    mov   r23, r24
+    mov   r24, r25
+    lsl   r25
+    sbc   r25, r25
+2:  mov   r0, r26           /* << L; a sign change: far out */
+    tst   r0
+    breq  4f
+3:  lsl   r22
+    rol   r23
+    rol   r24
+    rol   r25
+    brvs  .Lreject
+    dec   r0
+    brne  3b
+4:  mov   r0, r24           /* floor(P / 2^sh) = r25:r24:r23 in 16 bits? */
+    lsl   r0
+    sbc   r0, r0
+    cp    r25, r0
+    brne  .Lreject
+    lsl   r22               /* q = that + bit sh - 1 of P */
+    adc   r23, r15
+    adc   r24, r15
+    cp    r30, r23          /* q > lim */
+    cpc   r31, r24
+    brlt  .Lreject
+    add   r23, r30          /* q + lim < 0 (S: the true sign) */
+    adc   r24, r31
+    brlt  .Lreject
+    sub   r23, r30
+    sbc   r24, r31
+.endm
+
+    .section .text.r8k_project,"ax",@progbits
+    .global r8k_project
+    .type   r8k_project, @function
+r8k_project:
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r14, r22          /* c, for the C call */
+    movw  r28, r24          /* Y = p */
+    movw  r30, r22          /* Z = c */
+
+    /* T clear when x and y fit 16 bits */
+    clt
+    ldd   r24, Z+0          /* x */
+    ldd   r25, Z+1
+    ldd   r0, Z+2
+    ldd   r1, Z+3
+    FIT16 r25, 1f
+    ldd   r26, Z+4          /* y */
+    ldd   r27, Z+5
+    ldd   r0, Z+6
+    ldd   r1, Z+7
+    FIT16 r27, 1f
+    rjmp  2f
+1:  set
+2:  movw  r12, r26          /* y */
+
+    /* zn = z normalised to [2^15, 2^16) (r23:r22), s (r26) */
+    ldd   r22, Z+8
+    ldd   r23, Z+9
+    ldd   r0, Z+10
+    ldd   r1, Z+11
+    clr   r26
+    tst   r1
+    brmi  .Lzone              /* z < 0: as 1 */
+    mov   r27, r0
+    or    r27, r1
+    brne  .Lzbig
+    tst   r23
+    brne  3f
+    tst   r22
+    breq  .Lzone              /* z = 0: as 1 */
+    mov   r23, r22          /* a byte at once */
+    clr   r22
+    ldi   r26, 8
+3:  cpi   r23, 0x10
+    brsh  4f
+    swap  r23               /* four bits at once */
+    swap  r22
+    mov   r27, r22
+    andi  r27, 0x0F
+    andi  r23, 0xF0
+    or    r23, r27
+    andi  r22, 0xF0
+    subi  r26, -4
+4:  tst   r23
+    brmi  .Lnorm
+5:  inc   r26               /* then bit by bit */
+    lsl   r22
+    rol   r23
+    brpl  5b
+    rjmp  .Lnorm
+.Lzone:
+    ldi   r22, 0x00         /* zn = 2^15, s = 15 */
+    ldi   r23, 0x80
+    ldi   r26, 15
+    rjmp  .Lnorm
+.Lzbig:                       /* z >= 2^16: right shifts, s < 0 */
+    tst   r1
+    breq  6f
+    mov   r22, r23
+    mov   r23, r0
+    mov   r0, r1
+    ldi   r26, 0xF8         /* -8 */
+6:  dec   r26
+    lsr   r0
+    ror   r23
+    ror   r22
+    tst   r0
+    brne  6b
+
+.Lnorm:                       /* m from the table, *e = s, *m = m */
+    movw  r30, r16
+    st    Z, r26
+    mov   r27, r23          /* Z = rec_tab + 2 ((zn >> 8) & 0x7F) */
+    lsl   r27
+    ldi   r30, lo8(r8k_rec_tab)
+    ldi   r31, hi8(r8k_rec_tab)
+    add   r30, r27
+    brcc  .+2
+    inc   r31
+    lpm   r16, Z+           /* t0 (r17:r16), t1 (r1:r0) */
+    lpm   r17, Z+
+    lpm   r0, Z+
+    lpm   r1, Z
+    movw  r30, r16          /* t0 - t1 < 512 */
+    sub   r30, r0
+    sbc   r31, r1
+    lsr   r22               /* (zn & 0xFF) >> 1 */
+    mul   r30, r22
+    sbrc  r31, 0
+    add   r1, r22
+    movw  r30, r0           /* (that + 64) >> 7 = r27:r31 */
+    subi  r30, 0xC0
+    sbci  r31, 0xFF
+    lsl   r30
+    rol   r31
+    clr   r27
+    rol   r27
+    sub   r16, r31          /* m = t0 - that */
+    sbc   r17, r27
+    movw  r30, r18
+    st    Z, r16
+    std   Z+1, r17
+    brtc  7f
+    rjmp  .Lwide
+
+    /* kk (r17:r16), k = sh - 1 (r27), L (r26), lim (r31:r30) */
+7:  clr   r15
+    ldd   r18, Y+12         /* k = m fn: r31:r30:r23:r22 */
+    ldd   r19, Y+13
+    mul   r16, r18
+    movw  r22, r0
+    mul   r17, r19
+    movw  r30, r0
+    mul   r16, r19
+    add   r23, r0
+    adc   r30, r1
+    adc   r31, r15
+    mul   r17, r18
+    add   r23, r0
+    adc   r30, r1
+    adc   r31, r15
+    ldi   r18, 16
+    cpi   r31, 0x40
+    brsh  8f
+    lsl   r23               /* kk = k >> 15, sh = 16 + fsh - e */
+    rol   r30
+    rol   r31
+    rjmp  9f
+8:  dec   r18               /* kk = k >> 16, sh = 15 + fsh - e */
+9:  movw  r16, r30
+    sub   r18, r26          /* >= 0 (|e| <= 15) */
+    ldd   r27, Y+14
+    add   r27, r18
+    brcs  10f               /* sh > 255 */
+    subi  r27, 1
+    brcc  11f
+    rjmp  .Lshzero            /* sh = 0 */
+11: cpi   r27, 31
+    brlo  12f
+10: ldi   r27, 30           /* sh > 31: 31 */
+12: mov   r26, r27          /* L = 7 - (k & 7) */
+    com   r26
+    andi  r26, 7
+    ldd   r30, Y+10         /* lim = 16 guard */
+    ldd   r31, Y+11
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+
+    /* qx, qy */
+    movw  r18, r24
+    COORD
+    movw  r18, r12
+    mov   r12, r23
+    mov   r13, r24
+    rjmp  20f
+.Lreject:
+    ldi   r24, 1
+    rjmp  .Lret01
+20: COORD
+    ldd   r0, Y+0           /* out = cx + qx, cy + qy */
+    ldd   r1, Y+1
+    add   r12, r0
+    adc   r13, r1
+    ldd   r0, Y+2
+    ldd   r1, Y+3
+    add   r23, r0
+    adc   r24, r1
+    movw  r30, r20
+    st    Z, r12
+    std   Z+1, r13
+    std   Z+2, r23
+    std   Z+3, r24
+    ldi   r24, 0
+.Lret01:
+    ldi   r25, 0
+.Lretp:
+    clr   r1
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    ret
+
+.Lshzero:                     /* sh <= 0: only x = y = 0 projects */
+    or    r24, r25
+    or    r24, r12
+    or    r24, r13
+    breq  13f
+    rjmp  .Lreject
+13: ldd   r12, Y+0
+    ldd   r13, Y+1
+    ldd   r22, Y+2
+    ldd   r23, Y+3
+    movw  r30, r20
+    st    Z, r12
+    std   Z+1, r13
+    std   Z+2, r22
+    std   Z+3, r23
+    ldi   r24, 0
+    rjmp  .Lret01
+
+.Lwide:                       /* r8_project_recip(p, c, m, e, out, out + 1) */
+    movw  r30, r20
+    movw  r20, r16          /* m */
+    mov   r18, r26          /* e */
+    movw  r24, r28          /* p */
+    movw  r22, r14          /* c */
+    movw  r16, r30          /* sx */
+    adiw  r30, 2
+    movw  r14, r30          /* sy */
+    clr   r1
+    call  r8_project_recip
+    rjmp  .Lretp
+    .size r8k_project, .-r8k_project
+
+/* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16
+ * bits): the table of src/proj.c */
+    .section .progmem.data.r8k_rec_tab,"a",@progbits
+    .type   r8k_rec_tab, @object
+r8k_rec_tab:
+    .word 65535, 65028, 64528, 64035, 63550, 63072, 62602, 62138, 61681, 61231
+    .word 60787, 60350, 59919, 59494, 59075, 58662, 58254, 57852, 57456, 57065
+    .word 56680, 56299, 55924, 55554, 55188, 54828, 54471, 54120, 53773, 53431
+    .word 53092, 52759, 52429, 52103, 51782, 51464, 51150, 50840, 50534, 50231
+    .word 49932, 49637, 49345, 49056, 48771, 48489, 48210, 47935, 47663, 47393
+    .word 47127, 46864, 46603, 46346, 46091, 45839, 45590, 45344, 45100, 44859
+    .word 44620, 44384, 44151, 43919, 43691, 43464, 43240, 43019, 42799, 42582
+    .word 42367, 42154, 41943, 41734, 41528, 41323, 41121, 40920, 40721, 40525
+    .word 40330, 40137, 39946, 39756, 39569, 39383, 39199, 39017, 38836, 38657
+    .word 38480, 38304, 38130, 37958, 37787, 37617, 37449, 37283, 37118, 36954
+    .word 36792, 36631, 36472, 36314, 36158, 36003, 35849, 35696, 35545, 35395
+    .word 35246, 35099, 34953, 34808, 34664, 34521, 34380, 34239, 34100, 33962
+    .word 33825, 33689, 33554, 33421, 33288, 33157, 33026, 32897, 32768
+    .size r8k_rec_tab, .-r8k_rec_tab
