@@ -77,8 +77,10 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #   trap xform project edge   the kernels of include/r8kern.h
 #            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
-# library); tests/targets/test_z80_kern.c (step xkern-z80) checks each
-# against its reference, whatever Z80_ASM says.
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap and
+# the multiplies against their references whatever Z80_ASM says, and
+# tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
+# bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
 Z80_KALL   := mul16 mullong wire trap
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))

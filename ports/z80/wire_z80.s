@@ -129,7 +129,7 @@ _r8_crc16_update:
 ;; significant first.                                         ~1100 T
         .macro  MULBIT
         add     hl, hl          ; r * x; the top bit out: reduce
-        jr      nc, .+8
+        jr      nc, .+10        ; (. is the jr itself: 2 + 8 bytes)
         ld      a, h
         xor     a, #0x10
         ld      h, a
@@ -372,7 +372,8 @@ _r8_tx_lit:
         cp      a, (hl)
         dec     hl
         jr      nz, 2$
-        ld      hl, #6          ; a run at i = k - B: L = i
+        ld      hl, #8          ; a run at i = k - B: L = i (k: above
+                                ; p, o and the return address)
         add     hl, sp
         ld      a, (hl)
         sub     a, b

@@ -18,9 +18,10 @@ STACK_MIN = 1024
 
 
 def link(out, objs, data_loc, code_loc=0x200):
-    r = subprocess.run(["sdcc", "-mz80", "--code-loc", "0x%04x" % code_loc, "--data-loc", "0x%04x" % data_loc,
-                        "-Wl-b_R8TAB=0x0200", "-o", out] + objs, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT)
+    # -b for _R8TAB only when there is one (sdld fails on an undefined area)
+    tab = ["-Wl-b_R8TAB=0x0200"] if code_loc != 0x200 else []
+    r = subprocess.run(["sdcc", "-mz80", "--code-loc", "0x%04x" % code_loc, "--data-loc", "0x%04x" % data_loc]
+                       + tab + ["-o", out] + objs, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     sys.stdout.write(r.stdout.decode("latin-1"))
     if r.returncode:
         sys.exit(r.returncode)

@@ -12,6 +12,8 @@
 #undef R8_ASM_TRAP
 #undef R8_ASM_XFORM
 #undef R8_ASM_PROJECT
+#undef R8_ASM_EDGE
+#define r8k_edge ref_edge /* not tested here: out of the library's way */
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
@@ -19,6 +21,7 @@
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project
+#undef r8k_edge
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void ref_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 int ref_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);

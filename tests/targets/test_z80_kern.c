@@ -3,11 +3,13 @@
  * simulator (ucsim sz80: mk/targets.mk, step xkern-z80).  The kernels'
  * objects are linked in whatever Z80_ASM chose for the library.
  *
- *   r8k_trap, r8k_xform, r8k_project, r8k_edge: the C89 references of
- *     src/kern.c, compiled into this program under other names; every
- *     output byte compared (for r8k_trap the whole band window, up to 4
- *     pages of w columns at a random offset between guard bytes, and all
- *     of t, l and r).
+ *   r8k_trap (trap_z80.s): against the C89 reference of src/kern.c,
+ *     compiled into this program under another name (kern.c's other
+ *     kernels too, out of the library's way); every output byte compared:
+ *     the whole band window, up to 4 pages of w columns at a random offset
+ *     between guard bytes, and all of t, l and r.
+ *   The wire kernels (wire_z80.s) are tests/c/test_wirek.c's (step
+ *     xunit-z80, with -DR8_ASM_WIRE when Z80_ASM links them).
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
