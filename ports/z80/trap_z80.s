@@ -17,6 +17,11 @@
 ;; up to phase 0 and its last ones bit by bit (the pattern's low nibble,
 ;; rotated), the others four columns a pass with the four column values
 ;; in registers (~33 T a column).  A row costs ~450 T besides its span.
+;;
+;; The cube / cull firmware (bench/kernz80.py, emu/z80sim, frames 1-3):
+;; Z80_ASM="mul16 mullong" 1,612,609 T a frame, with trap 1,336,504
+;; (-17%); the image 255 bytes smaller.  tests/targets/test_z80_kern.c
+;; (step xkern-z80) compares it with the reference on random inputs.
         .module trap_z80
 
 ;; the undocumented halves of IX and IY (sdas has no names for them;
