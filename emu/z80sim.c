@@ -11,6 +11,7 @@
  *     -P FILE      profile: T-states per function spent inside frames
  *                  (between markers 2 and 3), self and inclusive
  *     -F N         profile only frames N and later (default 0)
+ *     -a           profile the whole run, not only frames (unit tests)
  *     -H FILE      per instruction inside the profiled frames:
  *                  "addr T executions function+offset" (hex address)
  *     -M FILE.map  the link map (default: FILE.ihx with .map); static
@@ -19,6 +20,9 @@
  *                  ../obj next to it)
  *     -s DIR       one more directory to look for MODULE.sym in
  *     -u           ucsim sz80 0.6.4 timing (see below) instead of Zilog's
+ *     -z FILE      code bytes per symbol (to the next symbol), largest
+ *                  first, "run" if this run entered it, and the totals:
+ *                  where the image's size goes
  *
  * Memory map and I/O (64 KB RAM, image loaded at its addresses, run from
  * 0x0000; crt0 sets SP):
@@ -92,6 +96,7 @@ static int in_frame;
 static unsigned frame_no;
 static unsigned prof_from;
 static int profiling;      /* inside a profiled frame */
+static int prof_all;       /* -a: the whole run */
 
 static void wr(uint16_t a, uint8_t v);
 
@@ -114,12 +119,12 @@ static void on_mark(uint8_t id)
         fprintf(mark_fp, "MARK %u ticks=%llu delta=%llu\n", id, T, d);
     if (id == 2) {
         in_frame = 1;
-        profiling = frame_no >= prof_from;
+        profiling = prof_all || frame_no >= prof_from;
     } else if (id == 3 && in_frame) {
         fprintf(mark_fp, "FRAME %u cycles=%llu\n", frame_no, d);
         frame_no++;
         in_frame = 0;
-        profiling = 0;
+        profiling = prof_all;
     }
 }
 
@@ -147,6 +152,7 @@ typedef struct {
 static fn_t *fns;
 static int nfns;
 static uint16_t *fn_of; /* address -> index into fns (0 = "?") */
+static uint8_t *covered; /* -z: instruction addresses run */
 static unsigned long long *hist_t, *hist_n;
 typedef struct { int fn, edge; uint16_t sp; unsigned long long t0; int counted; } frame_t;
 static frame_t cstack[4096];
@@ -906,7 +912,7 @@ static int cmp_incl(const void *a, const void *b)
 static void usage(const char *me)
 {
     fprintf(stderr,
-            "usage: %s [-o OUT] [-m MARKS] [-q] [-l T] [-P PROF [-F N]] [-H HIST]\n"
+            "usage: %s [-o OUT] [-m MARKS] [-q] [-l T] [-P PROF [-F N | -a]] [-H HIST]\n"
             "       [-M FILE.map] [-s DIR]... [-u] FILE.ihx\n"
             "Runs an sdcc Z80 image (I/O as in ports/z80/plat_z80.c), counting\n"
             "T-states; -P writes T-states per function inside frames N.. (self,\n"
@@ -915,12 +921,12 @@ static void usage(const char *me)
 
 int main(int argc, char **argv)
 {
-    const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL, *mapf = NULL;
+    const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL, *mapf = NULL, *sizef = NULL;
     unsigned long long limit = 4000000000ULL;
     char mapbuf[1024], dir1[1024], dir2[1040];
     const char *state;
     int c, i, rc;
-    while ((c = getopt(argc, argv, "o:m:ql:P:F:H:M:s:uh")) != -1) {
+    while ((c = getopt(argc, argv, "o:m:ql:P:F:H:M:s:uz:ah")) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
         case 'm': marks = optarg; break;
@@ -935,6 +941,8 @@ int main(int argc, char **argv)
                 sym_dirs[nsym_dirs++] = optarg;
             break;
         case 'u': ucsim_timing = 1; break;
+        case 'z': sizef = optarg; break;
+        case 'a': prof_all = 1; break;
         case 'h': usage(argv[0]); return 0;
         default: usage(argv[0]); return 2;
         }
@@ -959,7 +967,7 @@ int main(int argc, char **argv)
         return 2;
     }
     init_tables();
-    if (proff || histf) {
+    if (proff || histf || sizef) {
         const char *ihx = argv[optind], *slash = strrchr(ihx, '/');
         size_t dl = slash ? (size_t)(slash - ihx) : 1;
         snprintf(dir1, sizeof dir1, "%.*s", (int)dl, slash ? ihx : ".");
@@ -976,16 +984,21 @@ int main(int argc, char **argv)
             snprintf(main_sym, sizeof main_sym, "%.*s.sym", (int)(n > 4 ? n - 4 : n), ihx);
         }
         prof_init(mapf);
+        if (sizef)
+            covered = calloc(65536, 1);
         if (histf) {
             hist_t = calloc(65536, sizeof *hist_t);
             hist_n = calloc(65536, sizeof *hist_n);
         }
     }
 
+    profiling = prof_all;
     while (!stopped && T < limit && !bad_op) {
         uint16_t pc = cur_pc = PC;
         int t = exec_main();
         T += (unsigned)t;
+        if (covered)
+            covered[pc] = 1;
         if (profiling && fns) {
             fns[fn_of[pc]].self += (unsigned)t;
             if (hist_t) {
@@ -1014,6 +1027,54 @@ int main(int argc, char **argv)
     if (exit_code >= 0)
         fprintf(mark_fp, "RAM stack_peak=%u\n", stack_peak);
     fflush(mark_fp);
+
+    if (sizef) {
+        /* code bytes per symbol: to the next symbol or the end of the
+         * code (the first byte no .ihx record set, from the end) */
+        FILE *zf = fopen(sizef, "w");
+        unsigned end = 0, tot = 0;
+        int *idx = malloc(sizeof(int) * (size_t)nfns), j, k;
+        unsigned *sz = malloc(sizeof(unsigned) * (size_t)nfns);
+        char *ran = calloc((size_t)nfns, 1);
+        for (i = 0; i < 65536; i++)
+            if (covered[i])
+                ran[fn_of[i]] = 1;
+        if (!zf) {
+            fprintf(stderr, "z80sim: cannot write %s\n", sizef);
+            return 2;
+        }
+        for (i = 0; i < nglobs; i++)
+            if (!strcmp(globs[i].name, "s__DATA"))
+                end = globs[i].addr;
+        for (i = 0; i < nfns; i++) {
+            unsigned next = i + 1 < nfns ? fns[i + 1].addr : end;
+            if (end && next > end)
+                next = end;
+            sz[i] = fns[i].addr < next && fns[i].addr >= 0x200 ? next - fns[i].addr : 0;
+            tot += sz[i];
+            idx[i] = i;
+        }
+        for (j = 1; j < nfns; j++)
+            for (k = j; k > 0 && sz[idx[k]] > sz[idx[k - 1]]; k--) {
+                int t2 = idx[k];
+                idx[k] = idx[k - 1];
+                idx[k - 1] = t2;
+            }
+        {
+            unsigned rb = 0;
+            for (i = 0; i < nfns; i++)
+                if (ran[i])
+                    rb += sz[i];
+            fprintf(zf, "# code bytes per symbol from 0x0200 to _DATA (0x%04X): %u in all, %u in"
+                    " symbols this run entered (\"run\")\n", end, tot, rb);
+        }
+        for (j = 0; j < nfns && sz[idx[j]]; j++)
+            fprintf(zf, "%6u %04x %-4s %s\n", sz[idx[j]], fns[idx[j]].addr, ran[idx[j]] ? "run" : "-", fns[idx[j]].name);
+        fclose(zf);
+        free(idx);
+        free(sz);
+        free(ran);
+    }
 
     if (proff) {
         FILE *pf = fopen(proff, "w");

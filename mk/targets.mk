@@ -75,20 +75,22 @@ C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 # Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
 # links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:
-#   mul16    r8_mul16 (-DR8_ASM_MUL16) and the multiply helpers the
-#            others use (always in when any is)
+#   mul16    r8_mul16 (-DR8_ASM_MUL16); the multiply helpers the others
+#            use (mulz_z80.s) are in with any kernel
 #   mullong  sdcc's __mullong (long * long), ahead of z80.lib's
 #   wire     the wire encoder's kernels (-DR8_ASM_WIRE, src/r8crc.h)
 #   trap xform project edge   the kernels of include/r8kern.h
 #            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
-# library); tests/targets/test_z80_kern.c (step xkern-z80) checks each
-# against its reference, whatever Z80_ASM says.
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap and
+# the multiplies against their references whatever Z80_ASM says, and
+# tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
+# bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong
+Z80_KALL   := mul16 mullong wire trap
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
-Z80_KERN   := $(if $(Z80_KERN0),mul16) $(filter-out mul16,$(Z80_KERN0))
-Z80_KOBJS  := $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
+Z80_KERN   := $(Z80_KERN0)
+Z80_KOBJS  := $(if $(Z80_KERN),$(XB)/z80/obj/mulz_z80.rel) $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
 Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter trap,$(Z80_KERN)),-DR8_ASM_TRAP) \
               $(if $(filter xform,$(Z80_KERN)),-DR8_ASM_XFORM) $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE)
@@ -288,6 +290,17 @@ $(XKERN): tests/targets/test_avr_kern.c src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
 	$(XENV) bash ports/xbuild.sh avr1284 $@ $(basename $@).wrap.c $(XKERN_OBJS) -- -Isrc -Itests/unity -Itests/targets
 
+# the Z80 kernels against their references (src/kern.c, compiled into the
+# test under other names), whatever Z80_ASM says: every kernel's object
+# is linked in (r8_mul16 is the library's)
+XKERNZ := $(XB)/z80/tests/z80_kern.ihx
+XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16,$(Z80_KALL))) \
+               $(XB)/z80/obj/unity_target.rel
+$(XKERNZ): tests/targets/test_z80_kern.c src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
+	@mkdir -p $(dir $@)
+	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
+	$(XENV) bash ports/xbuild.sh z80 $@ $(basename $@).wrap.c $(XKERNZ_OBJS) -- -Isrc -Itests/unity -Itests/targets
+
 # ---- test steps
 XT_NAMES   := $(TEST_C:tests/c/%.c=%)
 XT_avr1284 := $(XT_NAMES:%=$(XB)/avr1284/tests/%.elf)
@@ -296,7 +309,7 @@ XT_z80     := $(XT_NAMES:%=$(XB)/z80/tests/%.ihx)
 XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(XB)/6502/sizes.txt $(XB)/z80/sizes.txt
 
 .PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80 xprof-6502
-xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80)
+xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80) $(XKERNZ)
 
 # Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
 xtest-avr:
@@ -319,11 +332,14 @@ fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
 # The AVR assembly kernels against their C references, in the simulator.
-.PHONY: xtest-avr-kern
+.PHONY: xtest-avr-kern xtest-z80-kern
 xtest-avr-kern:
 	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
+# The Z80 assembly kernels against their C references, in ucsim.
+xtest-z80-kern:
+	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xkern-z80 bash tests/targets/unit.sh z80 $(XKERNZ)
 
-TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
+TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
 
 # ---- benchmark
 bench: $(SETUP)

@@ -11,7 +11,7 @@
 ;;   bits of a * b in HL:DE.
 ;;
 ;; Factors that are sign-extended 16-bit values (the library's products
-;; of two r8_s16) take r8_mul16's path (mul16_z80.s): ~400-700 T.  Others:
+;; of two r8_s16) take r8_mul16's path (r8z_smul16, mulz_z80.s): ~400-700 T.  Others:
 ;; a_lo * b_lo + ((a_lo * b_hi + a_hi * b_lo) << 16), up to three 16x16
 ;; passes (a zero high word skips its pass).
         .module mullong_z80

@@ -4,7 +4,9 @@ for the flat 64 KB map of ports/z80/plat_z80.c: code from 0x0200, statics
 right after the code, stack down from 0xFFFF.
 
 sdcc puts _DATA at a fixed --data-loc, so this links once to learn where
-the code ends, then again with --data-loc there.  It fails with
+the code ends, then again with --data-loc there.  An area _R8TAB (the
+tables of ports/z80/wire_z80.s that must sit on a 256-byte boundary) is
+placed at 0x0200 and the code after it.  It fails with
 "does not fit: ..." when the code reaches the statics' space or when less
 than 1 KB is left for the stack.  Prints "code=N data=N free=N".
 """
@@ -15,9 +17,11 @@ import sys
 STACK_MIN = 1024
 
 
-def link(out, objs, data_loc):
-    r = subprocess.run(["sdcc", "-mz80", "--code-loc", "0x0200", "--data-loc", "0x%04x" % data_loc,
-                        "-o", out] + objs, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+def link(out, objs, data_loc, code_loc=0x200):
+    # -b for _R8TAB only when there is one (sdld fails on an undefined area)
+    tab = ["-Wl-b_R8TAB=0x0200"] if code_loc != 0x200 else []
+    r = subprocess.run(["sdcc", "-mz80", "--code-loc", "0x%04x" % code_loc, "--data-loc", "0x%04x" % data_loc]
+                       + tab + ["-o", out] + objs, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     sys.stdout.write(r.stdout.decode("latin-1"))
     if r.returncode:
         sys.exit(r.returncode)
@@ -30,16 +34,20 @@ def link(out, objs, data_loc):
     data = ("DATA", "INITIALIZED", "BSEG", "BSS", "HEAP")
     code_end = max(s.get(a, 0) + l.get(a, 0) for a in code)
     data_end = max(s.get(a, 0) + l.get(a, 0) for a in data)
-    return code_end, data_end
+    return code_end, data_end, l.get("R8TAB", 0)
 
 
 def main():
     out, objs = sys.argv[1], sys.argv[2:]
-    code_end, _ = link(out, objs, 0x8000)
+    code_end, _, tab = link(out, objs, 0x8000)
+    code_loc = 0x200
+    if tab:  # the aligned tables first, the code after them
+        code_loc = (0x200 + tab + 0xFF) & ~0xFF
+        code_end, _, _ = link(out, objs, 0x8000, code_loc)
     if code_end >= 0x10000 - STACK_MIN:
         print("does not fit: code ends at 0x%X" % code_end)
         sys.exit(3)
-    code_end2, data_end = link(out, objs, code_end)
+    code_end2, data_end, _ = link(out, objs, code_end, code_loc)
     if code_end2 != code_end:
         print("z80link: code moved between links (0x%X -> 0x%X)" % (code_end, code_end2))
         sys.exit(1)

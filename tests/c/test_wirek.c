@@ -1,6 +1,7 @@
 /* test_wirek.c - the wire encoder's kernels (src/r8crc.h): on AVR the
- * assembly of ports/avr/wire_avr.S against its C89 reference (the *_c
- * functions), elsewhere the C versions; on every target both against a
+ * assembly of ports/avr/wire_avr.S (Z80: ports/z80/wire_z80.s, with
+ * Z80_ASM's wire) against its C89 reference (the *_c functions),
+ * elsewhere the C versions; on every target both against a
  * plain model of each kernel's contract, on random inputs. */
 #include "unity.h"
 #include "../../src/r8crc.h"
