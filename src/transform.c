@@ -180,8 +180,10 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
     r8_s16 *out = st->sv + 2u * g;      /* vsh 1: 2 entries a vertex */
     r8_s8 e;
     r8_u16 m;
-    if (R8_VSH(st) != 1)                /* (no run-time multiply) */
+#if R8_W_DEPTH || R8_W_GOURAUD
+    if (st->vsh != 1)                   /* (no run-time multiply) */
         out += 2u * g;
+#endif
     if (c->z < st->zn16) {
         out[0] = R8_VX_CLIP;
         return;
