@@ -45,7 +45,7 @@ SHADINGS = ["flat", "lambert", "gouraud"]
 SCENES = ["cube", "torus", "teapot", "cross", "wall"]
 COST_FRAMES = 8          # frames 0..7 per callgrind run
 SWEEP = [(24, 1, 4, 3), (50, 1, 5, 5), (100, 1, 10, 5), (200, 1, 10, 10),
-         (500, 2, 25, 5), (1000, 4, 25, 5), (2000, 8, 25, 5)]   # (tris, objects, seg, sides)
+         (500, 2, 25, 5), (1000, 4, 25, 5), (2000, 4, 50, 5)]   # (tris, objects, seg, sides); at most R8_DEMO_MAXOBJ = 4 objects
 
 
 def callgrind_instr(args):

@@ -85,7 +85,8 @@ SOAK_FAULTS ?= 10000000
 SOAK_PY_FAULTS ?= 1000000
 SOAK_JOBS ?= 2
 # the protocol version soaked: 2 (the emulator's version-1 stream rewritten
-# by tests/soak/wire2.py, until src/wire.c writes version 2) or 1
+# by tests/soak/wire2.py: rast8-emu uses the default library, which writes
+# version 1; -DR8_WIRE_CRC32 builds write version 2) or 1
 SOAK_WIRE ?= 2
 SOAK_V2     := $(BUILD)/soak/small-v2.bin
 SOAK_IN     := $(if $(filter 1,$(SOAK_WIRE)),$(SOAK_STREAM),$(SOAK_V2))
