@@ -51,3 +51,16 @@ def test_every_vector_named_in_the_spec_exists():
     cited |= {"%s %s" % m for m in re.findall(r"`(dec|dev)\s+([a-z0-9_]+)`", DOC)}
     cited = {c for c in cited if not c.endswith("_")}
     assert cited and cited <= names, sorted(cited - names)
+
+
+def test_seed_table_names_real_files():
+    import glob
+    doc = open(os.path.join(ROOT, "docs", "pipeline.md")).read()
+    part = doc.split("## The seed's algorithms", 1)[1].split("\n## ", 1)[0]
+    rows = [l for l in part.splitlines() if l.startswith("| ") and "---" not in l][1:]
+    assert len(rows) >= 14
+    for row in rows:
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[1] in ("built", "not built"), row
+        for path in re.findall(r"`([^`]+)`", cells[2]):
+            assert glob.glob(os.path.join(ROOT, path)), (row, path)
