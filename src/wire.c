@@ -189,21 +189,20 @@ static int tx_more(r8_u8 *b, const r8_u8 *src, unsigned n, unsigned *len)
 
 static int cfg_ok(const r8_tx_cfg *cfg)
 {
-    if (cfg->format > R8_FMT_IDX8)
-        return 0;
 #ifdef TX_MORE
-    if (cfg->codec >= R8_CODEC_COUNT && cfg->codec != R8_CODEC_BEST)
+    if (cfg->format > R8_FMT_IDX8 ||
+        (cfg->codec >= R8_CODEC_COUNT && cfg->codec != R8_CODEC_BEST))
         return 0;
-#else
-    if (cfg->codec >= R8_CODEC_COUNT)
-        return 0;
-#endif
 #ifdef R8_NO_HUFF
     if (cfg->codec == R8_CODEC_HUFF)
         return 0;
 #endif
 #ifdef R8_NO_LZW
     if (cfg->codec == R8_CODEC_LZW)
+        return 0;
+#endif
+#else
+    if (cfg->format > R8_FMT_IDX8 || cfg->codec > R8_CODEC_LZ77)
         return 0;
 #endif
 #ifdef R8_NO_RLE
