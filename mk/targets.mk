@@ -255,6 +255,9 @@ $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $
 $(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<
 
+$(XB)/$(1)/codecs.$(EXT_$(1)): bench/fw_codecs.c bench/codec_frame.h $$(XDEPS_$(1))
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< -- -Ibench
+
 $(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh ports/xbuild.sh
 	@mkdir -p $$(dir $$@)
 	@bash tests/targets/wrap.sh $$< > $$(basename $$@).wrap.c
@@ -338,7 +341,7 @@ fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
 # The AVR assembly kernels against their C references, in the simulator.
-.PHONY: xtest-avr-kern xtest-z80-kern
+.PHONY: xtest-avr-kern xtest-z80-kern bench-codecs
 xtest-avr-kern:
 	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
 # The Z80 assembly kernels against their C references, in ucsim.
@@ -350,3 +353,6 @@ TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xiden
 # ---- benchmark
 bench: $(SETUP)
 	$(PY) bench/bench.py
+# only the band codecs' figures (encode/decode cycles per byte per CPU)
+bench-codecs: $(SETUP)
+	$(PY) bench/codec_bench.py
