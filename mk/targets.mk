@@ -255,8 +255,8 @@ $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $
 $(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<
 
-$(XB)/$(1)/codecs.$(EXT_$(1)): bench/fw_codecs.c bench/codec_frame.h $$(XDEPS_$(1))
-	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< -- -Ibench
+$(XB)/$(1)/codecs.$(EXT_$(1)): bench/fw_codecs.c bench/codec_frame.h src/wire.c $$(XDEPS_$(1))
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< -- -Ibench -Isrc
 
 $(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh ports/xbuild.sh
 	@mkdir -p $$(dir $$@)
@@ -341,7 +341,7 @@ fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
 # The AVR assembly kernels against their C references, in the simulator.
-.PHONY: xtest-avr-kern xtest-z80-kern bench-codecs
+.PHONY: xtest-avr-kern xtest-z80-kern bench-codecs xident-codecs
 xtest-avr-kern:
 	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
 # The Z80 assembly kernels against their C references, in ucsim.
@@ -356,3 +356,8 @@ bench: $(SETUP)
 # only the band codecs' figures (encode/decode cycles per byte per CPU)
 bench-codecs: $(SETUP)
 	$(PY) bench/codec_bench.py
+# the codecs and the wire with the per-band choice give the Python bytes
+# on the 1284P, the 6502 and the Z80 (bench/fw_codecs.c)
+xident-codecs: $(SETUP)
+	@bash scripts/run-step.sh xident-codecs $(PY) bench/codec_bench.py --test
+TEST_STEPS += xident-codecs
