@@ -25,6 +25,7 @@
  * codec dispatch (tx_more); the target firmwares build this file
  * without them (mk/targets.mk), so their code is unchanged. */
 #include "r8crc.h"
+#include "r8config.h" /* the Arduino preset: R8_NO_HUFF, R8_NO_LZW (and R8_NO_LZ77) */
 
 /* The hot loops are kept out of line: each then has the registers to
  * itself (avr-gcc spills the pointers otherwise).  `register` on the
