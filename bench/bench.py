@@ -372,6 +372,7 @@ def write_md(recs, host, elapsed):
             L.append("| %s | %s | %s | %s | %s |" % (name, what, unit,
                      a[0]["cycles_per_unit"] if a else "-", z[0]["cycles_per_unit"] if z else "-"))
         L.append("")
+    L.extend(codec_section())
     L.extend(ram_budget_328())
     L.extend([
         "## Running the firmware yourself",
@@ -511,6 +512,19 @@ def micro():
                             "cycles": delta[mk + 1], "units": counts[k],
                             "cycles_per_unit": round(delta[mk + 1] / float(counts[k]), 1)})
     return res
+
+
+def codec_section():
+    """The band codecs per CPU (bench/codec_bench.py; build/bench/codecs.json)."""
+    import codec_bench  # bench/codec_bench.py (bench/ is on sys.path[0])
+    idt.make([t[1] for t in codec_bench.TARGETS] + ["build/emu/prof65"])
+    rows, bad = codec_bench.measure()
+    with open(os.path.join(ROOT, "build", "bench", "codecs.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    for b in bad:
+        print("bench: codecs: %s" % b)
+    return (["## Band codecs (bench/codec_bench.py, bench/fw_codecs.c; build/bench/codecs.json)", ""]
+            + codec_bench.table(rows) + [""])
 
 
 def ram_budget_328():

@@ -72,7 +72,7 @@ static void usage(FILE *f)
 "  --band H          band height in rows (default 8; multiple of 8 for page1)\n"
 "  --frames N        frames to send (default 64; 0 = forever)\n"
 "  --first N         number of the first frame (default 0)\n"
-"  --codec C         rle (default), lz77, raw\n"
+"  --codec C         rle (default), lz77, huff, lzw, raw, best (the smallest per band)\n"
 "  --full-period N   full frame every N frames (default 32; 0 = first only)\n"
 "  --no-dirty        send every band of every frame\n"
 "  --ram BYTES       the target's RAM budget: fail if the config needs more,\n"

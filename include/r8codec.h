@@ -1,4 +1,5 @@
-/* r8codec.h - the band payload codecs: the seed's RLE and LZ77.
+/* r8codec.h - the band payload codecs: the seed's RLE and LZ77, and
+ * (docs/protocol.md sections 3.4, 3.5) static Huffman and LZW.
  *
  * All functions work on caller buffers with explicit sizes and never
  * write past the size given.  They return R8_OK (0) or a negative
@@ -20,6 +21,22 @@
  *   the same buffer (one band), capped at R8_LZ77_WINDOW bytes back;
  *   the encoder needs no memory beyond its input and output, the
  *   decoder none beyond its output.  Worst case R8_LZ77_BOUND(n).
+ *
+ * HUFF (docs/protocol.md 3.4): each byte's code from one static
+ *   canonical Huffman table (src/huff_tab.h, 1..12 bits, tuned by
+ *   tools/huff_tune.py on the built-in scenes' bands), MSB first; the
+ *   last byte is padded with 1 bits (0..7).  No memory but the buffers;
+ *   the tables are 1 KB of flash.  Worst case R8_HUFF_BOUND(n).
+ *
+ * LZW (docs/protocol.md 3.5): 9-bit codes, MSB first, padded with 0
+ *   bits; 0..255 a byte, 256 + d dictionary entry d (d < R8_LZW_DICT =
+ *   128, then the dictionary is frozen).  Entry d is phrase d followed
+ *   by the first byte of phrase d + 1.  Encoder and decoder keep the
+ *   dictionary as the phrases' lengths: R8_LZW_DICT bytes on the stack,
+ *   the strings being in the band itself.  Worst case R8_LZW_BOUND(n).
+ *
+ * -DR8_NO_HUFF / -DR8_NO_LZW leave a codec out (the dispatch and the
+ * wire encoder then answer R8_E_ARG for it).
  */
 #ifndef R8CODEC_H
 #define R8CODEC_H
@@ -36,7 +53,12 @@
 #define R8_CODEC_RAW 0
 #define R8_CODEC_RLE 1
 #define R8_CODEC_LZ77 2
-#define R8_CODEC_COUNT 3
+#define R8_CODEC_HUFF 3
+#define R8_CODEC_LZW 4
+#define R8_CODEC_COUNT 5
+/* Not a wire id: r8_tx_cfg.codec asking the encoder to send each band
+ * with whichever built-in codec makes it smallest (docs/protocol.md 3.6). */
+#define R8_CODEC_BEST 0x0F
 
 #define R8_RLE_MAX 127
 #define R8_RLE_BOUND(n) ((unsigned)(n) + ((unsigned)(n) + 126u) / 127u)
@@ -50,7 +72,15 @@
 #define R8_LZ77_MIN_MATCH 5
 #define R8_LZ77_BOUND(n) ((unsigned)(n) + 2u * (((unsigned)(n) + 32766u) / 32767u))
 
-/* Name <-> id ("raw", "rle", "lz77"); -1 / 0 when unknown. */
+#define R8_HUFF_MAXLEN 12
+/* 12 bits a byte at worst: n + n/2, rounded up (no overflow for n < 43690) */
+#define R8_HUFF_BOUND(n) ((unsigned)(n) + ((unsigned)(n) + 1u) / 2u)
+#define R8_LZW_DICT 128
+#define R8_LZW_BITS 9
+#define R8_LZW_BOUND(n) ((unsigned)(n) + ((unsigned)(n) + 7u) / 8u)
+
+/* Name <-> id ("raw", "rle", "lz77", "huff", "lzw"; by name also "best"
+ * -> R8_CODEC_BEST); -1 / 0 when unknown. */
 int r8_codec_by_name(const char *name);
 const char *r8_codec_name(r8_u8 codec);
 
@@ -63,6 +93,16 @@ int r8_lz77_encode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
                    unsigned *out_len);
 int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
                    unsigned *out_len);
+
+int r8_huff_encode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
+                   unsigned *out_len);
+int r8_huff_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
+                   unsigned *out_len);
+
+int r8_lzw_encode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
+                  unsigned *out_len);
+int r8_lzw_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
+                  unsigned *out_len);
 
 /* Dispatch on a codec id (R8_CODEC_RAW copies). */
 int r8_codec_encode(r8_u8 codec, const r8_u8 *src, unsigned n, r8_u8 *dst,

@@ -19,6 +19,9 @@
  *                     face's scan is set up again in every band it
  *                     crosses; the least RAM, slower on tall faces)
  *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
+ *   R8_NO_HUFF        the static Huffman codec (src/huff.c, 1 KB of tables)
+ *   R8_NO_LZW         the LZW codec (src/lzw.c); without both, the wire
+ *                     encoder has no per-band choice (R8_CODEC_BEST)
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
  */
 #ifndef R8CONFIG_H
@@ -36,6 +39,8 @@
 #define R8_NO_GOURAUD
 #define R8_NO_CLIP
 #define R8_NO_LZ77
+#define R8_NO_HUFF
+#define R8_NO_LZW
 #define R8_NO_RT_NORMALS
 #define R8_PAGE1_ONLY
 #endif

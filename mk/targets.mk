@@ -150,6 +150,12 @@ $(XB)/scenes/scene_%.c: $(wildcard scenes/*.c scenes/*.h) ports/scene_strip.py
   $(foreach t,avr328 avr1284 6502,$(XB)/$(t)/obj/unity_target.o $(XSCENES:%=$(XB)/$(t)/obj/scene_%.o)) \
   $(XB)/z80/obj/unity_target.rel $(XSCENES:%=$(XB)/z80/obj/scene_%.rel)
 
+# The targets' wire encoder is built without Huffman, LZW and the
+# per-band choice (issue 13: src/huff.c and src/lzw.c stay in the
+# archive for the unit tests, but no firmware links them): the
+# firmwares' flash does not grow.
+$(XB)/%/obj/wire.o $(XB)/z80/obj/wire.rel: XNO := -DR8_NO_HUFF -DR8_NO_LZW
+
 # ---- compile rules per target (library, plat, unity, scene tables)
 # (the kernel stamp: rewritten only when AVR_ASM chooses other kernels)
 $(AVR_KSTAMP): avr-kstamp-force
@@ -158,7 +164,7 @@ avr-kstamp-force:
 define AVR_OBJ
 $(XB)/$(1)/obj/%.o: src/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
-	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) $(AVR_KDEFS) -c $$< -o $$@
+	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) $(AVR_KDEFS) $$(XNO) -c $$< -o $$@
 $(XB)/$(1)/obj/%.o: ports/avr/%.c $(XHDRS) $(AVR_KSTAMP)
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -c $$< -o $$@
@@ -182,7 +188,7 @@ $(eval $(call AVR_OBJ,avr1284))
 
 $(XB)/6502/obj/%.o: src/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
-	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
+	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS) $(XNO)
 $(XB)/6502/obj/%.o: ports/6502/%.c $(XHDRS)
 	@mkdir -p $(dir $@)
 	bash ports/6502/cc65c.sh $@ $< $(C65_CFLAGS)
@@ -206,7 +212,7 @@ $(Z80_KSTAMP): z80-kstamp-force
 z80-kstamp-force:
 $(XB)/z80/obj/%.rel: src/%.c $(XHDRS) $(Z80_KSTAMP)
 	@mkdir -p $(dir $@)
-	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) --Werror -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) $(XNO) --Werror -c -o $@ $<
 $(XB)/z80/obj/%.rel: ports/z80/%.s
 	@mkdir -p $(dir $@)
 	sdasz80 -o $@ $<
@@ -248,6 +254,9 @@ $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $
 
 $(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<
+
+$(XB)/$(1)/codecs.$(EXT_$(1)): bench/fw_codecs.c bench/codec_frame.h src/wire.c $$(XDEPS_$(1))
+	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< -- -Ibench -Isrc
 
 $(XB)/$(1)/tests/%.$(EXT_$(1)): tests/c/%.c $(XB)/$(1)/obj/unity_target.$(OBJ_$(1)) $$(XDEPS_$(1)) $(XHDRS) $(wildcard tests/c/*.h) tests/targets/wrap.sh ports/xbuild.sh
 	@mkdir -p $$(dir $$@)
@@ -332,7 +341,7 @@ fw: $(XREADY)
 	$(PY) tests/targets/identity.py --build-only $(XTARGETS)
 
 # The AVR assembly kernels against their C references, in the simulator.
-.PHONY: xtest-avr-kern xtest-z80-kern
+.PHONY: xtest-avr-kern xtest-z80-kern bench-codecs xident-codecs
 xtest-avr-kern:
 	@bash scripts/run-step.sh xkern-avr1284 bash tests/targets/unit.sh avr1284 $(XKERN)
 # The Z80 assembly kernels against their C references, in ucsim.
@@ -344,3 +353,11 @@ TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xiden
 # ---- benchmark
 bench: $(SETUP)
 	$(PY) bench/bench.py
+# only the band codecs' figures (encode/decode cycles per byte per CPU)
+bench-codecs: $(SETUP)
+	$(PY) bench/codec_bench.py
+# the codecs and the wire with the per-band choice give the Python bytes
+# on the 1284P, the 6502 and the Z80 (bench/fw_codecs.c)
+xident-codecs: $(SETUP)
+	@bash scripts/run-step.sh xident-codecs $(PY) bench/codec_bench.py --test
+TEST_STEPS += xident-codecs

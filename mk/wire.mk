@@ -57,10 +57,13 @@ demo: $(DEMO_SETUP)
 	@rm -rf $(BUILD)/demo && mkdir -p $(BUILD)/demo
 	@$(PY) -m rast8.demo --emu $(EMU) --frames $(DEMO_FRAMES) --out $(BUILD)/demo $(DEMO_ARGS)
 
-# Bytes per frame and compression ratio of the demo with RLE, LZ77 and
-# dirty bands (make stats DEMO_FRAMES=64).
+# Bytes per frame and compression ratio of the demo with each codec and
+# dirty bands, then bytes/frame of every codec on every built-in scene
+# (PAGE1 and IDX8) (make stats DEMO_FRAMES=64).
 stats: $(SETUP) $(EMU)
 	@$(PY) -m rast8.demo --emu $(EMU) --frames $(DEMO_FRAMES) --compare
+	@$(PY) -m rast8.demo --emu $(EMU) --frames $(DEMO_FRAMES) --codecs
+	@$(PY) -m rast8.demo --emu $(EMU) --frames $(DEMO_FRAMES) --codecs -- --format idx8
 
 # Library objects also depend on the private headers in src/ (the
 # pattern rule in the Makefile lists include/*.h only); without this a

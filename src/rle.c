@@ -13,7 +13,7 @@ static int streq(const char *a, const char *b)
     return *a == *b;
 }
 
-static const char *const codec_names[R8_CODEC_COUNT] = { "raw", "rle", "lz77" };
+static const char *const codec_names[R8_CODEC_COUNT] = { "raw", "rle", "lz77", "huff", "lzw" };
 
 int r8_codec_by_name(const char *name)
 {
@@ -21,11 +21,15 @@ int r8_codec_by_name(const char *name)
     for (i = 0; i < R8_CODEC_COUNT; i++)
         if (streq(name, codec_names[i]))
             return i;
+    if (streq(name, "best"))
+        return R8_CODEC_BEST;
     return -1;
 }
 
 const char *r8_codec_name(r8_u8 codec)
 {
+    if (codec == R8_CODEC_BEST)
+        return "best";
     return codec < R8_CODEC_COUNT ? codec_names[codec] : 0;
 }
 
@@ -140,6 +144,14 @@ int r8_codec_encode(r8_u8 codec, const r8_u8 *src, unsigned n, r8_u8 *dst,
     case R8_CODEC_LZ77:
         return r8_lz77_encode(src, n, dst, cap, out_len);
 #endif
+#ifndef R8_NO_HUFF
+    case R8_CODEC_HUFF:
+        return r8_huff_encode(src, n, dst, cap, out_len);
+#endif
+#ifndef R8_NO_LZW
+    case R8_CODEC_LZW:
+        return r8_lzw_encode(src, n, dst, cap, out_len);
+#endif
     default:
         *out_len = 0;
         return R8_E_ARG;
@@ -159,6 +171,14 @@ int r8_codec_decode(r8_u8 codec, const r8_u8 *src, unsigned n, r8_u8 *dst,
 #ifndef R8_NO_LZ77
     case R8_CODEC_LZ77:
         return r8_lz77_decode(src, n, dst, cap, out_len);
+#endif
+#ifndef R8_NO_HUFF
+    case R8_CODEC_HUFF:
+        return r8_huff_decode(src, n, dst, cap, out_len);
+#endif
+#ifndef R8_NO_LZW
+    case R8_CODEC_LZW:
+        return r8_lzw_decode(src, n, dst, cap, out_len);
 #endif
     default:
         *out_len = 0;

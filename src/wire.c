@@ -19,9 +19,13 @@
  * and its Fletcher-16.  (The CRC from 0xFFFF differs from it by a
  * constant for a given band size, so the bands sent are the same.)
  *
- * Codecs left out: -DR8_NO_RLE, -DR8_NO_LZ77 (the config is then
- * rejected with R8_E_ARG; raw is always built in). */
+ * Codecs left out: -DR8_NO_RLE, -DR8_NO_LZ77, -DR8_NO_HUFF, -DR8_NO_LZW
+ * (the config is then rejected with R8_E_ARG; raw is always built in).
+ * Huffman, LZW and the per-band choice (R8_CODEC_BEST) go through the
+ * codec dispatch (tx_more); the target firmwares build this file
+ * without them (mk/targets.mk), so their code is unchanged. */
 #include "r8crc.h"
+#include "r8config.h" /* the Arduino preset: R8_NO_HUFF, R8_NO_LZW (and R8_NO_LZ77) */
 
 /* The hot loops are kept out of line: each then has the registers to
  * itself (avr-gcc spills the pointers otherwise).  `register` on the
@@ -153,10 +157,55 @@ static void tx_send(register r8_tx *tx, register tx_st *s, unsigned n, r8_u8 all
     }
 }
 
+#if !defined(R8_NO_HUFF) || !defined(R8_NO_LZW)
+#define TX_MORE
+/* Encode band src[0..n) (n >= 1) into the BAND body b's payload with the
+ * codec b[5] (HUFF, LZW), or with BEST the codec of the smallest payload
+ * (ties to the lower id: the cheaper decoder), storing it in b[5].
+ * Returns 1, the length in *len, if the payload is smaller than n. */
+static int tx_more(r8_u8 *b, const r8_u8 *src, unsigned n, unsigned *len)
+{
+    r8_u8 k, best = R8_CODEC_RAW;
+    unsigned cap = n - 1u, l;
+    r8_u8 *dst = b + R8_WIRE_BAND_HDR;
+    if (b[5] != R8_CODEC_BEST)
+        return r8_codec_encode(b[5], src, n, dst, cap, len) == R8_OK;
+    for (k = R8_CODEC_RLE; k < R8_CODEC_COUNT; k++)
+        if (r8_codec_encode(k, src, n, dst, cap, &l) == R8_OK) {
+            best = k;
+            *len = l;
+            if (!l) /* (n >= 1: never) */
+                break;
+            cap = l - 1u;
+        }
+    if (best == R8_CODEC_RAW)
+        return 0;
+    b[5] = best;
+    /* the codecs tried after it may have written over its payload */
+    if (best != R8_CODEC_COUNT - 1)
+        r8_codec_encode(best, src, n, dst, *len, len);
+    return 1;
+}
+#endif
+
 static int cfg_ok(const r8_tx_cfg *cfg)
 {
-    if (cfg->format > R8_FMT_IDX8 || cfg->codec >= R8_CODEC_COUNT)
+#ifdef TX_MORE
+    if (cfg->format > R8_FMT_IDX8 ||
+        (cfg->codec >= R8_CODEC_COUNT && cfg->codec != R8_CODEC_BEST))
         return 0;
+#ifdef R8_NO_HUFF
+    if (cfg->codec == R8_CODEC_HUFF)
+        return 0;
+#endif
+#ifdef R8_NO_LZW
+    if (cfg->codec == R8_CODEC_LZW)
+        return 0;
+#endif
+#else
+    if (cfg->format > R8_FMT_IDX8 || cfg->codec > R8_CODEC_LZ77)
+        return 0;
+#endif
 #ifdef R8_NO_RLE
     if (cfg->codec == R8_CODEC_RLE)
         return 0;
@@ -319,6 +368,10 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     p[8] = tx->cfg.format;
     put16(p + 9, (unsigned)tx->cfg.band);
     p[11] = tx->cfg.codec;
+#ifdef TX_MORE
+    if (p[11] == R8_CODEC_BEST)
+        p[11] = R8_CODEC_RAW; /* no one codec: each BAND says its own */
+#endif
     p[12] = (r8_u8)(tx->full ? R8_FLAG_FULL : 0);
     p[13] = tx->cfg.npal;
     for (k = 0; k < 3u * tx->cfg.npal; k++)
@@ -534,6 +587,9 @@ static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n
 #ifndef R8_NO_LZ77
     if (b[5] != R8_CODEC_LZ77 ||
         r8_lz77_encode(src, n, b + R8_WIRE_BAND_HDR, n - 1u, &len) != R8_OK)
+#endif
+#ifdef TX_MORE
+    if (b[5] <= R8_CODEC_LZ77 || !tx_more(b, src, n, &len))
 #endif
     {
         /* raw: the codec is raw, or would not make the band smaller */

@@ -1,12 +1,18 @@
-"""The seed's RLE and LZ77 codecs, CRC-16/CCITT-FALSE and COBS.
+"""The band codecs (the seed's RLE and LZ77, static Huffman, LZW),
+CRC-16/CCITT-FALSE and COBS.
 
 Byte-for-byte the same as the C library (src/rle.c, src/lz77.c,
-src/crc16.c, src/cobs.c); tests/vectors/ holds the shared vectors.
+src/huff.c, src/lzw.c, src/crc16.c, src/cobs.c); tests/vectors/ holds the
+shared vectors.
 """
 import binascii
 
-RAW, RLE, LZ77 = 0, 1, 2
-CODEC_NAMES = {"raw": RAW, "rle": RLE, "lz77": LZ77}
+from .hufftab import HUFF_LEN
+
+RAW, RLE, LZ77, HUFF, LZW = 0, 1, 2, 3, 4
+BEST = 0x0F             # not a wire id: the smallest codec per band
+CODEC_COUNT = 5
+CODEC_NAMES = {"raw": RAW, "rle": RLE, "lz77": LZ77, "huff": HUFF, "lzw": LZW}
 CODEC_BY_ID = {v: k for k, v in CODEC_NAMES.items()}
 
 RLE_MAX = 127
@@ -164,6 +170,145 @@ def lz77_decode(data, limit=None):
     return bytes(out)
 
 
+# ---- static canonical Huffman (docs/protocol.md 3.4)
+HUFF_MAXLEN = 12
+
+
+def _huff_tables():
+    order = sorted(range(256), key=lambda s: (HUFF_LEN[s], s))
+    codes = [0] * 256
+    code = prev = 0
+    for s in order:
+        code <<= HUFF_LEN[s] - prev
+        prev = HUFF_LEN[s]
+        codes[s] = code
+        code += 1
+    # decoding: (length, code) -> byte
+    return codes, {(HUFF_LEN[s], codes[s]): s for s in range(256)}
+
+
+HUFF_CODE, _HUFF_DEC = _huff_tables()
+
+
+def huff_bound(n):
+    return n + (n + 1) // 2
+
+
+def huff_encode(data):
+    bits = "".join(format(HUFF_CODE[b], "0%db" % HUFF_LEN[b]) for b in bytes(data))
+    bits += "1" * (-len(bits) % 8)
+    return int(bits, 2).to_bytes(len(bits) // 8, "big") if bits else b""
+
+
+def huff_decode(data, limit=None):
+    data = bytes(data)
+    out = bytearray()
+    nbits = 8 * len(data)
+    val = int.from_bytes(data, "big") if data else 0
+    pos = 0
+    while pos < nbits:
+        rest = nbits - pos
+        if rest < 8 and val & ((1 << rest) - 1) == (1 << rest) - 1:
+            break                       # the padding: 1..7 one bits
+        code = 0
+        for ln in range(1, HUFF_MAXLEN + 1):
+            if pos >= nbits:
+                raise CodecError("huff: code truncated at bit %d" % pos)
+            code = (code << 1) | ((val >> (nbits - 1 - pos)) & 1)
+            pos += 1
+            sym = _HUFF_DEC.get((ln, code))
+            if sym is not None:
+                break
+        else:
+            raise CodecError("huff: no code at bit %d" % pos)   # (a complete code: never)
+        if limit is not None and len(out) + 1 > limit:
+            raise CodecError("huff: output larger than %d" % limit)
+        out.append(sym)
+    return bytes(out)
+
+
+# ---- LZW, 9-bit codes, 128 entries (docs/protocol.md 3.5)
+LZW_DICT = 128
+LZW_BITS = 9
+
+
+def lzw_bound(n):
+    return n + (n + 7) // 8
+
+
+def lzw_encode(data):
+    data = bytes(data)
+    n = len(data)
+    plen = []               # phrase lengths; entry d = data[start(d): start(d) + plen[d] + 1]
+    starts = []
+    codes = []
+    i = 0
+    while i < n:
+        best, code = 1, data[i]
+        for d in range(min(len(codes), LZW_DICT)):
+            el = plen[d] + 1
+            st = starts[d]
+            if el > best and el <= n - i and data[st:st + el] == data[i:i + el]:
+                best, code = el, 256 + d
+        if len(codes) < LZW_DICT:
+            plen.append(best)
+            starts.append(i)
+        codes.append(code)
+        i += best
+    bits = "".join(format(c, "09b") for c in codes)
+    bits += "0" * (-len(bits) % 8)
+    return int(bits, 2).to_bytes(len(bits) // 8, "big") if bits else b""
+
+
+def lzw_decode(data, limit=None):
+    data = bytes(data)
+    nbits = 8 * len(data)
+    val = int.from_bytes(data, "big") if data else 0
+    out = bytearray()
+    plen, starts = [], []
+    pos = p = 0
+    while nbits - pos >= LZW_BITS:
+        code = (val >> (nbits - pos - LZW_BITS)) & 0x1FF
+        pos += LZW_BITS
+        start = len(out)
+        if code < 256:
+            el = 1
+            if limit is not None and len(out) + 1 > limit:
+                raise CodecError("lzw: output larger than %d" % limit)
+            out.append(code)
+        else:
+            d = code - 256
+            if d >= p or d >= LZW_DICT:
+                raise CodecError("lzw: code %d before its entry at bit %d" % (code, pos - LZW_BITS))
+            el = plen[d] + 1
+            if limit is not None and len(out) + el > limit:
+                raise CodecError("lzw: output larger than %d" % limit)
+            st = starts[d]
+            for k in range(el):
+                out.append(out[st + k])
+        if p < LZW_DICT:
+            plen.append(el)
+            starts.append(start)
+        p += 1
+    if nbits - pos >= 8:
+        raise CodecError("lzw: code truncated at bit %d" % pos)
+    if val & ((1 << (nbits - pos)) - 1):
+        raise CodecError("lzw: padding bits not 0")
+    return bytes(out)
+
+
+def best_encode(data):
+    """(codec, payload) of the smallest payload, ties to the lower id (src/wire.c
+    tx_more); (RAW, data) when no codec makes it smaller."""
+    data = bytes(data)
+    best, enc = RAW, data
+    for c in (RLE, LZ77, HUFF, LZW):
+        e = encode(c, data)
+        if len(e) < len(enc):
+            best, enc = c, e
+    return best, enc
+
+
 def encode(codec, data):
     if codec == RAW:
         return bytes(data)
@@ -171,6 +316,10 @@ def encode(codec, data):
         return rle_encode(data)
     if codec == LZ77:
         return lz77_encode(data)
+    if codec == HUFF:
+        return huff_encode(data)
+    if codec == LZW:
+        return lzw_encode(data)
     raise CodecError("unknown codec %r" % codec)
 
 
@@ -183,6 +332,10 @@ def decode(codec, data, limit=None):
         return rle_decode(data, limit)
     if codec == LZ77:
         return lz77_decode(data, limit)
+    if codec == HUFF:
+        return huff_decode(data, limit)
+    if codec == LZW:
+        return lzw_decode(data, limit)
     raise CodecError("unknown codec %r" % codec)
 
 

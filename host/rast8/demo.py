@@ -5,6 +5,7 @@ each codec, with and without dirty bands.
 
     python -m rast8.demo --emu build/rast8-emu --frames 64 --out build/demo
     python -m rast8.demo --emu build/rast8-emu --frames 64 --compare [--json]
+    python -m rast8.demo --emu build/rast8-emu --frames 64 --codecs [--json] [-- --format idx8]
 """
 import argparse
 import json
@@ -69,9 +70,59 @@ CONFIGS = [
     ("raw, every band", ["--codec", "raw", "--no-dirty"]),
     ("rle, every band", ["--codec", "rle", "--no-dirty"]),
     ("lz77, every band", ["--codec", "lz77", "--no-dirty"]),
+    ("huff, every band", ["--codec", "huff", "--no-dirty"]),
+    ("lzw, every band", ["--codec", "lzw", "--no-dirty"]),
+    ("best, every band", ["--codec", "best", "--no-dirty"]),
     ("rle + dirty bands", ["--codec", "rle"]),
     ("lz77 + dirty bands", ["--codec", "lz77"]),
+    ("best + dirty bands", ["--codec", "best"]),
 ]
+CODECS = ["raw", "rle", "lz77", "huff", "lzw", "best"]
+
+
+def builtin_scenes(emu):
+    """The emulator's built-in scene names (from its --help)."""
+    h = subprocess.run([emu, "--help"], capture_output=True, text=True).stdout
+    for line in h.splitlines():
+        if line.strip().startswith("--scene") and "):" in line:
+            return line.split("):", 1)[1].split()
+    return ["cube"]
+
+
+def codec_table(emu, frames, extra, as_json=False):
+    """Bytes per frame, every band sent (--no-dirty), for every codec on
+    every built-in scene (make stats)."""
+    rows = []
+    scenes = builtin_scenes(emu)
+    with tempfile.TemporaryDirectory() as td:
+        path = os.path.join(td, "s.bin")
+        for i, scene in enumerate(scenes):
+            row = {"scene": scene}
+            for c in CODECS:
+                if sys.stderr.isatty():
+                    print("\rstats: %s %s (%d/%d)   " % (scene, c, i + 1, len(scenes)),
+                          end="", file=sys.stderr)
+                subprocess.run([emu, "-q", "--frames", str(frames), "--out", path, "--scene", scene,
+                                "--codec", c, "--no-dirty"] + extra, check=True)
+                data = open(path, "rb").read()
+                dec = StreamDecoder()
+                got = dec.feed(data)
+                if dec.bad_packets + dec.dropped + dec.incomplete or len(got) != frames:
+                    print("stats: %s %s: the stream did not decode cleanly" % (scene, c),
+                          file=sys.stderr)
+                    return 1
+                row[c] = round(len(data) / len(got), 1)
+            rows.append(row)
+    if sys.stderr.isatty():
+        print("\r" + " " * 40 + "\r", end="", file=sys.stderr)
+    if as_json:
+        print(json.dumps(rows, indent=1))
+        return 0
+    print("bytes/frame, every band sent, %d frames, %s" % (frames, " ".join(extra) or "128x64 page1"))
+    print("%-10s" % "scene" + "".join("%9s" % c for c in CODECS))
+    for r in rows:
+        print("%-10s" % r["scene"] + "".join("%9.1f" % r[c] for c in CODECS))
+    return 0
 
 
 def compare(emu, frames, extra, as_json=False):
@@ -110,9 +161,13 @@ def main(argv=None):
     ap.add_argument("--out", default="build/demo")
     ap.add_argument("--baud", type=int, default=None, help="pace the emulator (default unpaced)")
     ap.add_argument("--compare", action="store_true", help="codec / dirty-band table")
+    ap.add_argument("--codecs", action="store_true",
+                    help="bytes/frame of every codec on every built-in scene")
     ap.add_argument("--json", action="store_true")
     ap.add_argument("emu_args", nargs="*", help="more rast8-emu options (after --)")
     a = ap.parse_args(argv)
+    if a.codecs:
+        return codec_table(a.emu, a.frames, a.emu_args, a.json)
     if a.compare:
         return compare(a.emu, a.frames, a.emu_args, a.json)
     return run_demo(a.emu, a.frames, a.out, a.emu_args, a.baud)

@@ -326,7 +326,7 @@ class StreamDecoder:
         band = (p[9] << 8) | p[10]
         codec = p[11]
         if (p[1] not in VERSIONS or n != START_BYTES + 3 * npal or fmt > FMT_IDX8 or
-                codec > 2 or w == 0 or h == 0 or w > MAX_DIM or h > MAX_DIM or
+                codec >= _codec.CODEC_COUNT or w == 0 or h == 0 or w > MAX_DIM or h > MAX_DIM or
                 band == 0 or band > h or (fmt == FMT_PAGE1 and band & 7)):
             return self._bad("bad frame start (version %d)" % p[1])
         f = (p[2] << 8) | p[3]
@@ -363,7 +363,7 @@ class StreamDecoder:
 
     def _on_band(self, p, crc):
         n = len(p)
-        if n < BAND_HDR or p[5] > 2:
+        if n < BAND_HDR or p[5] >= _codec.CODEC_COUNT:
             return self._bad("bad band header")
         f = (p[1] << 8) | p[2]
         y0 = (p[3] << 8) | p[4]
@@ -474,7 +474,8 @@ class Encoder:
         body = bytes([PKT_FRAME_START, self.version]) + number.to_bytes(2, "big")
         body += self.width.to_bytes(2, "big") + self.height.to_bytes(2, "big")
         body += bytes([self.fmt]) + self.band.to_bytes(2, "big")
-        body += bytes([self.codec, FLAG_FULL if full else 0, len(self.palette)]) + pal
+        announced = _codec.RAW if self.codec == _codec.BEST else self.codec
+        body += bytes([announced, FLAG_FULL if full else 0, len(self.palette)]) + pal
         out += packet(body)
         sent = 0
         for i in range(self.nbands):
@@ -488,7 +489,10 @@ class Encoder:
             if not full and not changed:
                 continue
             codec = self.codec
-            enc = _codec.encode(codec, data) if codec != _codec.RAW else None
+            if codec == _codec.BEST:
+                codec, enc = _codec.best_encode(data)
+            else:
+                enc = _codec.encode(codec, data) if codec != _codec.RAW else None
             if enc is None or len(enc) > len(data) - 1:
                 codec, enc = _codec.RAW, data
             out += packet(bytes([PKT_BAND]) + number.to_bytes(2, "big") +

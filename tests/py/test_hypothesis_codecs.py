@@ -40,7 +40,8 @@ def _py_decode(fn, d, limit):
 @given(data)
 @settings(max_examples=40, deadline=None)
 def test_encoders_match_c(d):
-    for name, enc in (("rle", C.rle_encode), ("lz77", C.lz77_encode), ("cobs", C.cobs_encode)):
+    for name, enc in (("rle", C.rle_encode), ("lz77", C.lz77_encode), ("cobs", C.cobs_encode),
+                      ("huff", C.huff_encode), ("lzw", C.lzw_encode)):
         rc, out = _c([name, "encode"], d)
         assert rc == 0 and out == enc(d), name
 
@@ -50,7 +51,8 @@ def test_encoders_match_c(d):
 def test_decoders_match_c_on_mutated_input(d, limit, draw):
     # a valid encoding with a few bytes changed, cut or extended: both
     # decoders accept it with the same output or both refuse it
-    for name, enc, dec in (("rle", C.rle_encode, C.rle_decode), ("lz77", C.lz77_encode, C.lz77_decode)):
+    for name, enc, dec in (("rle", C.rle_encode, C.rle_decode), ("lz77", C.lz77_encode, C.lz77_decode),
+                           ("huff", C.huff_encode, C.huff_decode), ("lzw", C.lzw_encode, C.lzw_decode)):
         e = bytearray(enc(d))
         for _ in range(draw.draw(st.integers(0, 3))):
             if e:
@@ -66,7 +68,8 @@ def test_decoders_match_c_on_mutated_input(d, limit, draw):
 @given(data, st.data())
 @settings(max_examples=100, deadline=None)
 def test_truncated_encoding_gives_prefix_or_error(d, draw):
-    for enc, dec in ((C.rle_encode, C.rle_decode), (C.lz77_encode, C.lz77_decode)):
+    for enc, dec in ((C.rle_encode, C.rle_decode), (C.lz77_encode, C.lz77_decode),
+                     (C.huff_encode, C.huff_decode), (C.lzw_encode, C.lzw_decode)):
         e = enc(d)
         cut = draw.draw(st.integers(0, len(e)))
         try:

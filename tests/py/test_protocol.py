@@ -20,6 +20,10 @@ CONFIGS = [
     ("--format", "row1", "--band", "5"),
     ("--format", "idx8", "--width", "48", "--height", "30", "--band", "7"),
     ("--width", "64", "--height", "40", "--band", "40"),
+    ("--codec", "huff"),
+    ("--codec", "lzw"),
+    ("--codec", "best"),
+    ("--codec", "best", "--format", "idx8", "--width", "48", "--height", "30", "--band", "7"),
 ]
 
 
@@ -36,7 +40,7 @@ def test_python_encoder_matches_emulator_bytes(emu_stream, args):
     pal = [(v, v, v) for v in (0, 16, 32, 48, 64, 80, 96, 112, 128, 143, 159, 175, 191,
                                207, 223, 239, 255)] if fmt == 2 else []
     enc = Encoder(fmt, w, h, int(_opt(args, "--band", 8)),
-                  C.CODEC_NAMES[_opt(args, "--codec", "rle")],
+                  dict(C.CODEC_NAMES, best=C.BEST)[_opt(args, "--codec", "rle")],
                   int(_opt(args, "--full-period", 32)), "--no-dirty" not in args, pal)
     ours = enc.sync() + b"".join(enc.frame(f.number, f.pixels) for f in frames)
     assert ours == stream
