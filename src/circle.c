@@ -57,7 +57,8 @@ static void circle(r8_fb *fb, r8_s16 cx0, r8_s16 cy0, r8_s16 r, r8_u8 c, int fil
             span(fb, cy + x, cx - y, cx + y, c, ylo, yhi);
             if (x)
                 span(fb, cy - x, cx - y, cx + y, c, ylo, yhi);
-            if (ydown || x + 1 > y) {   /* row y's widest span */
+            if (ydown) {    /* row y's widest span (a last column with
+                               x == y is row x's span above) */
                 span(fb, cy + y, cx - x, cx + x, c, ylo, yhi);
                 span(fb, cy - y, cx - x, cx + x, c, ylo, yhi);
             }
