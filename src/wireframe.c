@@ -15,8 +15,9 @@
 
 #ifndef R8_NO_WIRE
 
-/* floor(v / 16) for any r8_s16 v */
-#define PIX(v) ((r8_s16)((((r8_s32)(v) + 32768L) >> 4) - 2048))
+/* floor(v / 16): a pixel of a 12.4 coordinate (any r8_s16: the sum
+ * wraps in 16 bits) */
+#define PIX(v) R8_FLOOR16(v)
 
 /* Screen winding (Judd's cull leaves back faces in the buckets): 1 for
  * a front face (clockwise on screen, y down: positive area). */
@@ -49,7 +50,7 @@ static void wire_face(r8_state *st, r8_fid g, r8_fb *fb, r8_s16 y0, r8_s16 y1,
 {
     r8_acthead *e = (r8_acthead *)(void *)st->tmp;
     const r8_s16 **vp = e->c.vp;
-    r8_s16 ylo, yhi, ra, rb;
+    r8_s16 ylo, yhi, ra, rb, ys0 = (r8_s16)(y0 * 16), ys1 = (r8_s16)(y1 * 16);
     r8_u8 n, j;
     n = r8_face_vp(st, g, vp);
     ylo = yhi = vp[0][1];
@@ -59,7 +60,8 @@ static void wire_face(r8_state *st, r8_fid g, r8_fb *fb, r8_s16 y0, r8_s16 y1,
         if (vp[j][1] > yhi)
             yhi = vp[j][1];
     }
-    if (PIX(yhi) < y0 || PIX(ylo) >= y1)
+    /* rows PIX(ylo) .. PIX(yhi) miss [y0, y1): 16 y0 fits (height <= 1024) */
+    if (yhi < ys0 || ylo >= ys1)
         return;
     if (st->judd && !front(vp, n))
         return;
@@ -67,11 +69,11 @@ static void wire_face(r8_state *st, r8_fid g, r8_fb *fb, r8_s16 y0, r8_s16 y1,
         r8_scanx_fill(&e->c, y1, 0, fb, 0);
     for (j = 0; j < n; j++) {
         const r8_s16 *a = vp[j], *b = vp[j + 1 < n ? j + 1 : 0];
-        ra = PIX(a[1]);
-        rb = PIX(b[1]);
-        if ((ra < y0 && rb < y0) || (ra >= y1 && rb >= y1))
+        ra = a[1];
+        rb = b[1];
+        if ((ra < ys0 && rb < ys0) || (ra >= ys1 && rb >= ys1))
             continue;      /* not in this band */
-        r8_line(fb, PIX(a[0]), ra, PIX(b[0]), rb, colour);
+        r8_line(fb, PIX(a[0]), PIX(ra), PIX(b[0]), PIX(rb), colour);
     }
 }
 

@@ -13,7 +13,8 @@
 static r8_s32 ceil_md(r8_s32 a, r8_s32 b, r8_s32 c)
 {
     r8_s32 t = r8_muldiv(a, b, c);
-    if ((r8_u32)a * (r8_u32)b - (r8_u32)t * (r8_u32)c != 0)
+    if (t != 2147483647L &&
+        (r8_u32)a * (r8_u32)b - (r8_u32)t * (r8_u32)c != 0)
         t++;
     return t;
 }

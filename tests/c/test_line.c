@@ -145,6 +145,42 @@ static void test_line_bands_equal_whole(void)
     TEST_ASSERT_TRUE(hits > 0);
 }
 
+/* The three layouts light the same pixels (each has its own walk). */
+static void test_line_formats_agree(void)
+{
+    static r8_u8 row[W * H / 8 + 4];
+    int i, hits = 0;
+    r8_s16 p[4], x, y;
+    r8_fb a, b, c;
+    for (i = 0; i < N_CASES; i++) {
+        unsigned k;
+        pick(p);
+        clear(whole);
+        clear(part);
+        for (k = 0; k < sizeof row; k++)
+            row[k] = 0;
+        r8_fb_init(&a, whole, R8_FMT_PAGE1, W, H, 0, H);
+        r8_fb_init(&b, part, R8_FMT_IDX8, W, H, 0, H);
+        r8_fb_init(&c, row, R8_FMT_ROW1, W, H, 0, H);
+        r8_line(&a, p[0], p[1], p[2], p[3], 1);
+        r8_line(&b, p[0], p[1], p[2], p[3], 9);
+        r8_line(&c, p[0], p[1], p[2], p[3], 1);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++) {
+                int on = r8_fb_get(&a, x, y);
+                TEST_ASSERT_EQUAL_INT(on ? 9 : 0, r8_fb_get(&b, x, y));
+                TEST_ASSERT_EQUAL_INT(on, r8_fb_get(&c, x, y));
+                hits += on;
+            }
+        TEST_ASSERT_EQUAL_INT(0, part[W * H] | part[W * H + 1] | row[W * H / 8]);
+        /* colour 0 clears exactly those pixels again */
+        r8_line(&a, p[2], p[3], p[0], p[1], 0);
+        for (k = 0; k < W * H / 8; k++)
+            TEST_ASSERT_EQUAL_INT(0, whole[k]);
+    }
+    TEST_ASSERT_TRUE(hits > 0);
+}
+
 static void check_wu(const r8_s16 *p, r8_u8 base)
 {
     r8_fb fb;
@@ -248,6 +284,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_line_bands_equal_whole);
+    RUN_TEST(test_line_formats_agree);
     RUN_TEST(test_wu_idx8_exact);
     RUN_TEST(test_wu_max_blend_and_ends);
     RUN_TEST(test_wu_dither_1bpp);
