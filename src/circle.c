@@ -38,6 +38,41 @@ static void span(r8_fb *fb, r8_s32 y, r8_s32 x0, r8_s32 x1, r8_u8 c, r8_s32 ylo,
         r8_fb_span(fb, (r8_s16)y, (r8_s16)x0, (r8_s16)(x1 + 1), c);
 }
 
+/* The same walk in 16 bits (|cx| + r, |cy| + r <= 32766, r <= 8191:
+ * every coordinate and d fit r8_s16); r8_fb_pixel and r8_fb_span clip. */
+static void circle16(r8_fb *fb, r8_s16 cx, r8_s16 cy, r8_s16 r, r8_u8 c, int fill)
+{
+    r8_s16 x = 0, y = r, d = (r8_s16)(1 - r);
+    while (x <= y) {
+        int ydown = d >= 0;
+        if (fill) {
+            r8_fb_span(fb, (r8_s16)(cy + x), (r8_s16)(cx - y), (r8_s16)(cx + y + 1), c);
+            if (x)
+                r8_fb_span(fb, (r8_s16)(cy - x), (r8_s16)(cx - y), (r8_s16)(cx + y + 1), c);
+            if (ydown) {
+                r8_fb_span(fb, (r8_s16)(cy + y), (r8_s16)(cx - x), (r8_s16)(cx + x + 1), c);
+                r8_fb_span(fb, (r8_s16)(cy - y), (r8_s16)(cx - x), (r8_s16)(cx + x + 1), c);
+            }
+        } else {
+            r8_fb_pixel(fb, (r8_s16)(cx + x), (r8_s16)(cy + y), c);
+            r8_fb_pixel(fb, (r8_s16)(cx - x), (r8_s16)(cy + y), c);
+            r8_fb_pixel(fb, (r8_s16)(cx + x), (r8_s16)(cy - y), c);
+            r8_fb_pixel(fb, (r8_s16)(cx - x), (r8_s16)(cy - y), c);
+            r8_fb_pixel(fb, (r8_s16)(cx + y), (r8_s16)(cy + x), c);
+            r8_fb_pixel(fb, (r8_s16)(cx - y), (r8_s16)(cy + x), c);
+            r8_fb_pixel(fb, (r8_s16)(cx + y), (r8_s16)(cy - x), c);
+            r8_fb_pixel(fb, (r8_s16)(cx - y), (r8_s16)(cy - x), c);
+        }
+        if (ydown) {
+            d = (r8_s16)(d + 2 * (x - y) + 5);
+            y--;
+        } else {
+            d = (r8_s16)(d + 2 * x + 3);
+        }
+        x++;
+    }
+}
+
 /* fill: 0 outline, 1 disc */
 static void circle(r8_fb *fb, r8_s16 cx0, r8_s16 cy0, r8_s16 r, r8_u8 c, int fill)
 {
@@ -49,6 +84,10 @@ static void circle(r8_fb *fb, r8_s16 cx0, r8_s16 cy0, r8_s16 r, r8_u8 c, int fil
         return;
     if (r == 0) {
         dot(fb, cx, cy, c, ylo, yhi);
+        return;
+    }
+    if (r <= 8191 && cx >= -32766 + r && cx <= 32766 - r && cy >= -32766 + r && cy <= 32766 - r) {
+        circle16(fb, cx0, cy0, r, c, fill);
         return;
     }
     while (x <= y) {

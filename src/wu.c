@@ -58,7 +58,7 @@ void r8_wu_line(r8_fb *fb, r8_s16 x0, r8_s16 y0, r8_s16 x1, r8_s16 y1, r8_u8 bas
     r8_s32 dx = (r8_s32)x1 - x0, dy = (r8_s32)y1 - y0;
     r8_s32 adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
     int steep = ady > adx;
-    r8_s32 ma0, mi0, len, dm, mlo, mhi, nlo, nhi, klo, khi, k, q, sm;
+    r8_s32 ma0, mi0, len, dm, mlo, mhi, nlo, nhi, klo, khi, q, sm;
     r8_u16 r, e, w, a16, b16, ulen, udm;
     nlo = fb->y0 > 0 ? fb->y0 : 0;
     nhi = (r8_s32)fb->y0 + fb->rows;
@@ -123,34 +123,44 @@ void r8_wu_line(r8_fb *fb, r8_s16 x0, r8_s16 y0, r8_s16 x1, r8_s16 y1, r8_u8 bas
         a16 = (r8_u16)(t / ulen);
         b16 = (r8_u16)(t % ulen);
     }
-    for (k = klo; k <= khi; k++) {
-        r8_s32 ma = ma0 + k, m1 = mi0 + sm * q, m2 = m1 + sm;
-        if (m1 >= nlo && m1 <= nhi) {
-            if (steep)
-                plot(fb, (r8_s16)m1, (r8_s16)ma, (r8_u8)(16u - w), base);
-            else
-                plot(fb, (r8_s16)ma, (r8_s16)m1, (r8_u8)(16u - w), base);
-        }
-        if (w && m2 >= nlo && m2 <= nhi) {
-            if (steep)
-                plot(fb, (r8_s16)m2, (r8_s16)ma, (r8_u8)w, base);
-            else
-                plot(fb, (r8_s16)ma, (r8_s16)m2, (r8_u8)w, base);
-        }
-        /* r += dm (mod len, carry into q); 16 r = w len + e follows */
-        if (e >= ulen - b16) {
-            e = (r8_u16)(e - (ulen - b16));
-            w++;
-        } else {
-            e = (r8_u16)(e + b16);
-        }
-        w = (r8_u16)(w + a16);
-        if (r >= ulen - udm) {
-            r = (r8_u16)(r - (ulen - udm));
-            q++;
-            w = (r8_u16)(w - 16u);
-        } else {
-            r = (r8_u16)(r + udm);
+    {
+        /* 16-bit walk: the major coordinate stays in the frame, the minor
+         * pair within one pixel of the band */
+        r8_s16 ma = (r8_s16)(ma0 + klo), m1 = (r8_s16)(mi0 + sm * q), m2;
+        r8_s16 s = (r8_s16)sm, lo = (r8_s16)nlo, hi = (r8_s16)nhi;
+        r8_u16 n = (r8_u16)(khi - klo);
+        for (;;) {
+            m2 = (r8_s16)(m1 + s);
+            if (m1 >= lo && m1 <= hi) {
+                if (steep)
+                    plot(fb, m1, ma, (r8_u8)(16u - w), base);
+                else
+                    plot(fb, ma, m1, (r8_u8)(16u - w), base);
+            }
+            if (w && m2 >= lo && m2 <= hi) {
+                if (steep)
+                    plot(fb, m2, ma, (r8_u8)w, base);
+                else
+                    plot(fb, ma, m2, (r8_u8)w, base);
+            }
+            if (!n--)
+                break;
+            ma++;
+            /* r += dm (mod len, carry into the minor); 16 r = w len + e */
+            if (e >= ulen - b16) {
+                e = (r8_u16)(e - (ulen - b16));
+                w++;
+            } else {
+                e = (r8_u16)(e + b16);
+            }
+            w = (r8_u16)(w + a16);
+            if (r >= ulen - udm) {
+                r = (r8_u16)(r - (ulen - udm));
+                m1 = m2;
+                w = (r8_u16)(w - 16u);
+            } else {
+                r = (r8_u16)(r + udm);
+            }
         }
     }
 }

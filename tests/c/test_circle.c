@@ -112,6 +112,11 @@ static void test_circle_far_exact(void)
     check(-32768, -32768, 32767, 0);   /* nothing reaches the frame */
     check(32767, 32767, 32767, 1);
     check(-32767 + 30, 10, 32767, 0);  /* the arc's rightmost column */
+    /* both sides of the 16-bit walk's limits (r 8191, |c| + r 32766) */
+    check(-8191 + 20, 5, 8191, 0);
+    check(-8192 + 20, 5, 8192, 1);
+    check(-32766 + 3000 + 30, 12, 3000, 0);
+    check(-32767 + 3000 + 30, 12, 3000, 1);
 }
 
 int main(void)
