@@ -93,7 +93,7 @@ def frames_from(info, key="compute"):
     return sel
 
 
-def measure(t, s, m, need, host_streams, sh=1):
+def measure(t, s, m, need, host_streams, sh=1, wire=0):
     rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
            "shading": SHADINGS[sh],
            "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
@@ -101,7 +101,8 @@ def measure(t, s, m, need, host_streams, sh=1):
            "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
            "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
            "fps_compute": None, "identical_to_host": None, "skipped": None}
-    path = idt.fw_path(t, s, m, FRAMES, sh)
+    path = idt.fw_path(t, s, m, FRAMES, sh, wire)
+    rec["wire"] = wire
     if not os.path.exists(path):
         rec["skipped"] = "not built"
         return rec
@@ -155,7 +156,7 @@ def measure(t, s, m, need, host_streams, sh=1):
                 rec["skipped"] = "RAM: statics %d + stack %d >= 2048 B" % (rec["ram_static_bytes"],
                                                                           rec["stack_peak_bytes"])
     else:  # 6502: differential builds
-        p2 = idt.fw_path(t, s, m, N)
+        p2 = idt.fw_path(t, s, m, N, 1, 1) if wire else idt.fw_path(t, s, m, N)
         res = {}
         for frames, p in ((N, p2), (FRAMES, path)):
             if not os.path.exists(p) or idt.is_skip(p):
@@ -480,7 +481,51 @@ MICRO = [("span", 10, "r8_fb_span_dither, PAGE1, 120-px rows", "pixel"),
          ("vert", 16, "r8_mat_apply + 3 r8_asr14 + r8_project", "vertex"),
          ("crc", 18, "r8_crc16_update", "byte"),
          ("rle", 20, "r8_rle_encode", "byte"),
-         ("crc32", 22, "r8_crc32_update (R8_WIRE_CRC32's frame check)", "byte")]
+         ("crc32", 22, "r8_crc32_update (R8_WIRE_CRC32's frame check)", "byte"),
+         ("line", 24, "r8_line, 128-px lines across the PAGE1 frame", "pixel"),
+         ("wu", 26, "r8_wu_line, PAGE1 dithered, 128-step lines", "step (2 px)"),
+         ("circle", 28, "r8_circle, radius 30, PAGE1", "circle"),
+         ("disc", 30, "r8_circle_fill, radius 30, PAGE1", "circle")]
+
+
+def lines_bench(recs):
+    """The wireframe cube (cfg.wire, cull) on every target, beside the
+    filled cube's record: build/bench/lines.json."""
+    try:
+        st = (idt.host_ref(0, 0, N, 1, 1), idt.host_ref(0, 0, FRAMES, 1, 1))
+    except Exception as e:  # noqa: BLE001
+        print("bench: host wireframe: %s" % e)
+        st = (b"", b"")
+    out = []
+    for t in TARGETS:
+        r = measure(t, 0, 0, None, st, 1, 1)
+        filled = [x for x in recs if x["target"] == t and x["scene"] == "cube" and
+                  x["method"] == "cull" and x["shading"] == "lambert"]
+        if filled:
+            r["filled_cycles_per_frame"] = filled[0]["cycles_per_frame"]
+            r["filled_flash_bytes"] = filled[0]["flash_bytes"]
+        out.append(r)
+    os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
+    with open(os.path.join(ROOT, "build", "bench", "lines.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    return out
+
+
+def lines_md(wire_recs):
+    """Appends the wireframe table to build/bench/results.md."""
+    L = ["", "## Wireframe (cfg.wire; build/bench/lines.json)", "",
+         "The cube with the cull drawn as Bresenham edges of its front faces "
+         "(fw-0-0-%d-1-1), against the filled cube's firmware (fw-0-0-%d)." % (FRAMES, FRAMES), "",
+         "| target | wire cycles/frame | filled cycles/frame | wire flash | filled flash | wire B/frame | same |",
+         "|---|---|---|---|---|---|---|"]
+    for r in wire_recs:
+        L.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+            r["target"], fmt(r["cycles_per_frame"]), fmt(r.get("filled_cycles_per_frame")),
+            fmt(r["flash_bytes"]), fmt(r.get("filled_flash_bytes")),
+            fmt(r["wire_bytes_per_frame"], 1), fmt(r["identical_to_host"]) if not r["skipped"]
+            else "skipped: %s" % r["skipped"]))
+    with open(os.path.join(ROOT, "build", "bench", "results.md"), "a") as f:
+        f.write("\n".join(L) + "\n")
 
 
 def micro():
@@ -585,6 +630,11 @@ def main():
             for sh in (0, 2):
                 shade_jobs.append((s, m, sh))
                 files.append(os.path.relpath(idt.fw_path("avr1284", s, m, FRAMES, sh), ROOT))
+    # the wireframe cube (cfg.wire, cull) on every target
+    for t in TARGETS:
+        files.append(os.path.relpath(idt.fw_path(t, 0, 0, FRAMES, 1, 1), ROOT))
+        if t == "6502":
+            files.append(os.path.relpath(idt.fw_path(t, 0, 0, N, 1, 1), ROOT))
     print("bench: building %d firmware images" % len(files))
     idt.make(files)
     # host streams and callgrind
@@ -654,7 +704,9 @@ def main():
     os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
     with open(os.path.join(ROOT, "build", "bench", "results.json"), "w") as f:
         json.dump(recs, f, indent=1)
+    wire_recs = lines_bench(recs)
     write_md(recs, host, time.time() - t0)
+    lines_md(wire_recs)
     print("bench: wrote build/bench/results.json (%d records) and build/bench/results.md in %.0f s"
           % (len(recs), time.time() - t0))
     for r in recs:

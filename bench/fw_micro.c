@@ -11,6 +11,10 @@
  *   rle    r8_rle_encode of a 1024-byte rendered-like frame    (bytes)
  *   crc32  r8_crc32_update over 1024 bytes (the protocol-version-2 frame
  *          check, R8_WIRE_CRC32)                               (bytes)
+ *   line   r8_line, 32 lines of 128 px across the PAGE1 frame  (pixels)
+ *   wu     r8_wu_line, 16 lines of 128 steps, PAGE1 dithered   (steps)
+ *   circle r8_circle, radius 30, PAGE1                         (circles)
+ *   disc   r8_circle_fill, radius 30, PAGE1                    (circles)
  */
 #include "plat.h"
 #include "r8fb.h"
@@ -120,6 +124,31 @@ int main(void)
     sink = (r8_u16)r8_crc32_update(0, buf, sizeof buf);
     plat_mark(23);
     put_u("crc32 bytes=", sizeof buf);
+
+    r8_fb_clear(&fb, 0);
+    plat_mark(24);
+    for (i = 0; i < 32; i++)
+        r8_line(&fb, 0, (r8_s16)(2 * i), 127, (r8_s16)(63 - 2 * i), 1);
+    plat_mark(25);
+    put_u("line px=", 32L * 128);
+
+    r8_fb_clear(&fb, 0);
+    plat_mark(26);
+    for (i = 0; i < 16; i++)
+        r8_wu_line(&fb, 0, (r8_s16)(4 * i), 127, (r8_s16)(63 - 4 * i), 0);
+    plat_mark(27);
+    put_u("wu steps=", 16L * 128);
+
+    r8_fb_clear(&fb, 0);
+    plat_mark(28);
+    r8_circle(&fb, 64, 32, 30, 1);
+    plat_mark(29);
+    put_u("circle n=", 1);
+
+    plat_mark(30);
+    r8_circle_fill(&fb, 64, 32, 30, 1);
+    plat_mark(31);
+    put_u("disc n=", 1);
     plat_exit(0);
     return 0;
 }

@@ -69,6 +69,8 @@ static void usage(FILE *f)
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
 "  --shading S       flat, lambert, gouraud (default: the renderer's)\n"
+"  --wire            wireframe: the edges of the faces the method keeps (cull:\n"
+"                    front faces; painter: far to near, hidden lines removed)\n"
 "  --band H          band height in rows (default 8; multiple of 8 for page1)\n"
 "  --frames N        frames to send (default 64; 0 = forever)\n"
 "  --first N         number of the first frame (default 0)\n"
@@ -383,7 +385,7 @@ int main(int argc, char **argv)
 {
     enum { O_OUT = 256, O_PTY, O_TCP, O_BAUD, O_RAM, O_SCENE, O_METHOD, O_BAND,
            O_FRAMES, O_FIRST, O_W, O_H, O_FMT, O_CODEC, O_PERIOD, O_NODIRTY,
-           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE, O_RX, O_KEYS, O_KEYLOG, O_SHADING };
+           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE, O_RX, O_KEYS, O_KEYLOG, O_SHADING, O_WIRE };
     static const struct option opts[] = {
         { "out", 1, 0, O_OUT }, { "pty", 0, 0, O_PTY }, { "tcp", 1, 0, O_TCP },
         { "baud", 1, 0, O_BAUD }, { "ram", 1, 0, O_RAM }, { "scene", 1, 0, O_SCENE },
@@ -393,7 +395,7 @@ int main(int argc, char **argv)
         { "codec", 1, 0, O_CODEC }, { "full-period", 1, 0, O_PERIOD },
         { "no-dirty", 0, 0, O_NODIRTY }, { "dump", 1, 0, O_DUMP },
         { "linger", 1, 0, O_LINGER }, { "rx", 1, 0, O_RX }, { "keys", 1, 0, O_KEYS },
-        { "key-log", 1, 0, O_KEYLOG }, { "shading", 1, 0, O_SHADING }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
+        { "key-log", 1, 0, O_KEYLOG }, { "shading", 1, 0, O_SHADING }, { "wire", 0, 0, O_WIRE }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
         { "quiet", 0, 0, 'q' }, { "help", 0, 0, 'h' }, { 0, 0, 0, 0 }
     };
     app_cfg cfg;
@@ -448,6 +450,7 @@ int main(int argc, char **argv)
             break;
         case O_PERIOD: cfg.full_period = (r8_u16)num("--full-period", optarg, 0, 65535); break;
         case O_NODIRTY: cfg.dirty = 0; break;
+        case O_WIRE: cfg.render.wire = 1; break;
         case O_DUMP: dump = optarg; break;
         case O_RX: rx = optarg; break;
         case O_SHADING:

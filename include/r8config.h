@@ -23,6 +23,8 @@
  *   R8_NO_LZW         the LZW codec (src/lzw.c); without both, the wire
  *                     encoder has no per-band choice (R8_CODEC_BEST)
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
+ *   R8_NO_WIRE        wireframe (cfg.wire is then ignored), Wu's lines
+ *                     and circles (r8_wu_line, r8_circle*)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H

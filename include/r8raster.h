@@ -47,6 +47,30 @@ void r8_interp_step(r8_interp *it);
  * Any r8_s16 coordinates (pixels). */
 void r8_line(r8_fb *fb, r8_s16 x0, r8_s16 y0, r8_s16 x1, r8_s16 y1, r8_u8 c);
 
+/* Wu's anti-aliased line (src/wu.c), endpoints inclusive, any r8_s16
+ * pixel coordinates, clipped exactly to the band like r8_line, the same
+ * pixels whichever end it starts from (ends ordered along the major
+ * axis).  At major step k the exact minor position is q + r/len
+ * (q = floor(k*dminor/len), r its remainder): pixel q gets level
+ * 16 - w and pixel q + 1 level w, w = floor(16 r / len) (0..15), the
+ * sum always 16; an exact integer walk, no rounding accumulates.
+ * IDX8: index base + level, written only where it is brighter than the
+ * byte already there (lines crossing keep the brighter); 1 bpp: the
+ * level through the 4x4 ordered dither, lit pixels set, none cleared.
+ * Level 0 pixels are not touched. */
+void r8_wu_line(r8_fb *fb, r8_s16 x0, r8_s16 y0, r8_s16 x1, r8_s16 y1, r8_u8 base);
+
+/* Bresenham's midpoint circle (src/circle.c) about pixel (cx, cy),
+ * radius r >= 0 (r < 0 draws nothing, r == 0 the centre pixel),
+ * clipped to the frame and band.  Pixel (cx+a, cy+b), lo = min(|a|,|b|),
+ * hi = max(|a|,|b|), is on the outline iff
+ *     lo^2 + hi^2 - hi  <  r^2  <=  lo^2 + hi^2 + hi
+ * (what the integer midpoint walk, d = 1 - r, plots in its 8 octants),
+ * and in the filled disc iff lo^2 + hi^2 - hi < r^2: the outline and
+ * everything inside it.  r up to 32767; the centre anywhere. */
+void r8_circle(r8_fb *fb, r8_s16 cx, r8_s16 cy, r8_s16 r, r8_u8 c);
+void r8_circle_fill(r8_fb *fb, r8_s16 cx, r8_s16 cy, r8_s16 r, r8_u8 c);
+
 /* Screen-space vertex for the scan converter. */
 typedef struct r8_svert {
     r8_s16 x, y;  /* 12.4 subpixels */

@@ -84,10 +84,13 @@ typedef struct r8_render_cfg {
     r8_u8 pool;        /* scan states kept from band to band (faces that
                           cross a band boundary); 0: every band seeks
                           its faces again (least RAM, more cycles) */
+    r8_u8 wire;        /* 1: wireframe, the edges of the faces the method
+                          keeps (docs/pipeline.md "Lines and circles");
+                          ignored by a build with R8_NO_WIRE */
 } r8_render_cfg;
 
 /* Defaults: no scene, cull only, Lambert, normal cull, PAGE1 128x64,
- * band 8, clip 8, pool R8_POOL_AUTO. */
+ * band 8, clip 8, pool R8_POOL_AUTO, no wireframe. */
 #define R8_POOL_AUTO 255   /* as many scan states as help (up to 24) */
 void r8_render_defaults(r8_render_cfg *cfg);
 

@@ -40,5 +40,8 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #include "scan.c"
 #include "transform.c"
 #include "cull.c"
+#if !defined(R8_NO_WIRE) && !defined(R8_PLAN_ONLY)
+#include "wireframe.c"   /* FW_WIRE firmwares (fwdefs.sh) */
+#endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# fwdefs.sh S-M-F[-SH] SIZES [TARGET]  ->  the -D flags of one firmware build:
-# scene S, method M, F frames, FW_RAM = the bytes sizes.txt (measured on
+# fwdefs.sh S-M-F[-SH[-W]] SIZES [TARGET]  ->  the -D flags of one firmware
+# build: scene S, method M, F frames, W = 1 the wireframe (cfg.wire;
+# else R8_NO_WIRE leaves wireframe, Wu and circles out), FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
 # firmware then reports APP_E_RAM/APP_E_CFG instead of rendering), and
 # the link-time trims of ports/fw_trim.c that apply (-Isrc for r8int.h):
@@ -14,7 +15,7 @@
 # measures the same (XSIZES_avr328 in mk/targets.mk).
 SMALL328="-DFW_POOL=0 -DR8_NO_POOL -DR8_SMALL_SCENE"
 [ "$1" = --small328 ] && { echo "$SMALL328"; exit 0; }
-IFS=- read -r s m f sh <<< "$1"
+IFS=- read -r s m f sh w <<< "$1"
 sizes=$2
 [ "${sh:-1}" = 2 ] && sizes=${2%.txt}-sh2.txt
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$sizes")
@@ -32,6 +33,7 @@ esac
 [ "$m" != 2 ] && [ "$m" != 3 ] && trim="$trim -DR8_NO_ZBUF"
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"
+if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WIRE"; fi
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"

@@ -193,6 +193,12 @@ typedef struct r8_state {
 
 /* render.c */
 void r8_bucket_object(r8_render *r, r8_u8 i);
+#ifndef R8_NO_WIRE
+/* face id g's vertex pointers into vp; returns its vertex count */
+r8_u8 r8_face_vp(const r8_state *st, r8_fid g, const r8_s16 **vp);
+/* wireframe.c: r8_render_band with cfg.wire */
+void r8_wire_band(r8_render *r, r8_fb *fb);
+#endif
 /* transform.c */
 void r8_tf_frame(r8_state *st, const r8_camera *cam);
 void r8_tf_vertices(r8_state *st, int lazy);

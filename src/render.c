@@ -44,6 +44,9 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->band = 8;
     cfg->clip = 8;
     cfg->pool = R8_POOL_AUTO;
+#ifndef R8_NO_WIRE
+    cfg->wire = 0;      /* (a build without it ignores the field) */
+#endif
 }
 
 static const char *const method_names[R8_VIS_COUNT] = {
@@ -798,6 +801,15 @@ static r8_u8 face_level(const r8_state *st, r8_fid g, r8_u8 oi)
     return r8_face_level(st, o, &st->scene->objects[oi], (r8_u16)(g - o->fbase));
 }
 
+#ifndef R8_NO_WIRE
+/* face_setup for wireframe.c */
+r8_u8 r8_face_vp(const r8_state *st, r8_fid g, const r8_s16 **vp)
+{
+    r8_u8 oi;
+    return face_setup(st, g, vp, &oi);
+}
+#endif
+
 #ifndef R8_FAST_ONLY
 static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_span *sp)
 {
@@ -919,6 +931,12 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
     r8_fid head = (r8_fid)st->first, *link = &head, g;
+#ifndef R8_NO_WIRE
+    if (r->cfg.wire) {
+        r8_wire_band(r, fb);    /* wireframe.c */
+        return;
+    }
+#endif
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);

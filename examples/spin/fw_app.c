@@ -8,6 +8,7 @@
  *                        ATmega328P builds use 0: least RAM)
  *   FW_SHADING           R8_SHADE_* (default Lambert; make bench measures
  *                        every shading)
+ *   FW_WIRE              1: wireframe (cfg.render.wire; default 0)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
  * emu/fw_plat_host.c (stdout). */
@@ -43,6 +44,7 @@ int main(int argc, char **argv)
     cfg.render.method = (r8_u8)(argc > 2 ? atoi(argv[2]) : FW_METHOD);
     cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
     cfg.render.shading = (r8_u8)(argc > 4 ? atoi(argv[4]) : FW_SHADING);
+    cfg.render.wire = (r8_u8)(argc > 5 ? atoi(argv[5]) : 0);
     need = app_ram(&cfg);
     if (need == 0 || need > sizeof mem)
         plat_exit(APP_E_CFG);
@@ -68,6 +70,9 @@ int main(void)
     cfg.render.method = FW_METHOD;
     cfg.render.shading = FW_SHADING;
     cfg.frames = FW_FRAMES;
+#ifdef FW_WIRE
+    cfg.render.wire = FW_WIRE;
+#endif
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;
 }

@@ -68,10 +68,13 @@ def read_sizes(t):
     return sizes, why
 
 
-def fw_path(t, s, m, frames, sh=1):
+def fw_path(t, s, m, frames, sh=1, wire=0):
     """Firmware of scene s, method m, `frames` frames; shading sh
-    (R8_SHADE_*; Lambert, the demo's, unless make bench asks)."""
-    tail = "" if sh == 1 else "-%d" % sh
+    (R8_SHADE_*; Lambert, the demo's, unless make bench asks); wire=1 the
+    wireframe build (cfg.wire; ports/fwdefs.sh)."""
+    tail = "" if sh == 1 and not wire else "-%d" % sh
+    if wire:
+        tail += "-1"
     return os.path.join(XB, t, "fw", "fw-%d-%d-%d%s.%s" % (s, m, frames, tail, EXT[t]))
 
 
@@ -111,13 +114,13 @@ def run_target(t, path, timeout=300):
     return data, rc, d
 
 
-def host_ref(s, m, frames, sh=1):
-    cache = os.path.join(XB, "host", "ref-%d-%d-%d-%d.bin" % (s, m, frames, sh))
+def host_ref(s, m, frames, sh=1, wire=0):
+    cache = os.path.join(XB, "host", "ref-%d-%d-%d-%d%s.bin" % (s, m, frames, sh, "-w" if wire else ""))
     fwhost = os.path.join(ROOT, "build", "emu", "fw-host")
     if os.path.exists(cache) and os.path.getmtime(cache) >= os.path.getmtime(fwhost):
         return open(cache, "rb").read()
     os.makedirs(os.path.dirname(cache), exist_ok=True)
-    r = subprocess.run([fwhost, str(s), str(m), str(frames), str(sh)], stdout=subprocess.PIPE,
+    r = subprocess.run([fwhost, str(s), str(m), str(frames), str(sh), str(wire)], stdout=subprocess.PIPE,
                        timeout=120)
     if r.returncode:
         raise RuntimeError("fw-host %d %d %d exit %d" % (s, m, frames, r.returncode))
@@ -126,14 +129,14 @@ def host_ref(s, m, frames, sh=1):
     return r.stdout
 
 
-def emu_ref(s, m, frames):
+def emu_ref(s, m, frames, wire=0):
     emu = os.path.join(ROOT, "build", "rast8-emu")
     if not os.path.exists(emu):
         return None
     with tempfile.TemporaryDirectory() as td:
         out = os.path.join(td, "emu.bin")
         r = subprocess.run([emu, "--scene", SCENES[s], "--method", METHODS[m], "--frames",
-                            str(frames), "--out", out], stdout=subprocess.DEVNULL,
+                            str(frames), "--out", out] + (["--wire"] if wire else []), stdout=subprocess.DEVNULL,
                            stderr=subprocess.PIPE, timeout=120)
         if r.returncode:
             return ("error", r.stderr.decode("latin-1").strip()[:200])
@@ -158,6 +161,35 @@ def decoder_check(t, s, m, frames):
     ok = st.get("frames") == frames and not st.get("bad_packets") and not st.get("errors")
     return ok, name + ": %s frames, %s bad packets, %s errors" % (
         st.get("frames"), st.get("bad_packets"), st.get("errors"))
+
+
+# wireframe builds checked (scene, method): the cube with the cull
+WIRE = [(0, 0)]
+
+
+def wire_check(t, s, m, frames):
+    """The wireframe firmware's stream against fw-host and rast8-emu --wire."""
+    path = fw_path(t, s, m, frames, 1, 1)
+    name = "%s %s/%s wireframe" % (t, SCENES[s], METHODS[m])
+    if not os.path.exists(path):
+        return ("FAIL", "%s: not built (see the make errors above)" % name)
+    reason = is_skip(path)
+    if reason:
+        return ("SKIP", "%s: %s" % (name, reason))
+    data, rc, d = run_target(t, path)
+    ref = host_ref(s, m, frames, 1, 1)
+    if rc != 0:
+        return ("FAIL", "%s: exit %d" % (name, rc))
+    if data != ref:
+        return ("FAIL", "%s: stream differs from the host (%d vs %d bytes)" % (name, len(data), len(ref)))
+    plain = host_ref(s, m, frames)
+    if data == plain:
+        return ("FAIL", "%s: the stream equals the filled render's" % name)
+    emu = emu_ref(s, m, frames, 1)
+    if isinstance(emu, bytes) and emu != data:
+        return ("FAIL", "%s: equals the host fw build but not rast8-emu --wire" % name)
+    return ("PASS", "%s: %d bytes identical to host fw%s" % (
+        name, len(data), " and rast8-emu --wire" if isinstance(emu, bytes) else ""))
 
 
 def plan(t, frames):
@@ -192,6 +224,8 @@ def main():
     plans = {t: plan(t, a.frames) for t in a.targets}
     files = [os.path.relpath(fw_path(t, s, m, a.frames), ROOT)
              for t in a.targets for (s, m, _) in plans[t][0]]
+    files += [os.path.relpath(fw_path(t, s, m, a.frames, 1, 1), ROOT)
+              for t in a.targets for (s, m) in WIRE if (s, m) in [j[:2] for j in plans[t][0]]]
     make(files)
     if a.build_only:
         return 0
@@ -268,6 +302,14 @@ def main():
                 failed += 1
             else:
                 nskip += 1
+        # the wireframe (cfg.wire), its scene with its method only
+        for s, m in WIRE:
+            if (s, m) not in [j[:2] for j in todo]:
+                continue
+            st, msg = wire_check(t, s, m, a.frames)
+            print("%s %s" % (st, msg))
+            passed, failed = passed + (st == "PASS"), failed + (st == "FAIL")
+            nskip += st == "SKIP"
         # the simulator's stream through the display-side decoder (rast8 stats)
         first = next((k for k in sorted(results) if results[k][0] == "PASS"), None)
         if first is not None:
