@@ -60,6 +60,8 @@ unsigned r8_bsp_ram(const r8_render_cfg *cfg)
     return n ? n + s + 1u : 0;     /* + 1: the stack's alignment */
 }
 
+#ifndef R8_PLAN_ONLY   /* a sizing build plans only */
+
 int r8_bsp_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned work_size)
 {
     r8_render_cfg c;
@@ -156,6 +158,8 @@ void r8_bsp_frame(r8_render *r)
         lastk = bestk;
     }
 }
+
+#endif /* R8_PLAN_ONLY */
 
 #else
 typedef int r8_vis_bsp_empty;   /* ISO C: no empty translation unit */

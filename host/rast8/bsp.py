@@ -166,6 +166,53 @@ def build(mesh, allow_split=False, tol=0.01):
     return [front[f] for f in range(n)], [back[f] for f in range(n)], root, depth
 
 
+def _on_edge(a, b, p):
+    """p lies on segment ab strictly between its ends (integer points)."""
+    ab = [b[k] - a[k] for k in range(3)]
+    ap = [p[k] - a[k] for k in range(3)]
+    cr = (ab[1] * ap[2] - ab[2] * ap[1], ab[2] * ap[0] - ab[0] * ap[2], ab[0] * ap[1] - ab[1] * ap[0])
+    if any(cr):
+        return False
+    t = sum(ab[k] * ap[k] for k in range(3))
+    return 0 < t < sum(x * x for x in ab)
+
+
+def fix_tjunctions(mesh, tree):
+    """A split puts new vertices on edges of neighbouring faces that were
+    not split (T-junctions: after rounding to subpixels the two sides of
+    the edge no longer meet, a pixel crack or overlap).  Each such vertex
+    is inserted into the neighbour's edge; a face that then has more than
+    4 corners is cut into convex pieces, the extra pieces put into the
+    tree as coplanar nodes on the face's front side (coplanar faces cannot
+    hide one another).  Returns the tree with the new faces."""
+    fr, bk, root, depth = tree
+    fr, bk = list(fr), list(bk)
+    extra = 0
+    for f in range(len(mesh.faces)):
+        colour, idx = mesh.faces[f]
+        poly = []
+        n = len(idx)
+        for k in range(n):
+            a, b = idx[k], idx[(k + 1) % n]
+            poly.append(a)
+            pa, pb = mesh.verts[a], mesh.verts[b]
+            on = [v for v in range(len(mesh.verts)) if v not in idx and _on_edge(pa, pb, mesh.verts[v])]
+            on.sort(key=lambda v: sum((mesh.verts[v][q] - pa[q]) ** 2 for q in range(3)))
+            poly += on
+        if len(poly) == n:
+            continue
+        pieces = concave.split_face(mesh.verts, poly, 4, 1e9)
+        mesh.faces[f] = (colour, pieces[0])
+        for pc in pieces[1:]:
+            mesh.faces.append((colour, pc))
+            g = len(mesh.faces) - 1
+            fr.append(fr[f])
+            bk.append(NONE)
+            fr[f] = g
+            extra += 1
+    return fr, bk, root, depth + extra
+
+
 def to_bytes(tree):
     fr, bk, root, depth = tree
     b = bytearray([root & 255, root >> 8, depth & 255, depth >> 8])
@@ -242,6 +289,8 @@ def attach(sc):
         trial = copy.deepcopy(m)
         try:
             tree = build(trial, allow_split=getattr(sc, "bsp", False))
+            if len(trial.faces) != len(m.faces):
+                tree = fix_tjunctions(trial, tree)
         except SplitNeeded:
             m.bsp = None
             continue
