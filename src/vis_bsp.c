@@ -97,12 +97,17 @@ void r8_bsp_begin(r8_state *st, const r8_mesh *me)
 }
 
 /* The next face of object o's mesh, near to far from the eye (an
- * in-order walk with the near subtree first). */
+ * in-order walk with the near subtree first).  The tree is the
+ * converter's flash data, trusted like the face list; an index past the
+ * faces ends its subtree and the stack never grows past the tree's
+ * stated depth, so even a bad tree reads and writes nothing outside. */
 r8_u16 r8_bsp_next(r8_state *st, const r8_objx *o, const r8_mesh *me)
 {
     const r8_u8 *t = me->bsp;
     r8_u16 n = st->bspcur, cap = rd16(t + 2);
     for (;;) {
+        if (n >= me->nfaces)
+            n = BSP_NONE;          /* (also a bad index: never past the faces) */
         if (n != BSP_NONE) {
             const r8_u8 *nd = t + 4u + 4u * (unsigned)n;
             const r8_face *fc = &me->faces[n];
