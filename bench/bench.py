@@ -627,6 +627,8 @@ def main():
     idt.make(["build/x/avr1284/sizes-sh2.txt"])
     for s in [idt.SCENES.index(n) for n in SHADE_SCENES]:
         for m in range(len(idt.METHODS)):
+            if idt.METHODS[m] == "bsp" and idt.SCENES[s] not in idt.BSP_SCENES:
+                continue
             for sh in (0, 2):
                 shade_jobs.append((s, m, sh))
                 files.append(os.path.relpath(idt.fw_path("avr1284", s, m, FRAMES, sh), ROOT))
@@ -638,7 +640,8 @@ def main():
     print("bench: building %d firmware images" % len(files))
     idt.make(files)
     # host streams and callgrind
-    combos = [(s, m) for s in range(len(idt.SCENES)) for m in range(len(idt.METHODS))]
+    combos = [(s, m) for s in range(len(idt.SCENES)) for m in range(len(idt.METHODS))
+              if idt.METHODS[m] != "bsp" or idt.SCENES[s] in idt.BSP_SCENES]
     streams = {}
     for s, m in combos:
         try:

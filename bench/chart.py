@@ -40,7 +40,9 @@ from rast8 import scene as S  # noqa: E402
 
 PROBE = os.path.join(ROOT, "build", "r8probe")
 RESULTS = os.path.join(ROOT, "build", "bench", "results.json")
-METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"]
+METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"]
+BSP_SCENES = ("cross", "wall")        # the scenes whose meshes carry BSP trees
+SWEEP_METHODS = [m for m in METHODS if m != "bsp"]   # the sweep's tori have no tree
 SHADINGS = ["flat", "lambert", "gouraud"]
 SCENES = ["cube", "torus", "teapot", "cross", "wall"]
 COST_FRAMES = 8          # frames 0..7 per callgrind run
@@ -110,7 +112,8 @@ def run(quick, out_dir):
     scenes = SCENES[:2] if quick else SCENES
     shadings = ["lambert"] if quick else SHADINGS
     avr = avr_cycles()
-    variants = [(s, m, sh) for s in scenes for m in METHODS for sh in shadings]
+    variants = [(s, m, sh) for s in scenes for m in METHODS for sh in shadings
+                if m != "bsp" or s in BSP_SCENES]
     acc, cost = {}, {}
 
     def one(v):
@@ -132,7 +135,7 @@ def run(quick, out_dir):
             blob = os.path.join(td, f"tri{tris}.bin")
             with open(blob, "wb") as f:
                 f.write(S.to_blob(sweep_scene(tris, nobj, seg, sides)))
-            for m in METHODS:
+            for m in SWEEP_METHODS:
                 jobs.append((tris, m, blob))
 
         def sw(j):
@@ -148,7 +151,7 @@ def run(quick, out_dir):
     # which unit per scene: AVR cycles only if every variant has one
     units = {}
     for s in scenes:
-        have = all((s, m, sh) in avr for m in METHODS for sh in shadings)
+        have = all(v in avr for v in variants if v[0] == s)
         units[s] = ("ATmega1284P render cycles/frame (make bench)" if have
                     else "x86-64 instructions/frame (callgrind, host)")
 
@@ -176,7 +179,7 @@ def run(quick, out_dir):
 
 
 COLOURS = {"cull": "#1f77b4", "painter": "#ff7f0e", "zbuf8": "#2ca02c", "zbuf16": "#d62728",
-           "block": "#9467bd", "blockmask": "#8c564b", "sbuf": "#e377c2"}
+           "block": "#9467bd", "blockmask": "#8c564b", "sbuf": "#e377c2", "bsp": "#17becf"}
 MARKERS = {"flat": "s", "lambert": "o", "gouraud": "^"}
 LINES = {"flat": ":", "lambert": "--", "gouraud": "-."}
 
@@ -207,7 +210,7 @@ def write_png(out_dir, scenes, shadings, variants, acc, cost_of, fronts, units, 
         ax.grid(alpha=0.3)
     ax = axes[len(scenes)]
     tris = sorted({t for t, _ in sweep})
-    for m in METHODS:
+    for m in SWEEP_METHODS:
         ax.plot(tris, [sweep[(t, m)][0] for t in tris], marker="o", ms=3, color=COLOURS[m], label=m)
     ax.set_xscale("log")
     ax.set_yscale("log")
@@ -271,11 +274,11 @@ def write_md(out_dir, scenes, variants, acc, cost, cost_of, fronts, units, sweep
           "Triangulated tori (several objects above 255 vertices), Lambert, page1 128x64; "
           "x86-64 instructions per frame (callgrind).  `dropped` = spans or faces the fixed pools could "
           "not hold (S-buffer nodes, clip vertices).", "",
-          "| triangles | " + " | ".join(METHODS) + " |", "|---:|" + "---:|" * len(METHODS)]
+          "| triangles | " + " | ".join(SWEEP_METHODS) + " |", "|---:|" + "---:|" * len(SWEEP_METHODS)]
     for t in tris:
         L.append(f"| {t} | " + " | ".join(
             f"{sweep[(t, m)][0]:,.0f}" + (f" (dropped {sweep[(t, m)][1]})" if sweep[(t, m)][1] else "")
-            for m in METHODS) + " |")
+            for m in SWEEP_METHODS) + " |")
     L.append("")
     with open(os.path.join(out_dir, "speed-accuracy.md"), "w") as f:
         f.write("\n".join(L))

@@ -338,7 +338,9 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         "", "one convex mesh: backface culling is exact",
         "convex objects apart in depth: painter's is exact",
         "concave or interpenetrating geometry: z-buffer",
-        "given by the user", "the exact method does not fit the RAM budget"
+        "given by the user", "the exact method does not fit the RAM budget",
+        "", "",
+        "non-convex meshes with BSP trees, apart in depth: BSP order is exact"
     };
     long budget = ram >= 0 ? ram : 16384;
     long extra;
@@ -369,7 +371,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         fprintf(stderr, "%s: analyser: scene %s -> method %s (%s), band %d rows, "
                 "renderer+band %u bytes; depth range z %ld..%ld, camera coordinates "
                 "need %d bits\n", prog, (cfg->demo ? cfg->demo->name : r8_demo_name(cfg->scene)),
-                r8_method_name(a.method), why[a.why < 6 ? a.why : 0], a.band, a.ram,
+                r8_method_name(a.method), why[(size_t)a.why < sizeof why / sizeof why[0] ? a.why : 0], a.band, a.ram,
                 (long)a.znear, (long)a.zfar, a.coord_bits);
 }
 

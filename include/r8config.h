@@ -8,6 +8,7 @@
  *   R8_NO_ZBUF        8- and 16-bit z-buffers
  *   R8_NO_BLOCK       4x4-block z-buffers (both)
  *   R8_NO_SBUF        S-buffer
+ *   R8_NO_BSP         BSP order (R8_VIS_BSP; meshes link no trees)
  *   R8_NO_GOURAUD     Gouraud shading
  *   R8_NO_CLIP        the clipper: faces crossing the near plane or the
  *                     guard band are dropped (and counted) instead
@@ -38,6 +39,7 @@
 #define R8_NO_ZBUF
 #define R8_NO_BLOCK
 #define R8_NO_SBUF
+#define R8_NO_BSP
 #define R8_NO_GOURAUD
 #define R8_NO_CLIP
 #define R8_NO_LZ77

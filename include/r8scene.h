@@ -37,7 +37,19 @@ typedef struct r8_mesh {
     r8_u16 nfaces;
     r8_u8 convex;           /* closed and convex: backface cull is exact */
     r8_s16 radius;          /* bounding sphere about the model origin */
+    const r8_u8 *bsp;       /* R8_FLASH: BSP tree over the faces (the scene
+                               converter's host/rast8/bsp.py: u16 root, u16
+                               depth, then per face u16 front and back
+                               child, 0xFFFF none, little-endian); 0: none
+                               (R8_VIS_BSP refuses the mesh) */
 } r8_mesh;
+/* The converter writes R8_MESH_BSP(tree) so a build without BSP
+ * (R8_NO_BSP) links no tree. */
+#ifdef R8_NO_BSP
+#define R8_MESH_BSP(t) 0
+#else
+#define R8_MESH_BSP(t) t
+#endif
 
 /* r8_pose.flags */
 #define R8_POSE_HIDDEN 1    /* not drawn this frame */

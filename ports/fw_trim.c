@@ -43,5 +43,8 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #if !defined(R8_NO_WIRE) && !defined(R8_PLAN_ONLY)
 #include "wireframe.c"   /* FW_WIRE firmwares (fwdefs.sh) */
 #endif
+#ifndef R8_NO_BSP
+#include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
+#endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
 #endif

@@ -29,7 +29,8 @@ case "${sh:-1}" in
   0) trim="$trim -DFW_SHADING=0 -DR8_NO_GOURAUD" ;;
   *) trim="$trim -DR8_NO_GOURAUD" ;;
 esac
-[ "$m" != 1 ] && trim="$trim -DR8_NO_PAINTER"
+[ "$m" != 1 ] && [ "$m" != 7 ] && trim="$trim -DR8_NO_PAINTER"   # BSP draws with painter's path
+[ "$m" != 7 ] && trim="$trim -DR8_NO_BSP"
 [ "$m" != 2 ] && [ "$m" != 3 ] && trim="$trim -DR8_NO_ZBUF"
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"

@@ -17,7 +17,13 @@ static const r8_s16 cube_cube_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63};
+#ifndef R8_NO_BSP
+static const r8_u8 cube_cube_bsp[28] R8_FLASH = {
+    0, 0, 7, 0, 255, 255, 1, 0, 255, 255, 2, 0, 255, 255, 3, 0,
+    255, 255, 4, 0, 255, 255, 5, 0, 255, 255, 255, 255,
+};
+#endif
+static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63, R8_MESH_BSP(cube_cube_bsp)};
 static const r8_demo_obj cube_objects[1] R8_FLASH = {
     {&cube_cube, 0, 0, 220, 0, 0, 0, 2, 3, 1},
 };

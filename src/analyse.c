@@ -5,6 +5,9 @@
  *   convex objects apart in depth, whose
  *   painter's buckets cannot interleave
  *   from any allowed camera position     -> painter's (depth buckets)
+ *   non-convex meshes that all carry a
+ *   BSP tree (one object, or objects
+ *   apart in depth as for painter's)     -> BSP order (no depth memory)
  *   anything else (concave meshes,
  *   interpenetration, overlap in depth,
  *   a camera that may turn anywhere)     -> 16-bit z-buffer
@@ -63,12 +66,12 @@ static void corner(const r8_camera *cam, const r8_bound *b, r8_u8 k, r8_s16 *q)
  * other's nearest point (gaps are linear in the camera position: the
  * box's corners bound them). */
 static int sortable(const r8_scene *sc, const r8_camera *cam, const r8_bound *b,
-                    const r8_mat3 *c, r8_s32 bucket)
+                    const r8_mat3 *c, r8_s32 bucket, int convex)
 {
     r8_u8 i, j, k, nk = (b && b->kind == R8_BOUND_BOX) ? 8 : 1;
     if (b && b->kind == R8_BOUND_ANY)
         return 0;
-    for (i = 0; i < sc->nobjects; i++)
+    for (i = 0; i < sc->nobjects && convex; i++)
         if (!sc->objects[i].mesh->convex)
             return 0;
     for (i = 0; i < sc->nobjects; i++)
@@ -95,6 +98,18 @@ static int sortable(const r8_scene *sc, const r8_camera *cam, const r8_bound *b,
         }
     return 1;
 }
+
+#ifndef R8_NO_BSP
+/* Every mesh carries a BSP tree (the converter's). */
+static int has_trees(const r8_scene *sc)
+{
+    r8_u8 i;
+    for (i = 0; i < sc->nobjects; i++)
+        if (!sc->objects[i].mesh->bsp)
+            return 0;
+    return 1;
+}
+#endif
 
 static unsigned need(r8_render_cfg *cfg)
 {
@@ -181,9 +196,19 @@ int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
     if (sc->nobjects == 1 && sc->objects[0].mesh->convex) {
         exact_method = R8_VIS_CULL;
         a->why = R8_WHY_CONVEX;
-    } else if (sortable(sc, cam, bound, &c, bucket)) {
+    } else if (sortable(sc, cam, bound, &c, bucket, 1)) {
         exact_method = R8_VIS_PAINTER;
         a->why = R8_WHY_SORTABLE;
+#ifndef R8_NO_BSP
+    } else if (has_trees(sc) &&
+               (sc->nobjects == 1 || sortable(sc, cam, bound, &c, bucket, 0))) {
+        /* a tree holds for any eye; objects apart in depth keep the far
+         * end order r8_bsp_frame draws them in.  No depth memory, no
+         * depth compare per pixel, the fast fill: cheaper than the
+         * z-buffer whenever it is exact (docs/visibility.md) */
+        exact_method = R8_VIS_BSP;
+        a->why = R8_WHY_BSP;
+#endif
     } else {
         exact_method = R8_VIS_Z16;
         a->why = R8_WHY_OVERLAP;
@@ -226,6 +251,10 @@ int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
     a->ram = need(cfg);
     a->exact = cfg->method == exact_method || cfg->method == R8_VIS_Z16 ||
                (exact_method == R8_VIS_CULL && cfg->method != R8_VIS_BLOCK) ||
-               (exact_method == R8_VIS_PAINTER && cfg->method == R8_VIS_PAINTER);
+               (exact_method == R8_VIS_PAINTER && cfg->method == R8_VIS_PAINTER)
+#ifndef R8_NO_BSP
+               || (cfg->method == R8_VIS_BSP && exact_method <= R8_VIS_PAINTER)
+#endif
+               ;
     return 0;
 }

@@ -50,7 +50,7 @@ void r8_render_defaults(r8_render_cfg *cfg)
 }
 
 static const char *const method_names[R8_VIS_COUNT] = {
-    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"
+    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"
 };
 
 static int streq(const char *a, const char *b)
@@ -117,6 +117,10 @@ static int method_built(r8_u8 m)
 #endif
 #ifndef R8_NO_SBUF
     case R8_VIS_SBUF:
+        return 1;
+#endif
+#if !defined(R8_NO_BSP) && !defined(R8_NO_PAINTER)
+    case R8_VIS_BSP:
         return 1;
 #endif
     default:
@@ -322,6 +326,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
 unsigned r8_render_ram(const r8_render_cfg *cfg)
 {
     plan pl;
+#ifndef R8_NO_BSP
+    if (cfg->method == R8_VIS_BSP)
+        return r8_bsp_ram(cfg);
+#endif
     if (!cfg_valid(cfg))
         return 0;
     make_plan(cfg, &pl);
@@ -395,6 +403,10 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
     r8_u8 i;
     r8_u16 vb = 0, fb = 0, k;
+#ifndef R8_NO_BSP
+    if (cfg->method == R8_VIS_BSP)
+        return r8_bsp_init(r, cfg, work, work_size);
+#endif
     if (!cfg_valid(cfg))
         return -1;
     make_plan(cfg, &pl);
@@ -455,6 +467,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         st->attrs |= R8_ATTR_S;
 #endif
     st->first = (r8_fid)R8_FID_END;
+#ifndef R8_NO_BSP
+    st->bspstk = 0;
+#endif
     st->npoly = 0;
     st->dropped = 0;
     st->nclipped = 0;
@@ -634,10 +649,25 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
     r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
     r8_u16 f;
+#ifndef R8_NO_BSP
+    r8_u16 nf;
+    int bsp = st->bspstk != 0;     /* faces in tree order, near to far */
+#endif
     if (o->hidden)
         return;
+#ifndef R8_NO_BSP
+    if (bsp)
+        r8_bsp_begin(st, me);
+    for (nf = me->nfaces; nf-- > 0;) {
+        const r8_face *fc;
+        f = bsp ? r8_bsp_next(st, o, me) : nf;
+        fc = &me->faces[f];
+        {
+#else
     for (f = me->nfaces; f-- > 0;) {
         const r8_face *fc = &me->faces[f];
+        {
+#endif
         r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
 #ifdef R8_NO_CLIP
         const r8_s16 *vp[R8_MAX_FACE_VERTS];   /* no clipped polygons */
@@ -688,9 +718,16 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         if (clip)
             st->nclipped++;
         if (painter) {
-            if (!clip)
-                zsum = face_zsum(o, me, vi, n);
-            key = depth_key(st, zsum, n);
+#ifndef R8_NO_BSP
+            if (bsp)
+                key = 0;           /* one list, in tree order */
+            else
+#endif
+            {
+                if (!clip)
+                    zsum = face_zsum(o, me, vi, n);
+                key = depth_key(st, zsum, n);
+            }
             if (st->ftop) {
                 r8_u16 b = band_of(st, top, r->cfg.band);
                 st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
@@ -705,6 +742,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             st->slot[id] = R8_NO_SLOT;
 #endif
         st->npoly++;
+        }
     }
 }
 
@@ -729,6 +767,11 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
         st->heads[k] = (r8_fid)R8_FID_END;
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
+#ifndef R8_NO_BSP
+    if (st->bspstk)
+        r8_bsp_frame(r);           /* BSP: tree order instead */
+    else
+#endif
     for (i = sc->nobjects; i-- > 0;)
         r8_bucket_object(r, i);
     /* painter's: chain the buckets, far to near, into the draw list;

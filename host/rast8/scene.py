@@ -14,6 +14,8 @@ import struct
 import sys
 from dataclasses import dataclass, field
 
+from .concave import split_mesh
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE_DIR = os.path.join(HERE, "scenes")
 BUILTIN_ORDER = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
@@ -33,6 +35,7 @@ class Mesh:
     verts: list = field(default_factory=list)   # [(x, y, z)] ints
     faces: list = field(default_factory=list)   # [(colour, [i, j, k(, l)])]
     convex: bool = False
+    bsp: object = None                          # tree bytes (host/rast8/bsp.py) or None
 
     def radius(self):
         return int(math.ceil(max((math.sqrt(x * x + y * y + z * z) for x, y, z in self.verts), default=0)))
@@ -55,6 +58,7 @@ class Scene:
     near: int = 16
     light: tuple = (-1.0, -1.0, -1.0)
     ambient: float = 0.2
+    bsp: bool = False        # merge rigid groups, split faces for BSP trees
 
 
 def _int(tok, path, ln, lo=-32768, hi=32767, what="value"):
@@ -113,7 +117,11 @@ def parse_r8s(text, path="<scene>"):
             raise SceneError(path, ln, f"'{kw}' before 'scene NAME'")
         if mesh is not None and kw not in ("v", "f", "end"):
             raise SceneError(path, ln, f"'{kw}' inside mesh '{mesh.name}' (missing 'end'?)")
-        if kw == "camera":
+        if kw == "bsp":
+            if len(t) != 1:
+                raise SceneError(path, ln, "usage: bsp")
+            sc.bsp = True
+        elif kw == "camera":
             kv = dict(zip(t[1::2], t[2::2]))
             if len(t) % 2 == 0 or set(kv) - {"focal", "near"}:
                 raise SceneError(path, ln, "usage: camera focal N near N")
@@ -202,7 +210,8 @@ def load_r8s(path):
 def parse_obj(text, path="<obj>", scale=None, colour=16):
     """OBJ subset: 'v x y z' and 'f a b c [d]' (a/b/c forms allowed, only
     the vertex index is used; negative indices count from the end).
-    Triangulates larger faces as fans.  OBJ is counter-clockwise from
+    Faces that are not planar and convex with at most 4 vertices are split
+    into convex pieces (host/rast8/concave.py).  OBJ is counter-clockwise from
     outside with y up; rast8 is clockwise with y down, so y is negated
     (which also flips the winding).  Coordinates are scaled to fit
     +/-`scale` (default: the largest extent becomes 100)."""
@@ -229,8 +238,9 @@ def parse_obj(text, path="<obj>", scale=None, colour=16):
                 if not 0 <= i < len(verts):
                     raise SceneError(path, ln, f"vertex {tok} not defined yet")
                 idx.append(i)
-            for k in range(1, len(idx) - 1):
-                faces.append((colour, [idx[0], idx[k], idx[k + 1]]))
+            if len(set(idx)) != len(idx):
+                raise SceneError(path, ln, "face repeats a vertex")
+            faces.append((colour, idx))
         elif t[0] in ("vn", "vt", "o", "g", "s", "usemtl", "mtllib", "l"):
             continue
         else:
@@ -244,6 +254,7 @@ def parse_obj(text, path="<obj>", scale=None, colour=16):
     m = Mesh(os.path.splitext(os.path.basename(path))[0] or "obj")
     m.verts = [(round(x * k), round(-y * k), round(z * k)) for x, y, z in verts]
     m.faces = faces
+    split_mesh(m)
     m.convex = _convex_closed(m)
     return m
 
@@ -472,8 +483,23 @@ def box(name, hx, hy, hz, colour=16):
     return m
 
 
+def finish(sc):
+    """Converter passes after parsing: concave and non-planar faces split
+    (concave.py), then BSP trees (bsp.py).  Returns sc."""
+    from . import bsp
+    for m in sc.meshes.values():
+        if split_mesh(m):
+            m.convex = _convex_closed(m)
+    bsp.attach(sc)
+    return sc
+
+
 def builtin(name):
     """The built-in scene called name."""
+    return finish(_builtin(name))
+
+
+def _builtin(name):
     path = os.path.join(SCENE_DIR, name + ".r8s")
     if os.path.exists(path):
         return load_r8s(path)
@@ -489,6 +515,7 @@ def builtin(name):
         sc.objects.append(Obj("terrain", (0, 10, 210), (28, 0, 0), (0, 2, 0)))
         sc.focal = 44
     elif name == "cross":
+        sc.bsp = True        # one rigid body: slab and post merged, one tree
         sc.meshes["slab"] = box("slab", 50, 12, 12, 12)
         sc.meshes["post"] = box("post", 14, 40, 14, 16)
         sc.objects.append(Obj("slab", (0, 0, 200), (0, 0, 0), (1, 3, 0)))
@@ -584,8 +611,17 @@ def to_c_scene(sc):
         for k in range(0, len(ns), 4):
             out.append("    " + ", ".join(f"{x}, {y}, {z}" for x, y, z in ns[k:k + 4]) + ",")
         out.append("};")
+        tail = ", 0"
+        if m.bsp:
+            out.append("#ifndef R8_NO_BSP")
+            out.append(f"static const r8_u8 {cid}_bsp[{len(m.bsp)}] R8_FLASH = {{")
+            for k in range(0, len(m.bsp), 16):
+                out.append("    " + ", ".join(str(x) for x in m.bsp[k:k + 16]) + ",")
+            out.append("};")
+            out.append("#endif")
+            tail = f", R8_MESH_BSP({cid}_bsp)"
         out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
-                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}}};")
+                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tail}}};")
     out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")
     for o in sc.objects:
         out.append(f"    {{&{mids[o.mesh]}, {o.pos[0]}, {o.pos[1]}, {o.pos[2]}, "
@@ -647,8 +683,8 @@ def load_any(path):
         sc = Scene(m.name)
         sc.meshes[m.name] = m
         sc.objects.append(Obj(m.name, (0, 0, 260), (0, 0, 0), (1, 2, 0)))
-        return sc
-    return load_r8s(path)
+        return finish(sc)
+    return finish(load_r8s(path))
 
 
 def main(argv=None):
@@ -672,7 +708,8 @@ def main(argv=None):
             sc = load_any(args[0])
             for n, m in sc.meshes.items():
                 print(f"{n}: {len(m.verts)} vertices, {len(m.faces)} faces, "
-                      f"{'convex' if m.convex else 'not convex'}, radius {m.radius()}")
+                      f"{'convex' if m.convex else 'not convex'}, radius {m.radius()}, "
+                      f"{'BSP tree ' + str(len(m.bsp)) + ' bytes' if m.bsp else 'no BSP tree'}")
             print(f"{len(sc.objects)} objects")
         else:
             print(__doc__.strip(), file=sys.stderr)

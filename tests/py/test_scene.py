@@ -76,7 +76,7 @@ def test_obj_subset(tmp_path):
            "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
            "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n")
     m = scene.parse_obj(obj, "c.obj")
-    assert len(m.verts) == 8 and len(m.faces) == 12      # quads fanned into triangles
+    assert len(m.verts) == 8 and len(m.faces) == 6       # planar convex quads kept whole (concave.py)
     assert max(abs(c) for v in m.verts for c in v) == 100
     assert m.convex                                      # OBJ winding converted
     with pytest.raises(scene.SceneError, match=r"^c.obj:2: vertex 2 not defined yet"):
