@@ -20,6 +20,7 @@
  *                     crosses; the least RAM, slower on tall faces)
  *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
+ *   R8_NO_TEXTURE     texture mapping (R8_SHADE_TEXTURE)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H

@@ -37,7 +37,25 @@ typedef struct r8_mesh {
     r8_u16 nfaces;
     r8_u8 convex;           /* closed and convex: backface cull is exact */
     r8_s16 radius;          /* bounding sphere about the model origin */
+    const struct r8_texture *tex; /* 0: untextured (R8_SHADE_TEXTURE
+                               then draws the face's Lambert level) */
+    const r8_u8 *uv;        /* R8_FLASH: u, v per face corner, 8 bytes a
+                               face (4 corners); 128 = the texture's width
+                               (height), so 0..255 spans two repeats */
 } r8_mesh;
+
+/* A texture (docs/pipeline.md "Texture mapping"): 2^wlog x 2^hlog texels
+ * (8..64 a side), rows top to bottom in R8_FLASH data.  R8_TEX_1BPP: a
+ * row is 2^wlog / 8 bytes, MSB = leftmost texel, a set bit is lit
+ * (level 16).  R8_TEX_IDX8: a byte per texel, an index into a grey ramp
+ * 0 (black) .. 255 (white).  Coordinates wrap (the texture repeats). */
+#define R8_TEX_1BPP 0
+#define R8_TEX_IDX8 1
+typedef struct r8_texture {
+    const r8_u8 *data;      /* R8_FLASH */
+    r8_u8 wlog, hlog;       /* log2 width, height: 3..6 */
+    r8_u8 format;           /* R8_TEX_* */
+} r8_texture;
 
 /* r8_pose.flags */
 #define R8_POSE_HIDDEN 1    /* not drawn this frame */

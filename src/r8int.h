@@ -60,8 +60,15 @@ typedef r8_u16 r8_fid;
 #define R8_GOURAUD(s) ((s) == R8_SHADE_GOURAUD)
 #define R8_W_GOURAUD 1
 #endif
+#if defined(R8_NO_TEXTURE) && !defined(R8_PLAN_ONLY)
+#define R8_TEXTURED(s) 0
+#define R8_W_TEXTURE 0
+#else
+#define R8_TEXTURED(s) ((s) == R8_SHADE_TEXTURE)
+#define R8_W_TEXTURE 1
+#endif
 /* st->vsh: 2 r8_s16 per screen vertex, or 4 with depth or shade */
-#if R8_W_DEPTH || R8_W_GOURAUD
+#if R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE
 #define R8_VSH(st) ((st)->vsh)
 #else
 #define R8_VSH(st) 1
@@ -96,6 +103,9 @@ typedef struct r8_clipv {
     r8_s32 x, y, z;
     r8_s16 s;
     r8_u16 src;
+#if R8_W_TEXTURE
+    r8_s16 u, v;        /* texture coordinates (8.8 texels) */
+#endif
 } r8_clipv;
 #define R8_CLIP_BYTES (2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(r8_clipv))
 
@@ -127,6 +137,23 @@ typedef struct r8_acthead {
     r8_u8 used;
     r8_scanx c;
 } r8_acthead;
+
+/* A textured face being scanned (texture.c): the scan with attributes
+ * over the face's own corner records x, y (12.4), u, v (8.8 texels), so
+ * the depth and shade interpolators carry u and v; the texture, and for
+ * perspective correction the planes of u q, v q and q (q = 1/z scaled
+ * to the face's nearest corner, Q14) over the screen, 12 fraction bits
+ * per subpixel. */
+#define R8_CUV_STRIDE (2u * R8_MAX_CLIP_POLY + 1u)
+typedef struct r8_tact {
+    r8_u8 level;
+    r8_u8 used;
+    r8_scan s;
+    r8_s16 cv[4 * R8_SCAN_MAXV];
+    const r8_texture *tex;
+    r8_s16 px, py;      /* plane origin (12.4) */
+    r8_s32 p0[3], pa[3], pb[3];  /* value << 12 there, d/dx, d/dy */
+} r8_tact;
 
 /* S-buffer span node */
 typedef struct r8_snode {
@@ -187,6 +214,11 @@ typedef struct r8_state {
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
+#if R8_W_TEXTURE
+    r8_s16 *cuv;        /* textures: per clipper polygon R8_CUV_STRIDE
+                           r8_s16: u, v of its corners, its object */
+    r8_u8 texfilter, persp;
+#endif
     r8_u16 npoly;       /* faces set up this frame */
     r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 } r8_state;
@@ -220,6 +252,11 @@ void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span 
 void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);
 unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg);
+/* texture.c: set up textured face g (object oi, 255: clipper polygon
+ * g - nfaces) whose scan t->s.c.vp[0..n) face_setup has set; draw its
+ * rows < ylimit */
+void r8_tex_face(r8_state *st, r8_tact *t, r8_u16 g, r8_u8 oi, r8_u8 n);
+void r8_tex_draw(r8_state *st, r8_tact *t, r8_s16 ylimit, r8_fb *fb);
 r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg);
 
 #endif
