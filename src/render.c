@@ -32,6 +32,12 @@
 #define R8_FAST_ONLY 1
 #endif
 
+#if R8_W_TEXTURE
+#define R8_SHADE_MAX R8_SHADE_TEXTURE
+#else
+#define R8_SHADE_MAX R8_SHADE_GOURAUD
+#endif
+
 void r8_render_defaults(r8_render_cfg *cfg)
 {
     cfg->scene = 0;
@@ -44,8 +50,10 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->band = 8;
     cfg->clip = 8;
     cfg->pool = R8_POOL_AUTO;
+#if R8_W_TEXTURE
     cfg->texfilter = R8_TEXF_NEAREST;
     cfg->persp = 0;
+#endif
 }
 
 static const char *const method_names[R8_VIS_COUNT] = {
@@ -146,7 +154,7 @@ static int cfg_valid(const r8_render_cfg *cfg)
     r8_u32 nf = 0;
     r8_u8 i;
     if (!sc || sc->nobjects == 0 || !sc->objects || !method_built(cfg->method) ||
-        cfg->shading > R8_SHADE_TEXTURE || cfg->cull > R8_CULL_JUDD ||
+        cfg->shading > R8_SHADE_MAX || cfg->cull > R8_CULL_JUDD ||
         cfg->format > R8_FMT_IDX8)
         return 0;
 #ifdef R8_NO_GOURAUD
@@ -157,8 +165,8 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if (cfg->format != R8_FMT_PAGE1)
         return 0;
 #endif
-    if (cfg->shading == R8_SHADE_TEXTURE) {   /* texture.c */
 #if R8_W_TEXTURE
+    if (cfg->shading == R8_SHADE_TEXTURE) {   /* texture.c */
         if (cfg->method > R8_VIS_PAINTER || cfg->texfilter > R8_TEXF_BILINEAR ||
             cfg->persp == 1 || cfg->persp > 64)
             return 0;
@@ -169,10 +177,8 @@ static int cfg_valid(const r8_render_cfg *cfg)
                                   me->tex->format > R8_TEX_IDX8 || !me->tex->data))
                 return 0;
         }
-#else
-        return 0;
-#endif
     }
+#endif
 #ifdef R8_NO_RT_NORMALS
     for (i = 0; i < sc->nobjects; i++)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)

@@ -6,8 +6,8 @@
  *                        fw_sizes.c (mk/targets.mk passes it in)
  *   FW_POOL              scan-state pool (default R8_POOL_AUTO; the 2 KB
  *                        ATmega328P builds use 0: least RAM)
- *   FW_SHADING           R8_SHADE_* (default Lambert; make bench measures
- *                        every shading)
+ *   FW_SHADING           R8_SHADE_* (default Lambert, texture for the
+ *                        crate; make bench measures every shading)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
  * emu/fw_plat_host.c (stdout). */
@@ -24,7 +24,11 @@
 #define FW_FRAMES 4
 #endif
 #ifndef FW_SHADING
+#if FW_SCENE == 7
+#define FW_SHADING R8_SHADE_TEXTURE   /* the crate (R8_DEMO_CRATE) is textured */
+#else
 #define FW_SHADING R8_SHADE_LAMBERT
+#endif
 #endif
 
 static app_cfg cfg;

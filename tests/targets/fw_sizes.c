@@ -54,6 +54,9 @@ int main(void)
 #endif
 #ifdef FW_SHADING
             acfg.render.shading = FW_SHADING;
+#else
+            if (s == 7)      /* the crate: textured (fw_app.c) */
+                acfg.render.shading = R8_SHADE_TEXTURE;
 #endif
             acfg.scene = s;
             acfg.render.method = m;
