@@ -37,12 +37,23 @@ typedef struct r8_mesh {
     r8_u16 nfaces;
     r8_u8 convex;           /* closed and convex: backface cull is exact */
     r8_s16 radius;          /* bounding sphere about the model origin */
+#ifndef R8_NO_TEXTURE
     const struct r8_texture *tex; /* 0: untextured (R8_SHADE_TEXTURE
                                then draws the face's Lambert level) */
     const r8_u8 *uv;        /* R8_FLASH: u, v per face corner, 8 bytes a
                                face (4 corners); 128 = the texture's width
                                (height), so 0..255 spans two repeats */
+#endif
 } r8_mesh;
+/* The texture members in a positional r8_mesh initialiser, after radius:
+ * {verts, faces, normals, nverts, nfaces, convex, radius R8_MESH_TEX(t, uv)}
+ * (nothing in a build without texture mapping, so its meshes stay as
+ * small as before). */
+#ifdef R8_NO_TEXTURE
+#define R8_MESH_TEX(t, uv)
+#else
+#define R8_MESH_TEX(t, uv) , t, uv
+#endif
 
 /* A texture (docs/pipeline.md "Texture mapping"): 2^wlog x 2^hlog texels
  * (8..64 a side), rows top to bottom in R8_FLASH data.  R8_TEX_1BPP: a

@@ -92,7 +92,7 @@ static const r8_u8 crate_crate_uv[48] R8_FLASH = {
     0, 0, 128, 0, 128, 128, 0, 128,
     0, 0, 128, 0, 128, 128, 0, 128,
 };
-static const r8_mesh crate_crate = {crate_crate_v, crate_crate_f, crate_crate_n, 8, 6, 1, 70, &crate_tex_crate, crate_crate_uv};
+static const r8_mesh crate_crate = {crate_crate_v, crate_crate_f, crate_crate_n, 8, 6, 1, 70 R8_MESH_TEX(&crate_tex_crate, crate_crate_uv)};
 static const r8_demo_obj crate_objects[1] R8_FLASH = {
     {&crate_crate, 0, 0, 200, 0, 0, 0, 1, 2, 0},
 };

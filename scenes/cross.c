@@ -17,7 +17,7 @@ static const r8_s16 cross_slab_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh cross_slab = {cross_slab_v, cross_slab_f, cross_slab_n, 8, 6, 1, 53, 0, 0};
+static const r8_mesh cross_slab = {cross_slab_v, cross_slab_f, cross_slab_n, 8, 6, 1, 53 R8_MESH_TEX(0, 0)};
 static const r8_s16 cross_post_v[24] R8_FLASH = {
     -14, -40, -14, 14, -40, -14, 14, 40, -14, -14, 40, -14,
     -14, -40, 14, 14, -40, 14, 14, 40, 14, -14, 40, 14,
@@ -34,7 +34,7 @@ static const r8_s16 cross_post_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh cross_post = {cross_post_v, cross_post_f, cross_post_n, 8, 6, 1, 45, 0, 0};
+static const r8_mesh cross_post = {cross_post_v, cross_post_f, cross_post_n, 8, 6, 1, 45 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj cross_objects[2] R8_FLASH = {
     {&cross_slab, 0, 0, 200, 0, 0, 0, 1, 3, 0},
     {&cross_post, 0, 0, 200, 0, 0, 0, 1, 3, 0},

@@ -17,7 +17,7 @@ static const r8_s16 cube_cube_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63, 0, 0};
+static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj cube_objects[1] R8_FLASH = {
     {&cube_cube, 0, 0, 220, 0, 0, 0, 2, 3, 1},
 };

@@ -17,7 +17,7 @@ static const r8_s16 separate_cube_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh separate_cube = {separate_cube_v, separate_cube_f, separate_cube_n, 8, 6, 1, 28, 0, 0};
+static const r8_mesh separate_cube = {separate_cube_v, separate_cube_f, separate_cube_n, 8, 6, 1, 28 R8_MESH_TEX(0, 0)};
 static const r8_s16 separate_bar_v[24] R8_FLASH = {
     -26, -8, -8, 26, -8, -8, 26, 8, -8, -26, 8, -8,
     -26, -8, 8, 26, -8, 8, 26, 8, 8, -26, 8, 8,
@@ -34,7 +34,7 @@ static const r8_s16 separate_bar_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh separate_bar = {separate_bar_v, separate_bar_f, separate_bar_n, 8, 6, 1, 29, 0, 0};
+static const r8_mesh separate_bar = {separate_bar_v, separate_bar_f, separate_bar_n, 8, 6, 1, 29 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj separate_objects[4] R8_FLASH = {
     {&separate_cube, -50, -10, 140, 0, 0, 0, 2, 3, 0},
     {&separate_bar, 10, 14, 230, 0, 0, 0, 0, 2, 3},

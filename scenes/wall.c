@@ -10,7 +10,7 @@ static const r8_face wall_wall_f[1] R8_FLASH = {
 static const r8_s16 wall_wall_n[3] R8_FLASH = {
     16384, 0, 0,
 };
-static const r8_mesh wall_wall = {wall_wall_v, wall_wall_f, wall_wall_n, 4, 1, 0, 706, 0, 0};
+static const r8_mesh wall_wall = {wall_wall_v, wall_wall_f, wall_wall_n, 4, 1, 0, 706 R8_MESH_TEX(0, 0)};
 static const r8_s16 wall_pillar_v[24] R8_FLASH = {
     -14, -50, -14, 14, -50, -14, 14, 60, -14, -14, 60, -14,
     -14, -50, 14, 14, -50, 14, 14, 60, 14, -14, 60, 14,
@@ -27,7 +27,7 @@ static const r8_s16 wall_pillar_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0,
     0, -16384, 0, 0, 16384, 0,
 };
-static const r8_mesh wall_pillar = {wall_pillar_v, wall_pillar_f, wall_pillar_n, 8, 6, 1, 64, 0, 0};
+static const r8_mesh wall_pillar = {wall_pillar_v, wall_pillar_f, wall_pillar_n, 8, 6, 1, 64 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj wall_objects[2] R8_FLASH = {
     {&wall_wall, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     {&wall_pillar, -30, 0, 420, 0, 0, 0, 0, 1, 0},

@@ -60,7 +60,8 @@ typedef r8_u16 r8_fid;
 #define R8_GOURAUD(s) ((s) == R8_SHADE_GOURAUD)
 #define R8_W_GOURAUD 1
 #endif
-#if defined(R8_NO_TEXTURE) && !defined(R8_PLAN_ONLY)
+/* (texture mapping changes r8_mesh: left out, also from a sizing build) */
+#if defined(R8_NO_TEXTURE)
 #define R8_TEXTURED(s) 0
 #define R8_W_TEXTURE 0
 #else
@@ -214,13 +215,16 @@ typedef struct r8_state {
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
+    r8_u16 npoly;       /* faces set up this frame */
+    r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 #if R8_W_TEXTURE
+    /* last, so a build without textures (firmware sources compiled with
+     * R8_NO_TEXTURE beside library objects compiled without it) keeps
+     * every other member where it was */
     r8_s16 *cuv;        /* textures: per clipper polygon R8_CUV_STRIDE
                            r8_s16: u, v of its corners, its object */
     r8_u8 texfilter, persp;
 #endif
-    r8_u16 npoly;       /* faces set up this frame */
-    r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 } r8_state;
 
 /* render.c */

@@ -304,8 +304,8 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (pl->npool && R8_PAINTER(cfg->method))
         o += align_up(nid);
     pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
-    pl->cuv = o;
 #if R8_W_TEXTURE
+    pl->cuv = o;
     if (R8_TEXTURED(cfg->shading))
         o += align_up(2u * R8_CUV_STRIDE * cfg->clip);
 #endif

@@ -650,7 +650,7 @@ def to_c_scene(sc):
         for k in range(0, len(ns), 4):
             out.append("    " + ", ".join(f"{x}, {y}, {z}" for x, y, z in ns[k:k + 4]) + ",")
         out.append("};")
-        tex = ", 0, 0"      # r8_mesh.tex, uv: untextured
+        tex = " R8_MESH_TEX(0, 0)"      # r8_mesh.tex, uv: untextured
         if m.texture:
             from . import texture
             out.append(f"static const r8_u8 {cid}_uv[{len(m.faces) * 8}] R8_FLASH = {{")
@@ -659,7 +659,7 @@ def to_c_scene(sc):
                 bs = [texture.uv_byte(c) for p in uv for c in p] + [0] * (8 - 2 * len(uv))
                 out.append("    " + ", ".join(str(b) for b in bs) + ",")
             out.append("};")
-            tex = f", &{tids[m.texture]}, {cid}_uv"
+            tex = f" R8_MESH_TEX(&{tids[m.texture]}, {cid}_uv)"
         out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
                    f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tex}}};")
     out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")

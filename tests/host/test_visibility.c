@@ -90,7 +90,8 @@ static const long bound[R8_DEMO_COUNT][R8_VIS_COUNT] = {
 /* terrain  */ {25,  0,      0,    -1,    1412, 22,       0},
 /* wall     */ {0,   45,     0,    -1,    21,   15,       0},
 /* cross    */ {279, 263,    2,    -1,    153,  198,      0},
-/* separate */ {13,  -1,     0,    -1,    141,  0,        0}
+/* separate */ {13,  -1,     0,    -1,    141,  0,        0},
+/* crate    */ {-1,  -1,     -1,   -1,    99,   -1,       -1}
 };
 
 static void test_methods_against_zbuf16(void)

@@ -5,6 +5,9 @@
  * BYTES is app_ram(cfg) for app_defaults + scene + method (FW_HAVE_APP),
  * else r8_render_ram(cfg) for the defaults.  The firmware builds size
  * their static arena from these lines. */
+#if defined(FW_SCENE) && FW_SCENE != 7 && !defined(R8_NO_TEXTURE)
+#define R8_NO_TEXTURE   /* as the firmware of that scene (ports/fwdefs.sh) */
+#endif
 #include "plat.h"
 #include "r8render.h"
 #ifdef FW_HAVE_APP
