@@ -175,6 +175,8 @@ static void tex_span(const r8_state *st, const r8_tact *t, r8_fb *fb, const r8_s
     const r8_texture *tx = t->tex;
     const r8_u8 *data = tx ? tx->data : 0;
     r8_s16 n = (r8_s16)(sp->x1 - sp->x0), xa = sp->x0, xb, x, seg = 0;
+    r8_s16 ub = 0, vb = 0;
+    r8_u8 have = 0;     /* ub, vb: the last segment's end, this one's start */
     r8_s16 k0 = 0;
     r8_u8 *row = 0, m = 0, bil, lv = level;
     const r8_u8 *thr = 0;
@@ -202,15 +204,19 @@ static void tex_span(const r8_state *st, const r8_tact *t, r8_fb *fb, const r8_s
         if (seg == 0) {
             /* perspective: the next subdivision point (or the span's last
              * pixel), u and v exact there, affine up to it */
-            r8_s16 ua, va, ub, vb, stepn = st->persp;
+            r8_s16 ua = ub, va = vb, stepn = st->persp;
             if (xb - x - 1 < stepn)
                 stepn = (r8_s16)(xb - x - 1);
-            persp_at(t, x, sp->y, &ua, &va);
+            if (!have)
+                persp_at(t, x, sp->y, &ua, &va);
+            have = 1;
             if (stepn > 0) {
                 persp_at(t, (r8_s16)(x + stepn), sp->y, &ub, &vb);
                 r8_interp_reset(&u, ua, ub, (r8_u16)stepn);
                 r8_interp_reset(&v, va, vb, (r8_u16)stepn);
             } else {
+                ub = ua;
+                vb = va;
                 r8_interp_reset(&u, ua, ua, 1);
                 r8_interp_reset(&v, va, va, 1);
             }

@@ -71,6 +71,12 @@ int main(void)
     cfg.scene = FW_SCENE;
     cfg.render.method = FW_METHOD;
     cfg.render.shading = FW_SHADING;
+#ifdef FW_PERSP
+    cfg.render.persp = FW_PERSP;            /* texture variants (make bench) */
+#endif
+#ifdef FW_TEXFILTER
+    cfg.render.texfilter = FW_TEXFILTER;
+#endif
     cfg.frames = FW_FRAMES;
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;
