@@ -92,15 +92,20 @@ void r8_tex_face(r8_state *st, r8_tact *t, r8_u16 g, r8_u8 oi, r8_u8 n)
             r8_s16 *c = t->cv + 4u * j;
             if (q < 1)
                 q = 1;
-            val[4u * j] = (r8_s16)((c[2] * q) >> 14);
-            val[4u * j + 1u] = (r8_s16)((c[3] * q) >> 14);
+            val[4u * j] = (r8_s16)(r8_asr32(q * c[2], 14));
+            val[4u * j + 1u] = (r8_s16)(r8_asr32(q * c[3], 14));
             val[4u * j + 2u] = (r8_s16)q;
         }
         /* the corner triple (0, k, k + 1) with the largest area */
         for (k = 1; k + 1 < n; k++) {
             const r8_s16 *c = t->cv;
-            cr = ((r8_s32)c[4u * k] - c[0]) * ((r8_s32)c[4u * k + 5u] - c[1]) -
-                 ((r8_s32)c[4u * k + 4u] - c[0]) * ((r8_s32)c[4u * k + 1u] - c[1]);
+            r8_s32 b;
+            /* (no (long)a * (long)b of 16-bit values: SDCC 4.2) */
+            cr = (r8_s32)c[4u * k] - c[0];
+            cr *= (r8_s32)c[4u * k + 5u] - c[1];
+            b = (r8_s32)c[4u * k + 4u] - c[0];
+            b *= (r8_s32)c[4u * k + 1u] - c[1];
+            cr -= b;
             if ((cr < 0 ? -cr : cr) > (cross < 0 ? -cross : cross)) {
                 cross = cr;
                 b1 = k;
