@@ -68,7 +68,9 @@ static void usage(FILE *f)
     fprintf(f, "\n"
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
-"  --shading S       flat, lambert, gouraud (default: the renderer's)\n"
+"  --shading S       flat, lambert, gouraud, texture (default: the renderer's)\n"
+"  --persp N         texture: perspective-correct every N pixels (default 0: affine)\n"
+"  --bilinear        texture: bilinear filtering (8-bit textures)\n"
 "  --wire            wireframe: the edges of the faces the method keeps (cull:\n"
 "                    front faces; painter: far to near, hidden lines removed)\n"
 "  --band H          band height in rows (default 8; multiple of 8 for page1)\n"
@@ -387,7 +389,7 @@ int main(int argc, char **argv)
 {
     enum { O_OUT = 256, O_PTY, O_TCP, O_BAUD, O_RAM, O_SCENE, O_METHOD, O_BAND,
            O_FRAMES, O_FIRST, O_W, O_H, O_FMT, O_CODEC, O_PERIOD, O_NODIRTY,
-           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE, O_RX, O_KEYS, O_KEYLOG, O_SHADING, O_WIRE };
+           O_DUMP, O_LINGER, O_PRINTRAM, O_GATE, O_RX, O_KEYS, O_KEYLOG, O_SHADING, O_WIRE, O_PERSP, O_BILINEAR };
     static const struct option opts[] = {
         { "out", 1, 0, O_OUT }, { "pty", 0, 0, O_PTY }, { "tcp", 1, 0, O_TCP },
         { "baud", 1, 0, O_BAUD }, { "ram", 1, 0, O_RAM }, { "scene", 1, 0, O_SCENE },
@@ -397,7 +399,7 @@ int main(int argc, char **argv)
         { "codec", 1, 0, O_CODEC }, { "full-period", 1, 0, O_PERIOD },
         { "no-dirty", 0, 0, O_NODIRTY }, { "dump", 1, 0, O_DUMP },
         { "linger", 1, 0, O_LINGER }, { "rx", 1, 0, O_RX }, { "keys", 1, 0, O_KEYS },
-        { "key-log", 1, 0, O_KEYLOG }, { "shading", 1, 0, O_SHADING }, { "wire", 0, 0, O_WIRE }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
+        { "key-log", 1, 0, O_KEYLOG }, { "shading", 1, 0, O_SHADING }, { "wire", 0, 0, O_WIRE }, { "persp", 1, 0, O_PERSP }, { "bilinear", 0, 0, O_BILINEAR }, { "gate", 1, 0, O_GATE }, { "print-ram", 0, 0, O_PRINTRAM },
         { "quiet", 0, 0, 'q' }, { "help", 0, 0, 'h' }, { 0, 0, 0, 0 }
     };
     app_cfg cfg;
@@ -459,8 +461,15 @@ int main(int argc, char **argv)
             if (!strcmp(optarg, "flat")) cfg.render.shading = R8_SHADE_FLAT;
             else if (!strcmp(optarg, "lambert")) cfg.render.shading = R8_SHADE_LAMBERT;
             else if (!strcmp(optarg, "gouraud")) cfg.render.shading = R8_SHADE_GOURAUD;
-            else die(2, "--shading: unknown shading '%s' (flat, lambert, gouraud)", optarg);
+            else if (!strcmp(optarg, "texture")) cfg.render.shading = R8_SHADE_TEXTURE;
+            else die(2, "--shading: unknown shading '%s' (flat, lambert, gouraud, texture)", optarg);
             break;
+        case O_PERSP:
+            cfg.render.persp = (r8_u8)num("--persp", optarg, 0, 64);
+            if (cfg.render.persp == 1)
+                die(2, "--persp: %s: 0 (affine) or 2..64", optarg);
+            break;
+        case O_BILINEAR: cfg.render.texfilter = R8_TEXF_BILINEAR; break;
         case O_KEYS: keys = optarg; break;
         case O_KEYLOG: key_log = optarg; break;
         case O_LINGER: linger = (double)num("--linger", optarg, 0, 86400); break;

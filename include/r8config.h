@@ -26,6 +26,7 @@
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
  *   R8_NO_WIRE        wireframe (cfg.wire is then ignored), Wu's lines
  *                     and circles (r8_wu_line, r8_circle*)
+ *   R8_NO_TEXTURE     texture mapping (R8_SHADE_TEXTURE)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H

@@ -42,6 +42,14 @@
 #define R8_SHADE_FLAT 0    /* the face's own colour */
 #define R8_SHADE_LAMBERT 1 /* light . face normal, per face */
 #define R8_SHADE_GOURAUD 2 /* light . vertex normal, interpolated */
+#define R8_SHADE_TEXTURE 3 /* the mesh's texture times the Lambert level
+                              (cull and painter's only; not with
+                              R8_NO_TEXTURE) */
+
+/* r8_render_cfg.texfilter */
+#define R8_TEXF_NEAREST 0  /* nearest texel */
+#define R8_TEXF_BILINEAR 1 /* bilinear between 4 texels (IDX8 textures;
+                              1-bpp ones stay nearest) */
 
 /* Backface cull. */
 #define R8_CULL_NORMAL 0   /* before projection, from the face normal */
@@ -88,10 +96,15 @@ typedef struct r8_render_cfg {
     r8_u8 wire;        /* 1: wireframe, the edges of the faces the method
                           keeps (docs/pipeline.md "Lines and circles");
                           ignored by a build with R8_NO_WIRE */
+    r8_u8 texfilter;   /* R8_TEXF_* (R8_SHADE_TEXTURE) */
+    r8_u8 persp;       /* R8_SHADE_TEXTURE: 0 affine texture mapping, or
+                          perspective-correct u, v every `persp` pixels
+                          of a span (2..64), affine between */
 } r8_render_cfg;
 
 /* Defaults: no scene, cull only, Lambert, normal cull, PAGE1 128x64,
- * band 8, clip 8, pool R8_POOL_AUTO, no wireframe. */
+ * band 8, clip 8, pool R8_POOL_AUTO, no wireframe,
+ * nearest texel, affine. */
 #define R8_POOL_AUTO 255   /* as many scan states as help (up to 24) */
 void r8_render_defaults(r8_render_cfg *cfg);
 

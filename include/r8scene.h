@@ -42,6 +42,13 @@ typedef struct r8_mesh {
                                depth, then per face u16 front and back
                                child, 0xFFFF none, little-endian); 0: none
                                (R8_VIS_BSP refuses the mesh) */
+#ifndef R8_NO_TEXTURE
+    const struct r8_texture *tex; /* 0: untextured (R8_SHADE_TEXTURE
+                               then draws the face's Lambert level) */
+    const r8_u8 *uv;        /* R8_FLASH: u, v per face corner, 8 bytes a
+                               face (4 corners); 128 = the texture's width
+                               (height), so 0..255 spans two repeats */
+#endif
 } r8_mesh;
 /* The converter writes R8_MESH_BSP(tree) so a build without BSP
  * (R8_NO_BSP) links no tree. */
@@ -50,6 +57,29 @@ typedef struct r8_mesh {
 #else
 #define R8_MESH_BSP(t) t
 #endif
+/* The texture members in a positional r8_mesh initialiser, after radius:
+ * {verts, faces, normals, nverts, nfaces, convex, radius, R8_MESH_BSP(tree)
+ *  R8_MESH_TEX(t, uv)}
+ * (nothing in a build without texture mapping, so its meshes stay as
+ * small as before). */
+#ifdef R8_NO_TEXTURE
+#define R8_MESH_TEX(t, uv)
+#else
+#define R8_MESH_TEX(t, uv) , t, uv
+#endif
+
+/* A texture (docs/pipeline.md "Texture mapping"): 2^wlog x 2^hlog texels
+ * (8..64 a side), rows top to bottom in R8_FLASH data.  R8_TEX_1BPP: a
+ * row is 2^wlog / 8 bytes, MSB = leftmost texel, a set bit is lit
+ * (level 16).  R8_TEX_IDX8: a byte per texel, an index into a grey ramp
+ * 0 (black) .. 255 (white).  Coordinates wrap (the texture repeats). */
+#define R8_TEX_1BPP 0
+#define R8_TEX_IDX8 1
+typedef struct r8_texture {
+    const r8_u8 *data;      /* R8_FLASH */
+    r8_u8 wlog, hlog;       /* log2 width, height: 3..6 */
+    r8_u8 format;           /* R8_TEX_* */
+} r8_texture;
 
 /* r8_pose.flags */
 #define R8_POSE_HIDDEN 1    /* not drawn this frame */

@@ -35,6 +35,9 @@ esac
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"
 if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WIRE"; fi
+# the crate (R8_DEMO_CRATE) is drawn textured (fw_app.c); no other
+# firmware carries texture mapping
+[ "$s" != 7 ] && trim="$trim -DR8_NO_TEXTURE"
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"

@@ -74,7 +74,7 @@ static const r8_u8 cross_slab_post_bsp[148] R8_FLASH = {
     17, 0, 255, 255,
 };
 #endif
-static const r8_mesh cross_slab_post = {cross_slab_post_v, cross_slab_post_f, cross_slab_post_n, 32, 36, 0, 53, R8_MESH_BSP(cross_slab_post_bsp)};
+static const r8_mesh cross_slab_post = {cross_slab_post_v, cross_slab_post_f, cross_slab_post_n, 32, 36, 0, 53, R8_MESH_BSP(cross_slab_post_bsp) R8_MESH_TEX(0, 0)};
 static const r8_demo_obj cross_objects[1] R8_FLASH = {
     {&cross_slab_post, 0, 0, 200, 0, 0, 0, 1, 3, 0},
 };

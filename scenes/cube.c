@@ -23,7 +23,7 @@ static const r8_u8 cube_cube_bsp[28] R8_FLASH = {
     255, 255, 4, 0, 255, 255, 5, 0, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63, R8_MESH_BSP(cube_cube_bsp)};
+static const r8_mesh cube_cube = {cube_cube_v, cube_cube_f, cube_cube_n, 8, 6, 1, 63, R8_MESH_BSP(cube_cube_bsp) R8_MESH_TEX(0, 0)};
 static const r8_demo_obj cube_objects[1] R8_FLASH = {
     {&cube_cube, 0, 0, 220, 0, 0, 0, 2, 3, 1},
 };

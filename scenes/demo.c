@@ -2,10 +2,10 @@
 #include "demo.h"
 
 extern const r8_demo r8_demo_cube, r8_demo_torus, r8_demo_teapot, r8_demo_terrain,
-    r8_demo_wall, r8_demo_cross, r8_demo_separate;
+    r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate;
 
 static const char *const names[R8_DEMO_COUNT] = {
-    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate"
+    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate"
 };
 
 #ifdef R8_DEMO_ONLY
@@ -22,6 +22,8 @@ static const char *const names[R8_DEMO_COUNT] = {
 #define R8_DEMO_THE_ r8_demo_wall
 #elif R8_DEMO_ONLY == 5
 #define R8_DEMO_THE_ r8_demo_cross
+#elif R8_DEMO_ONLY == 7
+#define R8_DEMO_THE_ r8_demo_crate
 #else
 #define R8_DEMO_THE_ r8_demo_separate
 #endif
@@ -34,7 +36,7 @@ const r8_demo *r8_demo_get(r8_u8 id)
 {
     static const r8_demo *const all[R8_DEMO_COUNT] = {
         &r8_demo_cube, &r8_demo_torus, &r8_demo_teapot, &r8_demo_terrain,
-        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate
+        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate
     };
     return id < R8_DEMO_COUNT ? all[id] : 0;
 }

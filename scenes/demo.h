@@ -45,7 +45,8 @@ typedef struct r8_demo {
 #define R8_DEMO_WALL 4        /* seed's wall-and-pillar case */
 #define R8_DEMO_CROSS 5       /* two interpenetrating objects */
 #define R8_DEMO_SEPARATE 6    /* several separate objects */
-#define R8_DEMO_COUNT 7
+#define R8_DEMO_CRATE 7       /* a textured crate (R8_SHADE_TEXTURE) */
+#define R8_DEMO_COUNT 8
 #ifndef R8_DEMO_MAXOBJ
 #define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
                                  scene may set its own count) */

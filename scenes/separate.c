@@ -23,7 +23,7 @@ static const r8_u8 separate_cube_bsp[28] R8_FLASH = {
     255, 255, 4, 0, 255, 255, 5, 0, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh separate_cube = {separate_cube_v, separate_cube_f, separate_cube_n, 8, 6, 1, 28, R8_MESH_BSP(separate_cube_bsp)};
+static const r8_mesh separate_cube = {separate_cube_v, separate_cube_f, separate_cube_n, 8, 6, 1, 28, R8_MESH_BSP(separate_cube_bsp) R8_MESH_TEX(0, 0)};
 static const r8_s16 separate_bar_v[24] R8_FLASH = {
     -26, -8, -8, 26, -8, -8, 26, 8, -8, -26, 8, -8,
     -26, -8, 8, 26, -8, 8, 26, 8, 8, -26, 8, 8,
@@ -46,7 +46,7 @@ static const r8_u8 separate_bar_bsp[28] R8_FLASH = {
     255, 255, 4, 0, 255, 255, 5, 0, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh separate_bar = {separate_bar_v, separate_bar_f, separate_bar_n, 8, 6, 1, 29, R8_MESH_BSP(separate_bar_bsp)};
+static const r8_mesh separate_bar = {separate_bar_v, separate_bar_f, separate_bar_n, 8, 6, 1, 29, R8_MESH_BSP(separate_bar_bsp) R8_MESH_TEX(0, 0)};
 static const r8_demo_obj separate_objects[4] R8_FLASH = {
     {&separate_cube, -50, -10, 140, 0, 0, 0, 2, 3, 0},
     {&separate_bar, 10, 14, 230, 0, 0, 0, 0, 2, 3},

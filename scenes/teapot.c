@@ -364,7 +364,7 @@ static const r8_s16 teapot_teapot_n[708] R8_FLASH = {
     9362, 7490, -11235, -9466, -7282, -11287, -9362, -7490, 11235, 9175, 7864, 11141,
     -2185, 12015, -10923, 1725, -12072, -11210, 2185, -12015, 10923, -3048, 12193, 10669,
 };
-static const r8_mesh teapot_teapot = {teapot_teapot_v, teapot_teapot_f, teapot_teapot_n, 245, 236, 0, 68, 0};
+static const r8_mesh teapot_teapot = {teapot_teapot_v, teapot_teapot_f, teapot_teapot_n, 245, 236, 0, 68, 0 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj teapot_objects[1] R8_FLASH = {
     {&teapot_teapot, 0, 0, 190, 20, 0, 0, 0, 3, 0},
 };

@@ -346,7 +346,7 @@ static const r8_s16 terrain_terrain_n[726] R8_FLASH = {
     -6342, -14798, -3171, -6342, -14798, -3171, -3373, -15741, 3373, 3373, -15741, -3373,
     3373, -15741, 3373, 0, -16384, 0,
 };
-static const r8_mesh terrain_terrain = {terrain_terrain_v, terrain_terrain_f, terrain_terrain_n, 144, 242, 0, 110, 0};
+static const r8_mesh terrain_terrain = {terrain_terrain_v, terrain_terrain_f, terrain_terrain_n, 144, 242, 0, 110, 0 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj terrain_objects[1] R8_FLASH = {
     {&terrain_terrain, 0, 10, 210, 28, 0, 0, 0, 2, 0},
 };

@@ -307,7 +307,7 @@ static const r8_s16 torus_torus_n[600] R8_FLASH = {
     0, 16384, 0, -9830, 13107, 1229, -15406, 5135, 2201, -15522, -5174, 1940,
     -9830, -13107, 1787, 0, -16384, 0, 9769, -13026, -1832, 15379, -5126, -2714,
 };
-static const r8_mesh torus_torus = {torus_torus_v, torus_torus_f, torus_torus_n, 200, 200, 0, 56, 0};
+static const r8_mesh torus_torus = {torus_torus_v, torus_torus_f, torus_torus_n, 200, 200, 0, 56, 0 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj torus_objects[1] R8_FLASH = {
     {&torus_torus, 0, 0, 170, 40, 0, 0, 2, 3, 1},
 };

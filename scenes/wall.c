@@ -15,7 +15,7 @@ static const r8_u8 wall_wall_bsp[8] R8_FLASH = {
     0, 0, 2, 0, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh wall_wall = {wall_wall_v, wall_wall_f, wall_wall_n, 4, 1, 0, 706, R8_MESH_BSP(wall_wall_bsp)};
+static const r8_mesh wall_wall = {wall_wall_v, wall_wall_f, wall_wall_n, 4, 1, 0, 706, R8_MESH_BSP(wall_wall_bsp) R8_MESH_TEX(0, 0)};
 static const r8_s16 wall_pillar_v[24] R8_FLASH = {
     -14, -50, -14, 14, -50, -14, 14, 60, -14, -14, 60, -14,
     -14, -50, 14, 14, -50, 14, 14, 60, 14, -14, 60, 14,
@@ -38,7 +38,7 @@ static const r8_u8 wall_pillar_bsp[28] R8_FLASH = {
     255, 255, 4, 0, 255, 255, 5, 0, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh wall_pillar = {wall_pillar_v, wall_pillar_f, wall_pillar_n, 8, 6, 1, 64, R8_MESH_BSP(wall_pillar_bsp)};
+static const r8_mesh wall_pillar = {wall_pillar_v, wall_pillar_f, wall_pillar_n, 8, 6, 1, 64, R8_MESH_BSP(wall_pillar_bsp) R8_MESH_TEX(0, 0)};
 static const r8_demo_obj wall_objects[2] R8_FLASH = {
     {&wall_wall, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     {&wall_pillar, -30, 0, 420, 0, 0, 0, 0, 1, 0},

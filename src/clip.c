@@ -47,6 +47,10 @@ static r8_u8 clip_pass(const r8_proj *cam, r8_s32 zn, r8_u8 plane, const r8_clip
             c->y = a->y + r8_muldiv(b->y - a->y, da, den);
             c->z = a->z + r8_muldiv(b->z - a->z, da, den);
             c->s = (r8_s16)(a->s + r8_muldiv((r8_s32)b->s - a->s, da, den));
+#if R8_W_TEXTURE
+            c->u = (r8_s16)(a->u + r8_muldiv((r8_s32)b->u - a->u, da, den));
+            c->v = (r8_s16)(a->v + r8_muldiv((r8_s32)b->v - a->v, da, den));
+#endif
             c->src = NO_SRC;
             if (c->z < zn)
                 c->z = zn;
@@ -89,6 +93,15 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
         a[i].z = c.z + o->t.z;
         a[i].s = st->vsh == 2 ? sv[3] : 0;
         a[i].src = sv[0] == R8_VX_CLIP ? NO_SRC : g;
+#if R8_W_TEXTURE
+        a[i].u = a[i].v = 0;
+        if (R8_TEXTURED(st->shading) && me->tex) {
+            /* the corner's texture coordinates, 8.8 texels (texture.c) */
+            const r8_u8 *uv = me->uv + 8u * f + 2u * i;
+            a[i].u = (r8_s16)((r8_u16)R8_RDU8(uv) << (me->tex->wlog + 1));
+            a[i].v = (r8_s16)((r8_u16)R8_RDU8(uv + 1) << (me->tex->hlog + 1));
+        }
+#endif
         big = absmax(absmax(absmax(big, a[i].x), a[i].y), a[i].z);
     }
     /* plane distances are z * guard +- x * focal: keep |coord| < 2^19 */
@@ -120,6 +133,14 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
     for (i = 0; i < n; i++) {
         r8_vec3l c;
         r8_s16 *s;
+#if R8_W_TEXTURE
+        if (R8_TEXTURED(st->shading)) {
+            r8_s16 *uv = st->cuv + (unsigned)(cp - st->cpoly) * R8_CUV_STRIDE;
+            uv[2u * i] = in[i].u;
+            uv[2u * i + 1u] = in[i].v;
+            uv[R8_CUV_STRIDE - 1u] = (r8_s16)(ob - st->scene->objects);
+        }
+#endif
         c.x = in[i].x;
         c.y = in[i].y;
         c.z = (r8_s32)((r8_u32)in[i].z << sh);

@@ -67,7 +67,7 @@ r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r
     r8_vec3 n;
     if (ob->pose.flags & R8_POSE_COLOUR)
         colour = ob->pose.colour;
-    if (st->shading != R8_SHADE_LAMBERT)
+    if (st->shading != R8_SHADE_LAMBERT && !R8_TEXTURED(st->shading))
         return colour;
     normal_of(o, f, &n);
     return (r8_u8)((r8_tf_shade(st, &n, &o->light, colour) + 128) >> 8);

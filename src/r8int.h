@@ -60,8 +60,16 @@ typedef r8_u16 r8_fid;
 #define R8_GOURAUD(s) ((s) == R8_SHADE_GOURAUD)
 #define R8_W_GOURAUD 1
 #endif
+/* (texture mapping changes r8_mesh: left out, also from a sizing build) */
+#if defined(R8_NO_TEXTURE)
+#define R8_TEXTURED(s) 0
+#define R8_W_TEXTURE 0
+#else
+#define R8_TEXTURED(s) ((s) == R8_SHADE_TEXTURE)
+#define R8_W_TEXTURE 1
+#endif
 /* st->vsh: 2 r8_s16 per screen vertex, or 4 with depth or shade */
-#if R8_W_DEPTH || R8_W_GOURAUD
+#if R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE
 #define R8_VSH(st) ((st)->vsh)
 #else
 #define R8_VSH(st) 1
@@ -96,6 +104,9 @@ typedef struct r8_clipv {
     r8_s32 x, y, z;
     r8_s16 s;
     r8_u16 src;
+#if R8_W_TEXTURE
+    r8_s16 u, v;        /* texture coordinates (8.8 texels) */
+#endif
 } r8_clipv;
 #define R8_CLIP_BYTES (2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(r8_clipv))
 
@@ -127,6 +138,23 @@ typedef struct r8_acthead {
     r8_u8 used;
     r8_scanx c;
 } r8_acthead;
+
+/* A textured face being scanned (texture.c): the scan with attributes
+ * over the face's own corner records x, y (12.4), u, v (8.8 texels), so
+ * the depth and shade interpolators carry u and v; the texture, and for
+ * perspective correction the planes of u q, v q and q (q = 1/z scaled
+ * to the face's nearest corner, Q14) over the screen, 12 fraction bits
+ * per subpixel. */
+#define R8_CUV_STRIDE (2u * R8_MAX_CLIP_POLY + 1u)
+typedef struct r8_tact {
+    r8_u8 level;
+    r8_u8 used;
+    r8_scan s;
+    r8_s16 cv[4 * R8_SCAN_MAXV];
+    const r8_texture *tex;
+    r8_s16 px, py;      /* plane origin (12.4) */
+    r8_s32 p0[3], pa[3], pb[3];  /* value << 12 there, d/dx, d/dy */
+} r8_tact;
 
 /* S-buffer span node */
 typedef struct r8_snode {
@@ -194,6 +222,14 @@ typedef struct r8_state {
 #endif
     r8_u16 npoly;       /* faces set up this frame */
     r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
+#if R8_W_TEXTURE
+    /* last, so a build without textures (firmware sources compiled with
+     * R8_NO_TEXTURE beside library objects compiled without it) keeps
+     * every other member where it was */
+    r8_s16 *cuv;        /* textures: per clipper polygon R8_CUV_STRIDE
+                           r8_s16: u, v of its corners, its object */
+    r8_u8 texfilter, persp;
+#endif
 } r8_state;
 
 /* render.c */
@@ -239,6 +275,11 @@ int r8_bsp_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned wo
 void r8_bsp_begin(r8_state *st, const r8_mesh *me);
 r8_u16 r8_bsp_next(r8_state *st, const r8_objx *o, const r8_mesh *me);
 void r8_bsp_frame(r8_render *r);
+/* texture.c: set up textured face g (object oi, 255: clipper polygon
+ * g - nfaces) whose scan t->s.c.vp[0..n) face_setup has set; draw its
+ * rows < ylimit */
+void r8_tex_face(r8_state *st, r8_tact *t, r8_u16 g, r8_u8 oi, r8_u8 n);
+void r8_tex_draw(r8_state *st, r8_tact *t, r8_s16 ylimit, r8_fb *fb);
 r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg);
 
 #endif

@@ -32,6 +32,12 @@
 #define R8_FAST_ONLY 1
 #endif
 
+#if R8_W_TEXTURE
+#define R8_SHADE_MAX R8_SHADE_TEXTURE
+#else
+#define R8_SHADE_MAX R8_SHADE_GOURAUD
+#endif
+
 void r8_render_defaults(r8_render_cfg *cfg)
 {
     cfg->scene = 0;
@@ -46,6 +52,10 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->pool = R8_POOL_AUTO;
 #ifndef R8_NO_WIRE
     cfg->wire = 0;      /* (a build without it ignores the field) */
+#endif
+#if R8_W_TEXTURE
+    cfg->texfilter = R8_TEXF_NEAREST;
+    cfg->persp = 0;
 #endif
 }
 
@@ -138,7 +148,7 @@ static unsigned align_up(unsigned n)
 }
 
 typedef struct plan {
-    unsigned obj, sv, ftop, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
+    unsigned obj, sv, ftop, cuv, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
         pool, tmp, depth, snode, shead, total;
     r8_u16 nverts, nfaces, nbands, nheads, sv_cap;
     unsigned esize;
@@ -151,7 +161,7 @@ static int cfg_valid(const r8_render_cfg *cfg)
     r8_u32 nf = 0;
     r8_u8 i;
     if (!sc || sc->nobjects == 0 || !sc->objects || !method_built(cfg->method) ||
-        cfg->shading > R8_SHADE_GOURAUD || cfg->cull > R8_CULL_JUDD ||
+        cfg->shading > R8_SHADE_MAX || cfg->cull > R8_CULL_JUDD ||
         cfg->format > R8_FMT_IDX8)
         return 0;
 #ifdef R8_NO_GOURAUD
@@ -161,6 +171,20 @@ static int cfg_valid(const r8_render_cfg *cfg)
 #ifdef R8_PAGE1_ONLY
     if (cfg->format != R8_FMT_PAGE1)
         return 0;
+#endif
+#if R8_W_TEXTURE
+    if (cfg->shading == R8_SHADE_TEXTURE) {   /* texture.c */
+        if (cfg->method > R8_VIS_PAINTER || cfg->texfilter > R8_TEXF_BILINEAR ||
+            cfg->persp == 1 || cfg->persp > 64)
+            return 0;
+        for (i = 0; i < sc->nobjects; i++) {
+            const r8_mesh *me = sc->objects[i].mesh;
+            if (me && me->tex && (!me->uv || me->tex->wlog < 3 || me->tex->wlog > 6 ||
+                                  me->tex->hlog < 3 || me->tex->hlog > 6 ||
+                                  me->tex->format > R8_TEX_IDX8 || !me->tex->data))
+                return 0;
+        }
+    }
 #endif
 #ifdef R8_NO_RT_NORMALS
     for (i = 0; i < sc->nobjects; i++)
@@ -246,7 +270,8 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    pl->vsh = (r8_u8)(R8_DEPTH(cfg->method) || R8_GOURAUD(cfg->shading) ? 2 : 1);
+    pl->vsh = (r8_u8)(R8_DEPTH(cfg->method) || R8_GOURAUD(cfg->shading) ||
+                      R8_TEXTURED(cfg->shading) ? 2 : 1);
     pl->fast = (r8_u8)(pl->vsh == 1);
     pl->nbands = (r8_u16)(((unsigned)cfg->height + (unsigned)cfg->band - 1u) / (unsigned)cfg->band);
     pl->nheads = R8_PAINTER(cfg->method) ? R8_JEFF_BUCKETS : pl->nbands;
@@ -263,6 +288,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (pl->npool > R8_POOL_MAX)
         pl->npool = R8_POOL_MAX;
     pl->esize = align_up(pl->fast ? sizeof(r8_actx) : sizeof(r8_act));
+#if R8_W_TEXTURE
+    if (R8_TEXTURED(cfg->shading))
+        pl->esize = align_up(sizeof(r8_tact));
+#endif
     pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
     pl->vnorm = o;
@@ -282,6 +311,11 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (pl->npool && R8_PAINTER(cfg->method))
         o += align_up(nid);
     pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
+#if R8_W_TEXTURE
+    pl->cuv = o;
+    if (R8_TEXTURED(cfg->shading))
+        o += align_up(2u * R8_CUV_STRIDE * cfg->clip);
+#endif
     /* One region for memory that is never live at the same time: the
      * sort buckets and the clipper's polygons (while the frame is set
      * up), then the scan states, depth memory and S-buffer (while bands
@@ -465,6 +499,13 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #if R8_W_GOURAUD
     if (cfg->shading == R8_SHADE_GOURAUD)
         st->attrs |= R8_ATTR_S;
+#endif
+#if R8_W_TEXTURE
+    if (R8_TEXTURED(cfg->shading))
+        st->attrs |= R8_ATTR_D;      /* vertex 1/z for perspective */
+    st->cuv = (r8_s16 *)(void *)(base + pl.cuv);
+    st->texfilter = cfg->texfilter;
+    st->persp = cfg->persp;
 #endif
     st->first = (r8_fid)R8_FID_END;
 #ifndef R8_NO_BSP
@@ -932,8 +973,12 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         }
 #endif
         e->level = face_level(st, g, oi);
+#if R8_W_TEXTURE
+        if (R8_TEXTURED(st->shading))
+            r8_tex_face(st, (r8_tact *)(void *)e, g, oi, n);
+#endif
 #ifndef R8_FAST_ONLY
-        if (!st->fast) {
+        if (!st->fast && !R8_TEXTURED(st->shading)) {
             r8_act *a = (r8_act *)(void *)e;
             a->s.attrs = st->attrs;
             r8_scan_attrs(&a->s);
@@ -941,6 +986,11 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 #endif
     }
     c = &e->c;
+#if R8_W_TEXTURE
+    if (R8_TEXTURED(st->shading))
+        r8_tex_draw(st, (r8_tact *)(void *)e, y1, fb);
+    else
+#endif
 #ifndef R8_FAST_ONLY
     if (!st->fast) {
         r8_act *a = (r8_act *)(void *)e;

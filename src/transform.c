@@ -109,7 +109,7 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
         st->kmul3 = st->kmul / 3u;
     }
 #endif
-#if R8_W_DEPTH
+#if R8_W_DEPTH || R8_W_TEXTURE
     if (!(st->attrs & R8_ATTR_D))
         return;                        /* no vertex depth this frame */
     /* depth = 32767 (zn/z - zn/zf) / (1 - zn/zf), through W = zn/z in Q20 */
@@ -180,7 +180,7 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
     r8_s16 *out = st->sv + 2u * g;      /* vsh 1: 2 entries a vertex */
     r8_s8 e;
     r8_u16 m;
-#if R8_W_DEPTH || R8_W_GOURAUD
+#if R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE
     if (st->vsh != 1)                   /* (no run-time multiply) */
         out += 2u * g;
 #endif
@@ -192,7 +192,7 @@ void r8_tf_camera(const r8_vec3l *c, r8_state *st, r8_u16 g)
         out[0] = R8_VX_CLIP;
         return;
     }
-#if R8_W_DEPTH || R8_W_GOURAUD
+#if R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE
     if (st->vsh == 2)
         out[2] = st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
 #endif

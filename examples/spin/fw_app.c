@@ -6,8 +6,8 @@
  *                        fw_sizes.c (mk/targets.mk passes it in)
  *   FW_POOL              scan-state pool (default R8_POOL_AUTO; the 2 KB
  *                        ATmega328P builds use 0: least RAM)
- *   FW_SHADING           R8_SHADE_* (default Lambert; make bench measures
- *                        every shading)
+ *   FW_SHADING           R8_SHADE_* (default Lambert, texture for the
+ *                        crate; make bench measures every shading)
  *   FW_WIRE              1: wireframe (cfg.render.wire; default 0)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
@@ -25,7 +25,11 @@
 #define FW_FRAMES 4
 #endif
 #ifndef FW_SHADING
+#if FW_SCENE == 7
+#define FW_SHADING R8_SHADE_TEXTURE   /* the crate (R8_DEMO_CRATE) is textured */
+#else
 #define FW_SHADING R8_SHADE_LAMBERT
+#endif
 #endif
 
 static app_cfg cfg;
@@ -69,6 +73,12 @@ int main(void)
     cfg.scene = FW_SCENE;
     cfg.render.method = FW_METHOD;
     cfg.render.shading = FW_SHADING;
+#ifdef FW_PERSP
+    cfg.render.persp = FW_PERSP;            /* texture variants (make bench) */
+#endif
+#ifdef FW_TEXFILTER
+    cfg.render.texfilter = FW_TEXFILTER;
+#endif
     cfg.frames = FW_FRAMES;
 #ifdef FW_WIRE
     cfg.render.wire = FW_WIRE;

@@ -16,7 +16,7 @@ static const r8_face cube_f[6] R8_FLASH = {
 static const r8_s16 cube_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0, 0, -16384, 0, 0, 16384, 0
 };
-static const r8_mesh cube = {cube_v, cube_f, cube_n, 8, 6, 1, 63, 0};
+static const r8_mesh cube = {cube_v, cube_f, cube_n, 8, 6, 1, 63, 0 R8_MESH_TEX(0, 0)};
 
 static r8_object obj;
 static r8_scene scene;

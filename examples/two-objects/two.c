@@ -14,7 +14,7 @@ static const r8_face cube_f[6] R8_FLASH = {
 static const r8_s16 cube_n[18] R8_FLASH = {
     0, 0, -16384, 0, 0, 16384, 16384, 0, 0, -16384, 0, 0, 0, -16384, 0, 0, 16384, 0
 };
-static const r8_mesh cube = {cube_v, cube_f, cube_n, 8, 6, 1, 35, 0};
+static const r8_mesh cube = {cube_v, cube_f, cube_n, 8, 6, 1, 35, 0 R8_MESH_TEX(0, 0)};
 
 static const r8_s16 octa_v[18] R8_FLASH = {
     40, 0, 0, -40, 0, 0, 0, 40, 0, 0, -40, 0, 0, 0, 40, 0, 0, -40
@@ -27,7 +27,7 @@ static const r8_face octa_f[8] R8_FLASH = {
 static const r8_s16 octa_n[24] R8_FLASH = {
     K, K, K, K, K, -K, K, -K, K, K, -K, -K, -K, K, K, -K, K, -K, -K, -K, K, -K, -K, -K
 };
-static const r8_mesh octa = {octa_v, octa_f, octa_n, 6, 8, 1, 40, 0};
+static const r8_mesh octa = {octa_v, octa_f, octa_n, 6, 8, 1, 40, 0 R8_MESH_TEX(0, 0)};
 
 static r8_object obj[2];
 r8_scene two_scene;

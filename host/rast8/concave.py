@@ -276,10 +276,16 @@ def compare(pts2, maxv=4):
 def split_mesh(mesh, tol=FOLD_DEG):
     """Split every face of mesh (scene.Mesh) that is not planar and
     convex; returns the number of faces added."""
-    out = []
-    for colour, idx in mesh.faces:
+    uvs = getattr(mesh, "uvs", None) or []
+    out, out_uv = [], []
+    for k, (colour, idx) in enumerate(mesh.faces):
+        uv = uvs[k] if k < len(uvs) else None
+        corner = dict(zip(idx, uv)) if uv else None    # pieces keep the corners' u, v
         for pc in split_face(mesh.verts, idx, 4, tol):
             out.append((colour, pc))
+            out_uv.append([corner[i] for i in pc] if corner else None)
     added = len(out) - len(mesh.faces)
     mesh.faces = out
+    if uvs:
+        mesh.uvs = out_uv
     return added

@@ -22,6 +22,13 @@ shortcuts:
   vertex, interpolated linearly along edges (in camera space where the
   near plane cuts an edge) and then in screen space along the row at the
   pixel centre; level = round(I).  round() is half up, as the C code.
+- texture (docs/pipeline.md "Texture mapping"): the ray through the
+  pixel centre meets the face at a camera point; its texture coordinates
+  are the affine map of the face's corner (u, v) in camera space (exact
+  perspective), sampled nearest (the texel containing (u, v)) or
+  bilinear (between the four texel centres about it), wrapping; level =
+  round(texel / 255 * round(Lambert level)).  Untextured faces draw their
+  Lambert level.
 - 1 bpp: ordered 4x4 dither, lit iff level > BAYER[y & 3][x & 3].
 """
 from __future__ import annotations
@@ -150,6 +157,9 @@ class Poly:
     p0: np.ndarray        # a camera-space point on the plane
     front: bool
     level: float          # flat/Lambert level (unrounded)
+    pts: np.ndarray = None    # camera-space corners (after the near clip)
+    uv: np.ndarray = None     # texture coordinates per corner (textures)
+    tex: object = None        # texture.Texture of the mesh
 
 
 @dataclass
@@ -208,8 +218,10 @@ def project(sc, cam, width, height):
     return width / 2.0 + f * cam[:, 0] / cam[:, 2], height / 2.0 + f * cam[:, 1] / cam[:, 2]
 
 
-def render(sc, frame, width=128, height=64, shading="lambert"):
-    """Render frame `frame` of scene sc (host/rast8/scene.py Scene)."""
+def render(sc, frame, width=128, height=64, shading="lambert", texfilter="nearest"):
+    """Render frame `frame` of scene sc (host/rast8/scene.py Scene);
+    shading flat, lambert, gouraud or texture (texfilter nearest or
+    bilinear)."""
     f = focal_px(sc, width)
     cx, cy = width / 2.0, height / 2.0
     light = unit(np.array(sc.light, float))
@@ -218,6 +230,7 @@ def render(sc, frame, width=128, height=64, shading="lambert"):
     fid = np.full((height, width), -1, int)
     zb = np.full((height, width), np.inf)
     out = Frame(width, height, level, fid, zb, f=f)
+    out.texfilter = texfilter
     gid = 0
     for obj in sc.objects:
         mesh = sc.meshes[obj.mesh]
@@ -231,7 +244,7 @@ def render(sc, frame, width=128, height=64, shading="lambert"):
                 vn[i] += n
         vint = np.array([16.0 * (amb + (1 - amb) * max(0.0, float(np.dot(m @ unit(n), light))))
                          for n in vn])
-        for (colour, idx), n_model in zip(mesh.faces, fn):
+        for k, ((colour, idx), n_model) in enumerate(zip(mesh.faces, fn)):
             g = gid
             gid += 1
             p = cam[idx]
@@ -241,12 +254,22 @@ def render(sc, frame, width=128, height=64, shading="lambert"):
                 lev = float(colour)
             else:
                 lev = colour * (amb + (1 - amb) * max(0.0, float(np.dot(m @ n_model, light))))
-            pts, ats = clip_near(list(p), list(vint[idx]), sc.near)
+            tex = sc.textures.get(mesh.texture) if shading == "texture" and mesh.texture else None
+            if tex is not None:
+                uvs = mesh.uvs[k] if k < len(mesh.uvs) and mesh.uvs[k] else [(0.0, 0.0)] * len(idx)
+                ats = [np.array([vint[i], uvs[j][0], uvs[j][1]]) for j, i in enumerate(idx)]
+            else:
+                ats = list(vint[idx])
+            pts, ats = clip_near(list(p), ats, sc.near)
             if len(pts) < 3:
                 continue
             pts = np.array(pts)
             xs, ys = project(sc, pts, width, height)
-            poly = Poly(g, xs, ys, np.array(ats), n, p[0], front, lev)
+            if tex is not None:
+                ats = np.array(ats)
+                poly = Poly(g, xs, ys, ats[:, 0], n, p[0], front, lev, pts, ats[:, 1:], tex)
+            else:
+                poly = Poly(g, xs, ys, np.array(ats), n, p[0], front, lev)
             out.polys[g] = poly
             if not front:
                 continue
@@ -271,8 +294,45 @@ def _draw(out, poly, shading, cx, cy, f):
     out.fid[rr, cc] = poly.gid
     if shading == "gouraud":
         out.level[rr, cc] = gouraud_at(poly.xs, poly.ys, poly.inten, cc + 0.5, rr + 0.5)
+    elif shading == "texture" and poly.tex is not None:
+        pts = np.stack([dx[near] * z, dy[near] * z, z], axis=1)
+        u, v = uv_at(poly, pts)
+        t = sample(poly.tex, u, v, out.texfilter)
+        out.level[rr, cc] = round_half_up(t / 255.0 * float(round_half_up(poly.level)))
+    elif shading == "texture":
+        out.level[rr, cc] = round_half_up(poly.level)
     else:
         out.level[rr, cc] = poly.level
+
+
+def uv_at(poly, pts):
+    """Texture coordinates at camera points on the face: the affine map
+    of its corners' (u, v) (least squares over the corners)."""
+    c = poly.pts
+    o = c[0]
+    e = c[1:] - o
+    a = np.linalg.lstsq(e, poly.uv[1:] - poly.uv[0], rcond=None)[0]
+    d = pts - o
+    uv = poly.uv[0] + d @ a
+    return uv[:, 0], uv[:, 1]
+
+
+def sample(tex, u, v, texfilter="nearest"):
+    """Texel grey 0..255 at texture coordinates (1.0 = one repeat)."""
+    s = tex.side
+    grey = np.frombuffer(bytes(tex.grey), np.uint8).reshape(s, s).astype(float)
+    if tex.fmt == 0:
+        grey = np.where(grey >= 128, 255.0, 0.0)
+    x, y = np.asarray(u) * s, np.asarray(v) * s
+    if texfilter != "bilinear" or tex.fmt == 0:
+        return grey[np.floor(y).astype(int) % s, np.floor(x).astype(int) % s]
+    x, y = x - 0.5, y - 0.5
+    x0, y0 = np.floor(x).astype(int), np.floor(y).astype(int)
+    fx, fy = x - x0, y - y0
+    g = lambda yy, xx: grey[yy % s, xx % s]  # noqa: E731
+    a = g(y0, x0) * (1 - fx) + g(y0, x0 + 1) * fx
+    b = g(y0 + 1, x0) * (1 - fx) + g(y0 + 1, x0 + 1) * fx
+    return a * (1 - fy) + b * fy
 
 
 def gouraud_at(xs, ys, inten, px, py):

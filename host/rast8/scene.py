@@ -18,7 +18,7 @@ from .concave import split_mesh
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE_DIR = os.path.join(HERE, "scenes")
-BUILTIN_ORDER = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
+BUILTIN_ORDER = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate"]
 
 
 class SceneError(Exception):
@@ -36,6 +36,8 @@ class Mesh:
     faces: list = field(default_factory=list)   # [(colour, [i, j, k(, l)])]
     convex: bool = False
     bsp: object = None                          # tree bytes (host/rast8/bsp.py) or None
+    texture: str = None                         # a Scene.textures name
+    uvs: list = field(default_factory=list)     # per face: [(u, v)] per corner, or None
 
     def radius(self):
         return int(math.ceil(max((math.sqrt(x * x + y * y + z * z) for x, y, z in self.verts), default=0)))
@@ -59,6 +61,7 @@ class Scene:
     light: tuple = (-1.0, -1.0, -1.0)
     ambient: float = 0.2
     bsp: bool = False        # merge rigid groups, split faces for BSP trees
+    textures: dict = field(default_factory=dict)   # name -> texture.Texture
 
 
 def _int(tok, path, ln, lo=-32768, hi=32767, what="value"):
@@ -137,12 +140,18 @@ def parse_r8s(text, path="<scene>"):
                 sc.ambient = _float(t[5], path, ln, "ambient")
                 if not 0 <= sc.ambient <= 1:
                     raise SceneError(path, ln, "ambient must be 0..1")
+        elif kw == "texture":
+            _texture_line(sc, t, path, ln)
         elif kw == "mesh":
-            if len(t) != 2:
-                raise SceneError(path, ln, "usage: mesh NAME")
+            if len(t) not in (2, 4) or (len(t) == 4 and t[2] != "texture"):
+                raise SceneError(path, ln, "usage: mesh NAME [texture TEX]")
             if t[1] in sc.meshes:
                 raise SceneError(path, ln, f"mesh '{t[1]}' defined twice")
             mesh = Mesh(t[1])
+            if len(t) == 4:
+                if t[3] not in sc.textures:
+                    raise SceneError(path, ln, f"unknown texture '{t[3]}'")
+                mesh.texture = t[3]
         elif kw == "v":
             if mesh is None:
                 raise SceneError(path, ln, "'v' outside a mesh")
@@ -154,13 +163,23 @@ def parse_r8s(text, path="<scene>"):
         elif kw == "f":
             if mesh is None:
                 raise SceneError(path, ln, "'f' outside a mesh")
+            uv = None
+            if "uv" in t:
+                k = t.index("uv")
+                t, uvt = t[:k], t[k + 1:]
+                if len(uvt) != 2 * (len(t) - 2):
+                    raise SceneError(path, ln, "uv needs U V for every corner")
+                uv = [(_float(a, path, ln, "u"), _float(b, path, ln, "v")) for a, b in zip(uvt[::2], uvt[1::2])]
+                if any(not 0 <= c < 2 for p in uv for c in p):
+                    raise SceneError(path, ln, "texture coordinates must lie in 0..2 (1 = one texture)")
             if len(t) not in (5, 6):
-                raise SceneError(path, ln, "usage: f COLOUR I J K [L]")
+                raise SceneError(path, ln, "usage: f COLOUR I J K [L] [uv U V ...]")
             colour = _int(t[1], path, ln, 0, 16, "colour")
             idx = [_int(x, path, ln, 0, len(mesh.verts) - 1, "vertex index") for x in t[2:]]
             if len(set(idx)) != len(idx):
                 raise SceneError(path, ln, "face repeats a vertex")
             mesh.faces.append((colour, idx))
+            mesh.uvs.append(uv)
         elif kw == "end":
             if mesh is None:
                 raise SceneError(path, ln, "'end' without 'mesh'")
@@ -202,6 +221,25 @@ def parse_r8s(text, path="<scene>"):
     return sc
 
 
+def _texture_line(sc, t, path, ln):
+    """texture NAME FILE.png [1bpp|idx8]  or  texture NAME crate"""
+    from . import texture
+    if len(t) not in (3, 4):
+        raise SceneError(path, ln, "usage: texture NAME FILE.png [1bpp|idx8] (or: texture NAME crate)")
+    if t[1] in sc.textures:
+        raise SceneError(path, ln, f"texture '{t[1]}' defined twice")
+    if t[2] == "crate" and len(t) == 3:
+        tex = texture.crate()
+        tex.name = t[1]
+    else:
+        f = t[2] if os.path.isabs(t[2]) else os.path.join(os.path.dirname(os.path.abspath(path)), t[2])
+        try:
+            tex = texture.load_png(f, t[3] if len(t) == 4 else "idx8", t[1])
+        except texture.TextureError as e:
+            raise SceneError(path, ln, str(e)) from None
+    sc.textures[t[1]] = tex
+
+
 def load_r8s(path):
     with open(path, encoding="utf-8") as f:
         return parse_r8s(f.read(), path)
@@ -215,7 +253,7 @@ def parse_obj(text, path="<obj>", scale=None, colour=16):
     outside with y up; rast8 is clockwise with y down, so y is negated
     (which also flips the winding).  Coordinates are scaled to fit
     +/-`scale` (default: the largest extent becomes 100)."""
-    verts, faces = [], []
+    verts, faces, vts, uvs = [], [], [], []
     for ln, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip()
         if not line:
@@ -228,20 +266,33 @@ def parse_obj(text, path="<obj>", scale=None, colour=16):
         elif t[0] == "f":
             if len(t) < 4:
                 raise SceneError(path, ln, "a face needs 3 or more vertices")
-            idx = []
+            idx, tix = [], []
             for tok in t[1:]:
+                parts = tok.split("/")
                 try:
-                    i = int(tok.split("/")[0])
+                    i = int(parts[0])
+                    ti = int(parts[1]) if len(parts) > 1 and parts[1] else None
                 except ValueError:
                     raise SceneError(path, ln, f"bad vertex reference '{tok}'") from None
                 i = i - 1 if i > 0 else len(verts) + i
                 if not 0 <= i < len(verts):
                     raise SceneError(path, ln, f"vertex {tok} not defined yet")
                 idx.append(i)
+                if ti is not None:
+                    ti = ti - 1 if ti > 0 else len(vts) + ti
+                    if not 0 <= ti < len(vts):
+                        raise SceneError(path, ln, f"texture coordinate {tok} not defined yet")
+                tix.append(ti)
             if len(set(idx)) != len(idx):
                 raise SceneError(path, ln, "face repeats a vertex")
             faces.append((colour, idx))
-        elif t[0] in ("vn", "vt", "o", "g", "s", "usemtl", "mtllib", "l"):
+            uvs.append([vts[j] for j in tix] if None not in tix else None)
+        elif t[0] == "vt":
+            if len(t) < 3:
+                raise SceneError(path, ln, "usage: vt U V")
+            u, v = (_float(x, path, ln, "texture coordinate") for x in t[1:3])
+            vts.append((u % 2.0, (1.0 - v) % 2.0))     # OBJ v runs up, rast8's down
+        elif t[0] in ("vn", "o", "g", "s", "usemtl", "mtllib", "l"):
             continue
         else:
             raise SceneError(path, ln, f"unsupported OBJ statement '{t[0]}'")
@@ -254,6 +305,7 @@ def parse_obj(text, path="<obj>", scale=None, colour=16):
     m = Mesh(os.path.splitext(os.path.basename(path))[0] or "obj")
     m.verts = [(round(x * k), round(-y * k), round(z * k)) for x, y, z in verts]
     m.faces = faces
+    m.uvs = uvs if any(uvs) else []
     split_mesh(m)
     m.convex = _convex_closed(m)
     return m
@@ -520,6 +572,14 @@ def _builtin(name):
         sc.meshes["post"] = box("post", 14, 40, 14, 16)
         sc.objects.append(Obj("slab", (0, 0, 200), (0, 0, 0), (1, 3, 0)))
         sc.objects.append(Obj("post", (0, 0, 200), (0, 0, 0), (1, 3, 0)))
+    elif name == "crate":
+        from . import texture
+        sc.textures["crate"] = texture.crate()
+        m = box("crate", 40, 40, 40, 16)
+        m.texture = "crate"
+        m.uvs = [[(0, 0), (1, 0), (1, 1), (0, 1)] for _ in m.faces]
+        sc.meshes["crate"] = m
+        sc.objects.append(Obj("crate", (0, 0, 200), (0, 0, 0), (1, 2, 0)))
     elif name == "separate":
         sc.meshes["cube"] = box("cube", 16, 16, 16, 16)
         sc.meshes["bar"] = box("bar", 26, 8, 8, 11)
@@ -593,7 +653,12 @@ def to_c_scene(sc):
     out = [f"/* Generated by host/rast8/scene.py from scene {sc.name!r}: do not edit; "
            "run `make scenes`. */",
            '#include "demo.h"', ""]
-    mids = {}
+    mids, tids = {}, {}
+    if sc.textures:
+        from . import texture
+        for tname, tex in sc.textures.items():
+            tids[tname] = f"{sid}_tex_{_cname(tname)}"
+            out.extend(texture.to_c(tex, tids[tname]))
     for mname, m in sc.meshes.items():
         cid = f"{sid}_{_cname(mname)}"
         mids[mname] = cid
@@ -611,6 +676,16 @@ def to_c_scene(sc):
         for k in range(0, len(ns), 4):
             out.append("    " + ", ".join(f"{x}, {y}, {z}" for x, y, z in ns[k:k + 4]) + ",")
         out.append("};")
+        tex = " R8_MESH_TEX(0, 0)"      # r8_mesh.tex, uv: untextured
+        if m.texture:
+            from . import texture
+            out.append(f"static const r8_u8 {cid}_uv[{len(m.faces) * 8}] R8_FLASH = {{")
+            for k in range(len(m.faces)):
+                uv = (m.uvs[k] if k < len(m.uvs) and m.uvs[k] else [(0, 0)] * len(m.faces[k][1]))
+                bs = [texture.uv_byte(c) for p in uv for c in p] + [0] * (8 - 2 * len(uv))
+                out.append("    " + ", ".join(str(b) for b in bs) + ",")
+            out.append("};")
+            tex = f" R8_MESH_TEX(&{tids[m.texture]}, {cid}_uv)"
         tail = ", 0"
         if m.bsp:
             out.append("#ifndef R8_NO_BSP")
@@ -621,7 +696,7 @@ def to_c_scene(sc):
             out.append("#endif")
             tail = f", R8_MESH_BSP({cid}_bsp)"
         out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
-                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tail}}};")
+                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tail}{tex}}};")
     out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")
     for o in sc.objects:
         out.append(f"    {{&{mids[o.mesh]}, {o.pos[0]}, {o.pos[1]}, {o.pos[2]}, "

@@ -104,8 +104,8 @@ static const r8_s16 xb_v[] = {-60, -40, 230, 60, -40, 170, 60, 40, 170, -60, 40,
 static const r8_face quad_f8[] = {{4, 8, {0, 1, 2, 3}}};
 static const r8_face quad_f16[] = {{4, 16, {0, 1, 2, 3}}};
 static const r8_face quad_f12[] = {{4, 12, {0, 1, 2, 3}}};
-static const r8_mesh xa = {xa_v, quad_f8, 0, 4, 1, 0, 250, 0};
-static const r8_mesh xb = {xb_v, quad_f16, 0, 4, 1, 0, 250, 0};
+static const r8_mesh xa = {xa_v, quad_f8, 0, 4, 1, 0, 250, 0 R8_MESH_TEX(0, 0)};
+static const r8_mesh xb = {xb_v, quad_f16, 0, 4, 1, 0, 250, 0 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj x_objs[] = {
     {&xa, 0, 0, 0, 0, 0, 0, 0, 0, 1},
     {&xb, 0, 0, 0, 0, 0, 0, 0, 0, 1}
@@ -183,9 +183,9 @@ static void test_interpenetrating(void)
 static const r8_s16 p0_v[] = {-6, -76, 170, 63, 43, 230, 49, 51, 230, -19, -68, 170};
 static const r8_s16 p1_v[] = {68, 33, 170, -68, 33, 230, -68, 17, 230, 68, 17, 170};
 static const r8_s16 p2_v[] = {-63, 43, 170, 6, -76, 230, 19, -68, 230, -49, 51, 170};
-static const r8_mesh p0 = {p0_v, quad_f8, 0, 4, 1, 0, 250, 0};
-static const r8_mesh p1 = {p1_v, quad_f12, 0, 4, 1, 0, 250, 0};
-static const r8_mesh p2 = {p2_v, quad_f16, 0, 4, 1, 0, 250, 0};
+static const r8_mesh p0 = {p0_v, quad_f8, 0, 4, 1, 0, 250, 0 R8_MESH_TEX(0, 0)};
+static const r8_mesh p1 = {p1_v, quad_f12, 0, 4, 1, 0, 250, 0 R8_MESH_TEX(0, 0)};
+static const r8_mesh p2 = {p2_v, quad_f16, 0, 4, 1, 0, 250, 0 R8_MESH_TEX(0, 0)};
 static const r8_demo_obj cyc_objs[] = {
     {&p0, 0, 0, 0, 0, 0, 0, 0, 0, 2},
     {&p1, 0, 0, 0, 0, 0, 0, 0, 0, 2},
@@ -319,7 +319,7 @@ static const r8_s16 floor_v[] = {-32767, 0, -32767, 32767, 0, -32767, 32767, 0, 
 static const r8_face floor_f[] = {{4, 16, {3, 2, 1, 0}}};   /* clockwise seen from above */
 /* a one-face BSP tree (root 0, depth 1, no children): BSP runs here too */
 static const r8_u8 one_face_bsp[8] = {0, 0, 1, 0, 255, 255, 255, 255};
-static const r8_mesh floor_m = {floor_v, floor_f, 0, 4, 1, 0, 32767, one_face_bsp};
+static const r8_mesh floor_m = {floor_v, floor_f, 0, 4, 1, 0, 32767, one_face_bsp R8_MESH_TEX(0, 0)};
 static r8_demo_obj floor_objs[1] = {{&floor_m, 0, 40, 0, 0, 0, 0, 0, 3, 0}};
 static const r8_demo floor_scene = {"floor", floor_objs, 1, 50, 16, 4096, {-9459, -9459, -9459}};
 
@@ -331,7 +331,7 @@ static const r8_demo floor_scene = {"floor", floor_objs, 1, 50, 16, 4096, {-9459
  * near edge below the screen: rows 34..63 covered, 0..33 empty. */
 static const r8_s16 strip_v[] = {-32767, 0, 2000, 32767, 0, 2000, 32767, 0, 20, -32767, 0, 20};
 static const r8_face strip_f[] = {{4, 16, {0, 1, 2, 3}}};
-static const r8_mesh strip_m = {strip_v, strip_f, 0, 4, 1, 0, 32767, one_face_bsp};
+static const r8_mesh strip_m = {strip_v, strip_f, 0, 4, 1, 0, 32767, one_face_bsp R8_MESH_TEX(0, 0)};
 static const r8_demo_obj strip_objs[1] = {{&strip_m, 0, 40, 0, 0, 0, 0, 0, 0, 0}};
 static const r8_demo strip_scene = {"strip", strip_objs, 1, 50, 16, 4096, {-9459, -9459, -9459}};
 

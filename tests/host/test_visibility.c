@@ -99,7 +99,8 @@ static const long bound[R8_DEMO_COUNT][R8_VIS_COUNT] = {
 /* terrain  */ {25,  0,      0,    -1,    1412, 22,       0,   0},
 /* wall     */ {0,   45,     0,    -1,    21,   15,       0,   -1},
 /* cross    */ {425, 194,    2,    -1,    179,  59,       0,   14},
-/* separate */ {13,  -1,     0,    -1,    141,  0,        0,   -1}
+/* separate */ {13,  -1,     0,    -1,    141,  0,        0,   -1},
+/* crate    */ {-1,  -1,     -1,   -1,    99,   -1,       -1,  0}
 };
 
 static void test_methods_against_zbuf16(void)

@@ -20,7 +20,7 @@ static const r8_face cube_f[6] R8_FLASH = {   /* clockwise seen from outside */
     {4, 16, {4, 0, 3, 7}}, {4, 16, {4, 5, 1, 0}}, {4, 16, {3, 2, 6, 7}}
 };
 /* no normals given: r8_render_init computes them into work memory */
-static const r8_mesh cube = {cube_v, cube_f, 0, 8, 6, 1, 63, 0};
+static const r8_mesh cube = {cube_v, cube_f, 0, 8, 6, 1, 63, 0 R8_MESH_TEX(0, 0)};
 
 static r8_u8 work[4096];
 static r8_u8 buf[R8_FB_PAGE1_BYTES(128, 64)];

@@ -5,6 +5,9 @@
  * BYTES is app_ram(cfg) for app_defaults + scene + method (FW_HAVE_APP),
  * else r8_render_ram(cfg) for the defaults.  The firmware builds size
  * their static arena from these lines. */
+#if defined(FW_SCENE) && FW_SCENE != 7 && !defined(R8_NO_TEXTURE)
+#define R8_NO_TEXTURE   /* as the firmware of that scene (ports/fwdefs.sh) */
+#endif
 #include "plat.h"
 #include "r8render.h"
 #ifdef FW_HAVE_APP
@@ -54,6 +57,9 @@ int main(void)
 #endif
 #ifdef FW_SHADING
             acfg.render.shading = FW_SHADING;
+#else
+            if (s == 7)      /* the crate: textured (fw_app.c) */
+                acfg.render.shading = R8_SHADE_TEXTURE;
 #endif
             acfg.scene = s;
             acfg.render.method = m;

@@ -3,7 +3,8 @@
  * (scenes/blob.c), and writes what the reference comparison
  * needs.  Host tool only (C99).
  *
- *   r8probe [--scene S | --blob FILE] [--method M] [--shading flat|lambert|gouraud]
+ *   r8probe [--scene S | --blob FILE] [--method M] [--shading flat|lambert|gouraud|texture]
+ *           [--persp N] [--texfilter nearest|bilinear]
  *           [--cull normal|judd] [--format page1|row1|idx8] [--width W]
  *           [--height H] [--band B] [--frame N] [--count K]
  *           [--raw FILE]      frames, raw framebuffer bytes, appended
@@ -147,7 +148,8 @@ static void write_verts(FILE *out, const r8_render_cfg *cfg, const r8_demo *d, i
 
 int main(int argc, char **argv)
 {
-    static const char *const shadings[] = {"flat", "lambert", "gouraud"};
+    static const char *const shadings[] = {"flat", "lambert", "gouraud", "texture"};
+    static const char *const filters[] = {"nearest", "bilinear"};
     static const char *const culls[] = {"normal", "judd"};
     static const char *const formats[] = {"page1", "row1", "idx8"};
     r8_render_cfg cfg;
@@ -173,7 +175,9 @@ int main(int argc, char **argv)
                 return 2;
             }
             cfg.method = (r8_u8)r8_method_by_name(v);
-        } else if (!strcmp(a, "--shading")) cfg.shading = (r8_u8)pick(v, shadings, 3);
+        } else if (!strcmp(a, "--shading")) cfg.shading = (r8_u8)pick(v, shadings, 4);
+        else if (!strcmp(a, "--texfilter")) cfg.texfilter = (r8_u8)pick(v, filters, 2);
+        else if (!strcmp(a, "--persp")) cfg.persp = (r8_u8)atoi(v);
         else if (!strcmp(a, "--cull")) cfg.cull = (r8_u8)pick(v, culls, 2);
         else if (!strcmp(a, "--format")) cfg.format = (r8_u8)pick(v, formats, 3);
         else if (!strcmp(a, "--width")) cfg.width = (r8_s16)atoi(v);
