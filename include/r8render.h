@@ -35,6 +35,8 @@
 #define R8_VIS_BLOCKMASK 5 /* 4x4-block z with a coverage mask per block */
 #define R8_VIS_SBUF 6      /* S-buffer: depth-clipped spans per scanline */
 #define R8_VIS_COUNT 7
+#define R8_VIS_RAY 17      /* world renderer: ray caster over the scene's
+                              grid map (r8ray.h); not in R8_VIS_COUNT */
 #define R8_VIS_AUTO 255    /* let the analyser choose */
 
 /* Shading. */
@@ -132,6 +134,7 @@ void r8_render_stats_get(const r8_render *r, r8_render_stats *s);
 #define R8_WHY_OVERLAP 3     /* non-convex or interpenetrating: z-buffer */
 #define R8_WHY_USER 4        /* method given by the user */
 #define R8_WHY_RAM 5         /* exact method does not fit; best that fits */
+#define R8_WHY_GRID 6        /* a grid map: the ray caster draws it */
 
 typedef struct r8_analysis {
     r8_u8 method;       /* chosen visibility method */
