@@ -32,6 +32,7 @@ esac
 [ "$m" != 2 ] && [ "$m" != 3 ] && trim="$trim -DR8_NO_ZBUF"
 [ "$m" != 4 ] && [ "$m" != 5 ] && trim="$trim -DR8_NO_BLOCK"
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"
+[ "$m" != 17 ] && trim="$trim -DR8_NO_RAY"   # the ray caster: the maze's firmware only
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"

@@ -31,8 +31,25 @@ EXT = {"avr328": "elf", "avr1284": "elf", "6502": "prg", "z80": "ihx"}
 SIZES = {"avr328": "avr328", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
 RAM = {"avr328": 2048, "avr1284": 16384}
 MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
-SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
+SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", None, "maze"]
 METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"]
+# world renderers (outside the mesh methods): their id, name and scenes
+WORLD = {17: ("ray", [8])}
+
+
+def mname(m):
+    return METHODS[m] if m < len(METHODS) else WORLD[m][0]
+
+
+def combos():
+    """(scene, method): every mesh scene with every mesh method, a world
+    scene with its own method only."""
+    for s, name in enumerate(SCENES):
+        if name is None:
+            continue
+        world = [m for m, (_, ss) in WORLD.items() if s in ss]
+        for m in world or range(len(METHODS)):
+            yield s, m
 AVR328_OVERHEAD = 320  # rough statics + stack besides the arena, pre-filter only
 MARGIN_328 = 64        # the mandatory 328P cube must leave at least this much SRAM free
 STACK_MIN = 200        # AVR: fewer free bytes than this for the stack: does not fit, not run
@@ -132,7 +149,7 @@ def emu_ref(s, m, frames):
         return None
     with tempfile.TemporaryDirectory() as td:
         out = os.path.join(td, "emu.bin")
-        r = subprocess.run([emu, "--scene", SCENES[s], "--method", METHODS[m], "--frames",
+        r = subprocess.run([emu, "--scene", SCENES[s], "--method", mname(m), "--frames",
                             str(frames), "--out", out], stdout=subprocess.DEVNULL,
                            stderr=subprocess.PIPE, timeout=120)
         if r.returncode:
@@ -145,7 +162,7 @@ def decoder_check(t, s, m, frames):
     decodes, no bad packets."""
     data, rc, _ = run_target(t, fw_path(t, s, m, frames))
     rast8 = os.path.join(ROOT, ".venv", "bin", "rast8")
-    name = "%s %s/%s: simulator stream through rast8 stats" % (t, SCENES[s], METHODS[m])
+    name = "%s %s/%s: simulator stream through rast8 stats" % (t, SCENES[s], mname(m))
     if not os.path.exists(rast8):
         return False, name + ": .venv/bin/rast8 missing"
     r = subprocess.run([rast8, "stats", "--json", "-"], input=data, stdout=subprocess.PIPE,
@@ -163,16 +180,15 @@ def decoder_check(t, s, m, frames):
 def plan(t, frames):
     sizes, why = read_sizes(t)
     todo, skips = [], []
-    for s in range(len(SCENES)):
-        for m in range(len(METHODS)):
-            need = sizes.get((s, m), 0)
-            if need == 0:
-                skips.append((s, m, "app_ram() = 0: %s" % why.get((s, m), "configuration rejected")))
-            elif t == "avr328" and need + AVR328_OVERHEAD > RAM[t]:
-                skips.append((s, m, "RAM: app_ram() %d B + ~%d B statics/stack > %d B SRAM"
-                               % (need, AVR328_OVERHEAD, RAM[t])))
-            else:
-                todo.append((s, m, need))
+    for s, m in combos():
+        need = sizes.get((s, m), 0)
+        if need == 0:
+            skips.append((s, m, "app_ram() = 0: %s" % why.get((s, m), "configuration rejected")))
+        elif t == "avr328" and need + AVR328_OVERHEAD > RAM[t]:
+            skips.append((s, m, "RAM: app_ram() %d B + ~%d B statics/stack > %d B SRAM"
+                           % (need, AVR328_OVERHEAD, RAM[t])))
+        else:
+            todo.append((s, m, need))
     return todo, skips
 
 
@@ -204,7 +220,7 @@ def main():
         def one(job):
             s, m, need = job
             path = fw_path(t, s, m, a.frames)
-            name = "%s %s/%s" % (t, SCENES[s], METHODS[m])
+            name = "%s %s/%s" % (t, SCENES[s], mname(m))
             if not os.path.exists(path):
                 return ("FAIL", "%s: not built (see the make errors above)" % name)
             reason = is_skip(path)
@@ -258,7 +274,7 @@ def main():
             for job, res in zip(todo, ex.map(one, todo)):
                 results[(job[0], job[1])] = res
         for s, m, why in skips:
-            results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], METHODS[m], why))
+            results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], mname(m), why))
         for key in sorted(results):
             st, msg = results[key][:2]
             print("%s %s" % (st, msg))
@@ -282,7 +298,7 @@ def main():
                 r = results.get((0, m), ("", ""))
                 return "%d B free" % r[2] if len(r) > 2 else "-"
             cull = fits(0)
-            depth = ["%s (%s)" % (METHODS[m], free(m)) for m in range(1, len(METHODS)) if fits(m)]
+            depth = ["%s (%s)" % (mname(m), free(m)) for m in range(1, len(METHODS)) if fits(m)]
             ok = cull and depth
             print("%s mandatory: ATmega328P 128x64 1bpp cube in 2048 B SRAM with >= %d B free: "
                   "cull %s (%s), depth methods [%s]"
@@ -296,7 +312,7 @@ def main():
             def fits_s(s, m):
                 r = results.get((s, m), ("", ""))
                 return r[0] == "PASS" and len(r) > 2 and r[2] >= MARGIN_328
-            tor = [METHODS[m] for m in range(1, len(METHODS)) if fits_s(1, m)]
+            tor = [mname(m) for m in range(1, len(METHODS)) if fits_s(1, m)]
             ok = bool(tor)
             r = results.get((1, 1), ("", ""))
             print("%s mandatory: ATmega328P torus (200 faces) with painter's or better, identical, "
