@@ -41,6 +41,13 @@ def mname(m):
     return METHODS[m] if m < len(METHODS) else WORLD[m][0]
 
 
+def mid(name):
+    """A method's id from its name (mesh methods and world renderers)."""
+    if name in METHODS:
+        return METHODS.index(name)
+    return next(m for m, (n, _) in WORLD.items() if n == name)
+
+
 def combos():
     """(scene, method): every mesh scene with every mesh method, a world
     scene with its own method only."""
