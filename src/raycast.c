@@ -98,8 +98,9 @@ static void setup(const r8_grid *g, const r8_camera *cam, r8_s16 width, ray_setu
     /* forward F = (sin, cos), right R = (cos, -sin) in (x, z) */
     s->dx = r8_mul16(f2, sn) + r8_mul16(u, cs);
     s->dz = r8_mul16(f2, cs) - r8_mul16(u, sn);
-    s->stx = 2L * cs;
-    s->stz = -2L * sn;
+    /* (no 2L * cs: SDCC 4.2 miscompiles long products of 16-bit values) */
+    s->stx = (r8_s32)cs + cs;
+    s->stz = -((r8_s32)sn + sn);
     while (n) {
         n >>= 1;
         b++;
