@@ -24,7 +24,8 @@
  *
  * Memory: r8_ray_ram(cfg) = a small state + 2 bytes per screen column
  * (half height and level of each column's wall), made by r8_ray_frame
- * and drawn band by band by r8_ray_band. Height at most 510 rows.
+ * and drawn band by band by r8_ray_band.  Height at most 255 rows (rows
+ * are bytes in the band loop).
  *
  * Leave it out of a build with -DR8_NO_RAY. */
 #ifndef R8RAY_H

@@ -273,7 +273,7 @@ static int cfg_ok(const r8_render_cfg *cfg)
         return 0;
     if (cfg->shading > R8_SHADE_LAMBERT || cfg->format > R8_FMT_IDX8)
         return 0;
-    if (cfg->width < 8 || cfg->width > 1024 || cfg->height < 8 || cfg->height > 510)
+    if (cfg->width < 8 || cfg->width > 1024 || cfg->height < 8 || cfg->height > 255)
         return 0;
     if (cfg->band < 1 || cfg->band > cfg->height)
         return 0;
@@ -317,8 +317,7 @@ int r8_ray_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned wo
         st->hb++;
         st->full = (r8_u16)(st->full + st->full);
     }
-    hh = (r8_s16)((cfg->height + 1) >> 1);
-    st->cap = (r8_u8)(hh > 255 ? 255 : hh);
+    st->cap = (r8_u8)(cfg->height >> 1);   /* top = height / 2 - half >= 0 */
     for (hh = 0; hh < 2 * cfg->width; hh++)
         st->col[hh] = 0;
     return 0;
@@ -369,25 +368,35 @@ void r8_ray_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     if (fb->format == R8_FMT_PAGE1) {
-        r8_u8 *row = fb->buf;
+        /* rows are bytes here (height <= 255): each column's page byte is
+         * ceiling, wall or floor whole (the common case), or masks of two
+         * of them from the 9-entry table */
+        r8_u8 *row = fb->buf, cy8 = (r8_u8)cy;
         for (y = y0; y < y1; y = (r8_s16)(y + 8), row += w) {
-            r8_u8 *p = row;
+            r8_u8 *p = row, yt = (r8_u8)y, yb = (r8_u8)(y + 8), ph = 0;
             c = st->col;
-            for (x = 0; x < w; x++, c += 2) {
-                r8_s16 t = (r8_s16)(cy - c[0] - y), b = (r8_s16)(cy + c[0] - y);
-                r8_u8 ph = (r8_u8)(x & 3), wm, fm;
-                if (t < 0)
-                    t = 0;
-                else if (t > 8)
-                    t = 8;
-                if (b < 0)
-                    b = 0;
-                else if (b > 8)
-                    b = 8;
-                fm = R8_RDU8(&from_row[b]);
-                wm = (r8_u8)(R8_RDU8(&from_row[t]) & (r8_u8)~fm);
-                *p++ = (r8_u8)((R8_RDU8(&colpat[((unsigned)c[1] << 2) | ph]) & wm) |
-                               (R8_RDU8(&colpat[(FLOOR_LEVEL << 2) | ph]) & fm));
+            for (x = 0; x < w; x++, c += 2, p++, ph = (r8_u8)((ph + 1u) & 3u)) {
+                r8_u8 top = (r8_u8)(cy8 - c[0]), bot = (r8_u8)(cy8 + c[0]), wm, fm;
+                if (bot <= yt) {
+                    *p = R8_RDU8(&colpat[(FLOOR_LEVEL << 2) | ph]);
+                    continue;
+                }
+                if (top >= yb) {
+                    *p = 0;                   /* ceiling */
+                    continue;
+                }
+                if (top <= yt && bot >= yb) {
+                    *p = R8_RDU8(&colpat[((unsigned)c[1] << 2) | ph]);
+                    continue;
+                }
+                fm = 0;
+                if (bot < yb)
+                    fm = R8_RDU8(&from_row[(r8_u8)(bot - yt)]);
+                wm = (r8_u8)~fm;
+                if (top > yt)
+                    wm = (r8_u8)(wm & R8_RDU8(&from_row[(r8_u8)(top - yt)]));
+                *p = (r8_u8)((R8_RDU8(&colpat[((unsigned)c[1] << 2) | ph]) & wm) |
+                             (R8_RDU8(&colpat[(FLOOR_LEVEL << 2) | ph]) & fm));
             }
         }
         return;
