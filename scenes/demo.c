@@ -71,6 +71,7 @@ int r8_demo_by_name(const char *name)
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
 extern const r8_grid r8_grid_maze;
 #endif
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
 static const r8_grid *grid_of(const r8_demo *d)
 {
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
@@ -80,6 +81,7 @@ static const r8_grid *grid_of(const r8_demo *d)
     (void)d;
     return 0;
 }
+#endif
 
 int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 {
@@ -112,9 +114,12 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     run->scene.light.x = R8_RDS16(&d->light.x);
     run->scene.light.y = R8_RDS16(&d->light.y);
     run->scene.light.z = R8_RDS16(&d->light.z);
-    run->scene.grid = grid_of(d);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    run->scene.grid = grid_of(d);   /* (a mesh scene's firmware: 0, static) */
+#endif
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     if (run->scene.grid) {
         /* a walk's start: the middle of the start cell */
         const r8_grid *g = run->scene.grid;
@@ -122,11 +127,14 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
         run->cam.z = (r8_s16)((r8_s16)(2 * g->sz + 1) << (g->shift - 1));
         run->cam.yaw = g->syaw;
     }
+#endif
     /* the depth range the objects can occupy: all the depth methods'
      * precision goes there (nothing lies nearer, so the near plane may
      * move up to it) */
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     if (!nobj)
         zn = R8_RDS16(&d->znear);   /* a grid scene: no objects */
+#endif
     if (zn < R8_RDS16(&d->znear))
         zn = R8_RDS16(&d->znear);
     if (zf <= zn)
@@ -143,8 +151,10 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
     const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
     r8_u8 i, n = R8_RDU8(&d->nobjects);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     if (run->scene.grid)
         run->cam.yaw = (r8_u8)(run->scene.grid->syaw + 2u * (r8_u8)f);
+#endif
     for (i = 0; i < n; i++, o++) {
         r8_pose *p = &run->obj[i].pose;
         p->ax = (r8_u8)(R8_RDU8(&o->ax) + (r8_u8)(R8_RDS8(&o->sx) * f));

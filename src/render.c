@@ -64,8 +64,10 @@ const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
+#ifndef R8_NO_RAY
     if (method == R8_VIS_RAY)
         return "ray";
+#endif
     return method < R8_VIS_COUNT ? method_names[method] : 0;
 }
 
@@ -74,8 +76,10 @@ int r8_method_by_name(const char *name)
     int i;
     if (streq(name, "auto"))
         return R8_VIS_AUTO;
+#ifndef R8_NO_RAY
     if (streq(name, "ray"))
         return R8_VIS_RAY;
+#endif
     for (i = 0; i < R8_VIS_COUNT; i++)
         if (streq(name, method_names[i]))
             return i;
@@ -722,16 +726,22 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
+#ifndef R8_NO_RAY
     const r8_scene *sc;
     int painter;
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
-#ifndef R8_NO_RAY
     if (r->cfg.method == R8_VIS_RAY) { r8_ray_frame(r, cam); return; }
-#endif
     sc = st->scene;
     painter = R8_PAINTER(st->method);
+#else
+    const r8_scene *sc = st->scene;
+    int painter = R8_PAINTER(st->method);
+    r8_u16 k;
+    r8_u8 i;
+    r8_fid cur;
+#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -937,11 +947,13 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
-    r8_fid head, *link = &head, g;
 #ifndef R8_NO_RAY
+    r8_fid head, *link = &head, g;
     if (r->cfg.method == R8_VIS_RAY) { r8_ray_band(r, fb); return; }
-#endif
     head = (r8_fid)st->first;
+#else
+    r8_fid head = (r8_fid)st->first, *link = &head, g;
+#endif
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
