@@ -94,7 +94,7 @@ def frames_from(info, key="compute"):
 
 
 def measure(t, s, m, need, host_streams, sh=1, wire=0):
-    rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m],
+    rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.mname(m),
            "shading": SHADINGS[sh],
            "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
            "cycles_per_frame": None, "cycles_exact": None, "host_instructions_per_frame": None,
@@ -314,6 +314,9 @@ def write_md(recs, host, elapsed):
     lam = [r for r in recs if r["shading"] == "lambert"]
     L.extend(targets_md(lam))
     L.extend(shadings_md(recs))
+    ray = [r for r in recs if r["method"] == "ray"]
+    if ray:
+        L += ["## Ray caster (the maze, docs/visibility.md)", "", scene_md(ray)]
     L.append("## Headline")
     L.append("")
     L.append("| target | scene | method | cycles/frame | of which render / wire | ms | compute fps | RAM static+stack | flash | same |")
@@ -602,12 +605,55 @@ def ram_budget_328():
     return L
 
 
+def scene_md(recs):
+    """One scene's records as a table (bench.py --scene)."""
+    out = ["| target | method | shading | cycles/frame | fps (compute) | arena B | RAM static B "
+           "| stack B | flash B | wire B/frame | same as host |",
+           "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for r in recs:
+        out.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["cpu"], r["method"], r["shading"], fmt(r["cycles_per_frame"]),
+            r["fps_compute"] if r["fps_compute"] is not None else "-", fmt(r["arena_bytes"]),
+            fmt(r["ram_static_bytes"]), fmt(r["stack_peak_bytes"]), fmt(r["flash_bytes"]),
+            r["wire_bytes_per_frame"] if r["wire_bytes_per_frame"] is not None else "-",
+            r["skipped"] or fmt(r["identical_to_host"])))
+    for r in recs[:1]:
+        if "wall_height_error_max_px" in r:
+            out.append("")
+            out.append("Wall height per column against the float ray caster (rast8.raycast_ref, "
+                       "200 cameras in the maze): max %.3f px (%.2f %%), mean %.4f px; columns "
+                       "that hit another face (grazing a corner): %s." % (
+                           r["wall_height_error_max_px"], 100 * r["wall_height_error_max_rel"],
+                           r["wall_height_error_mean_px"], r["wall_height_columns_other_face"]))
+    return "\n".join(out) + "\n"
+
+
 def git_rev():
     r = run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT)
     return r.stdout.decode().strip() or "?"
 
 
+def ray_figures():
+    """The ray caster's wall-height error per column against the float
+    caster (host/rast8/raycast_ref.py over 200 cameras in the maze)."""
+    if idt.make(["build/r8raycols"]):
+        return None
+    sys.path.insert(0, os.path.join(ROOT, "host"))
+    from rast8 import raycast_ref  # noqa: E402
+    return raycast_ref.run(os.path.join(ROOT, "build", "r8raycols"), 200)
+
+
 def main():
+    import argparse
+    ap = argparse.ArgumentParser(description="make bench: every target x scene x method")
+    ap.add_argument("--scene", help="this built-in scene only (e.g. maze), written to "
+                    "build/bench/results-SCENE.json / .md instead of results.*")
+    a = ap.parse_args()
+    only = None
+    if a.scene:
+        if a.scene not in idt.SCENES:
+            sys.exit("bench: unknown scene '%s' (%s)" % (a.scene, ", ".join(n for n in idt.SCENES if n)))
+        only = idt.SCENES.index(a.scene)
     t0 = time.time()
     os.chdir(ROOT)
     ready = ["build/emu/avrsim", "build/emu/prof65", "build/emu/fw-host"] + sorted(
@@ -616,6 +662,9 @@ def main():
         sys.exit("bench: cannot build the runners / sizes")
     idt.make(["build/x/avr1284/micro.elf", "build/x/z80/micro.ihx"])
     plans = {t: idt.plan(t, FRAMES) for t in TARGETS}
+    if only is not None:
+        plans = {t: ([j for j in p[0] if j[0] == only], [j for j in p[1] if j[0] == only])
+                 for t, p in plans.items()}
     files = []
     for t in TARGETS:
         for s, m, _ in plans[t][0]:
@@ -625,7 +674,7 @@ def main():
     # the other shadings (flat, Gouraud) of the chart's scenes on the 1284P
     shade_jobs = []
     idt.make(["build/x/avr1284/sizes-sh2.txt"])
-    for s in [idt.SCENES.index(n) for n in SHADE_SCENES]:
+    for s in [idt.SCENES.index(n) for n in SHADE_SCENES if only is None or n == a.scene]:
         for m in range(len(idt.METHODS)):
             if idt.METHODS[m] == "bsp" and idt.SCENES[s] not in idt.BSP_SCENES:
                 continue
@@ -640,8 +689,7 @@ def main():
     print("bench: building %d firmware images" % len(files))
     idt.make(files)
     # host streams and callgrind
-    combos = [(s, m) for s in range(len(idt.SCENES)) for m in range(len(idt.METHODS))
-              if idt.METHODS[m] != "bsp" or idt.SCENES[s] in idt.BSP_SCENES]
+    combos = [(s, m) for s, m in idt.combos() if only is None or s == only]
     streams = {}
     for s, m in combos:
         try:
@@ -669,7 +717,7 @@ def main():
         for s, m, why in skips:
             sizes, _ = idt.read_sizes(t)
             rec = measure(t, s, m, sizes.get((s, m), 0), streams[(s, m)]) if False else None
-            rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.METHODS[m], "shading": "lambert",
+            rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.mname(m), "shading": "lambert",
                    "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t],
                    "arena_bytes": sizes.get((s, m), 0) or None, "cycles_per_frame": None,
                    "cycles_exact": None, "host_instructions_per_frame": None,
@@ -690,7 +738,7 @@ def main():
         for f in cf.as_completed(futs):
             recs.append(f.result())
     for r in recs:
-        s, m = idt.SCENES.index(r["scene"]), idt.METHODS.index(r["method"])
+        s, m = idt.SCENES.index(r["scene"]), idt.mid(r["method"])
         if r["shading"] != "lambert":
             continue                     # host figures and streams: Lambert's
         r["host_instructions_per_frame"] = host.get((s, m))
@@ -702,9 +750,27 @@ def main():
                 r["fps_1m"] = round(100000.0 / wire, 2)
     order = {t: i for i, t in enumerate(TARGETS)}
     recs.sort(key=lambda r: (order[r["target"]], SHADINGS.index(r["shading"]) != 1,
-                             idt.SCENES.index(r["scene"]), idt.METHODS.index(r["method"]),
+                             idt.SCENES.index(r["scene"]), idt.mid(r["method"]),
                              SHADINGS.index(r["shading"])))
+    if any(r["method"] == "ray" for r in recs):
+        fig = ray_figures()
+        for r in recs:
+            if r["method"] == "ray" and fig:
+                r["wall_height_error_max_px"] = round(fig["max_px"], 3)
+                r["wall_height_error_mean_px"] = round(fig["mean_px"], 4)
+                r["wall_height_error_max_rel"] = round(fig["max_rel"], 4)
+                r["wall_height_columns_other_face"] = "%d/%d" % (fig["other_face"], fig["columns"])
     os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
+    if only is not None:
+        base = os.path.join(ROOT, "build", "bench", "results-%s" % a.scene)
+        with open(base + ".json", "w") as f:
+            json.dump(recs, f, indent=1)
+        with open(base + ".md", "w") as f:
+            f.write(scene_md(recs))
+        print("bench: wrote %s.json and .md (%d records) in %.0f s"
+              % (os.path.relpath(base, ROOT), len(recs), time.time() - t0))
+        print(scene_md(recs))
+        return
     with open(os.path.join(ROOT, "build", "bench", "results.json"), "w") as f:
         json.dump(recs, f, indent=1)
     wire_recs = lines_bench(recs)

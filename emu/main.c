@@ -61,10 +61,13 @@ static void usage(FILE *f)
 "  --scene NAME|FILE scene: a .r8s, .obj or scene blob file, or (default cube):",
             prog, R8_WIRE_VERSION);
     for (i = 0; i < R8_DEMO_COUNT; i++)
-        fprintf(f, " %s", r8_demo_name((r8_u8)i));
-    fprintf(f, "\n  --method NAME     visibility method (default cull): auto");
+        if (r8_demo_name((r8_u8)i))
+            fprintf(f, " %s", r8_demo_name((r8_u8)i));
+    fprintf(f, "\n  --method NAME     visibility method (default cull; ray for a grid\n"
+            "                    scene such as maze): auto");
     for (i = 0; i < R8_VIS_COUNT; i++)
         fprintf(f, " %s", r8_method_name((r8_u8)i));
+    fprintf(f, " %s", r8_method_name(R8_VIS_RAY));
     fprintf(f, "\n"
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
@@ -341,7 +344,8 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         "convex objects apart in depth: painter's is exact",
         "concave or interpenetrating geometry: z-buffer",
         "given by the user", "the exact method does not fit the RAM budget",
-        "", "",
+        "a grid map: the ray caster draws it",
+        "",
         "non-convex meshes with BSP trees, apart in depth: BSP order is exact"
     };
     long budget = ram >= 0 ? ram : 16384;
@@ -406,7 +410,7 @@ int main(int argc, char **argv)
     app_layout lay;
     struct host host;
     const char *out = "-", *dump = 0, *rx = 0, *keys = 0, *key_log = 0;
-    int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc, band_given = 0;
+    int use_pty = 0, quiet = 0, print_ram = 0, c, v, fd = 1, rc, band_given = 0, method_given = 0;
     long tcp = -1, baud = 0, ram = -1;
     double linger = 30, gate = 2;
     unsigned char *arena;
@@ -436,6 +440,7 @@ int main(int argc, char **argv)
             if ((v = r8_method_by_name(optarg)) < 0)
                 die(2, "--method: unknown method '%s' (see --help)", optarg);
             cfg.render.method = (r8_u8)v;
+            method_given = 1;
             break;
         case O_BAND: cfg.render.band = (r8_s16)num("--band", optarg, 1, R8_WIRE_MAX_DIM); band_given = 1; break;
         case O_FRAMES: cfg.frames = (r8_u16)num("--frames", optarg, 0, 65535); break;
@@ -487,6 +492,8 @@ int main(int argc, char **argv)
     if ((use_pty != 0) + (tcp >= 0) + (strcmp(out, "-") != 0) > 1)
         die(2, "%s", "choose one of --out, --pty, --tcp");
 
+    if (!method_given && app_demo(&cfg) && app_demo(&cfg)->scene.grid)
+        cfg.render.method = R8_VIS_RAY;   /* a grid scene: the ray caster */
     if (cfg.render.method == R8_VIS_AUTO)
         analyse(&cfg, band_given, ram, quiet);
 

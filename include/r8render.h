@@ -36,6 +36,8 @@
 #define R8_VIS_SBUF 6      /* S-buffer: depth-clipped spans per scanline */
 #define R8_VIS_BSP 7       /* BSP tree order (the meshes' trees), painter's fill */
 #define R8_VIS_COUNT 8
+#define R8_VIS_RAY 17      /* world renderer: ray caster over the scene's
+                              grid map (r8ray.h); not in R8_VIS_COUNT */
 #define R8_VIS_AUTO 255    /* let the analyser choose */
 
 /* Shading. */
@@ -149,6 +151,7 @@ void r8_render_stats_get(const r8_render *r, r8_render_stats *s);
 #define R8_WHY_OVERLAP 3     /* non-convex or interpenetrating: z-buffer */
 #define R8_WHY_USER 4        /* method given by the user */
 #define R8_WHY_RAM 5         /* exact method does not fit; best that fits */
+#define R8_WHY_GRID 6        /* a grid map: the ray caster draws it */
 #define R8_WHY_BSP 8         /* non-convex meshes with BSP trees, apart in
                                 depth: BSP order is exact, no depth memory */
 

@@ -111,6 +111,8 @@ typedef struct r8_scene {
     r8_u8 nobjects;
     r8_s16 ambient;         /* Q1.14 ambient light for Lambert/Gouraud */
     r8_vec3 light;          /* unit vector towards the light, world space, Q1.14 */
+    const struct r8_grid *grid; /* a grid map for the ray caster (r8ray.h,
+                               R8_VIS_RAY); 0 = none */
 } r8_scene;
 
 /* A pose at the origin with no rotation, visible, own colours. */

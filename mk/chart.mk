@@ -66,3 +66,11 @@ docs:
 	cp $(BUILD)/bench/results.md docs/bench-results.md
 	@if [ -f $(BUILD)/chart/speed-accuracy.md ]; then cp $(BUILD)/chart/speed-accuracy.md $(BUILD)/chart/speed-accuracy.png docs/; \
 	  else echo "docs: no build/chart (make chart): docs/speed-accuracy.* unchanged"; fi
+
+# the ray caster's columns for the float reference (host/rast8/raycast_ref.py,
+# tests/py/test_raycast.py, bench/bench.py's ray figures)
+R8RAYCOLS := $(BUILD)/r8raycols
+ALL_TARGETS += $(R8RAYCOLS)
+$(R8RAYCOLS): tests/tools/r8raycols.c $(LIBS) $(wildcard include/*.h src/*.h scenes/*.h)
+	$(CC) -std=c99 -O2 -g -Wall -Wextra -Werror $(INC) $< $(LIBS) -o $@
+test-py: $(R8RAYCOLS)

@@ -172,3 +172,78 @@ test-examples-c89:
 	@bash scripts/run-step.sh examples-c89 bash tests/examples/c89.sh
 
 TEST_STEPS += test-two-objects test-examples-c89
+
+# ---- maze: a first-person walk drawn by the ray caster (issue 14)
+#   build/examples/maze           the walk on the host (--pty: walk it from
+#                                 `rast8 view`)
+#   build/x/T/maze/maze-F.*       its firmware for target T (F frames, the
+#                                 test key script compiled in)
+MAZE_DIR    := examples/maze
+MAZE_HDR    := $(MAZE_DIR)/maze.h $(EX_HDRS)
+MAZE_KEYS   := tests/examples/maze.keys
+MAZE_FRAMES := 56
+MAZE_TARGETS := avr328 avr1284 6502 z80
+# the walk is the ray caster only: every mesh method, Gouraud, the
+# clipper and run-time normals left out (render.c and scan.c compiled in)
+MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP
+MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/maze-$(MAZE_FRAMES).elf \
+  $(EXB)/6502/maze/maze-$(MAZE_FRAMES).prg $(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx
+
+ALL_TARGETS += $(EXH)/maze
+
+$(EXH)/maze: $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c emu/plat_host.c emu/plat_host.h $(MAZE_HDR) $(LIBS)
+	@mkdir -p $(dir $@)
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(MAZE_DIR) $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c \
+	  emu/plat_host.c $(LIBS) -o $@
+
+$(EXB)/maze/maze_keys.h: $(MAZE_KEYS) $(FLY_DIR)/keys2c.py $(SETUP)
+	@mkdir -p $(dir $@)
+	$(PY) $(FLY_DIR)/keys2c.py $(MAZE_KEYS) -o $@ --bin $(EXB)/maze/maze_keys.bin
+
+$(EXB)/%/maze/maze.o: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,$*,$@,$<,$(MAZE_XDEFS))
+$(EXB)/z80/maze/maze.rel: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,z80,$@,$<,$(MAZE_XDEFS))
+
+maze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/$(1)/maze/maze.$(3) \
+  $(EXB)/$(1)/obj/scene_8.$(3) -- $(MAZE_XDEFS) $(4)
+maze_fw = if head -c 5 $(EXB)/$(1)/maze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/maze/ram.txt $(2); \
+  else $(call maze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/maze/ram.txt)); fi
+
+MAZE_DEPS = $(MAZE_DIR)/fw_maze.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+$(EXB)/%/maze/size.elf: $(MAZE_DEPS) $(EXB)/%/maze/maze.o $(EXB)/%/obj/scene_8.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
+	$(call maze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/6502/maze/size.prg: $(MAZE_DEPS) $(EXB)/6502/maze/maze.o $(EXB)/6502/obj/scene_8.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
+	$(call maze_link,6502,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/z80/maze/size.ihx: $(MAZE_DEPS) $(EXB)/z80/maze/maze.rel $(EXB)/z80/obj/scene_8.rel $(EXB)/z80/obj/plat_z80.rel $(EXB)/z80/rast8.lib
+	$(call maze_link,z80,$@,rel,-DMAZE_SIZE_ONLY)
+
+$(EXB)/%/maze/ram.txt: tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
+$(EXB)/avr328/maze/ram.txt: $(EXB)/avr328/maze/size.elf
+$(EXB)/avr1284/maze/ram.txt: $(EXB)/avr1284/maze/size.elf
+$(EXB)/6502/maze/ram.txt: $(EXB)/6502/maze/size.prg
+$(EXB)/z80/maze/ram.txt: $(EXB)/z80/maze/size.ihx
+
+$(EXB)/%/maze/maze-$(MAZE_FRAMES).elf: $(EXB)/%/maze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/%/maze/size.elf
+	$(call maze_fw,$*,$@,o)
+$(EXB)/6502/maze/maze-$(MAZE_FRAMES).prg: $(EXB)/6502/maze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/6502/maze/size.prg
+	$(call maze_fw,6502,$@,o)
+$(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx: $(EXB)/z80/maze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/z80/maze/size.ihx
+	$(call maze_fw,z80,$@,rel)
+
+.SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/maze/maze.o $(EXB)/$(t)/obj/scene_8.o) \
+  $(EXB)/z80/maze/maze.rel $(EXB)/z80/obj/scene_8.rel
+
+.PHONY: maze-fw test-maze
+maze-fw: $(EXH)/maze $(MAZE_FW)
+
+# the host build against a fixed key script, then every target's stream
+# byte for byte against it (tests/examples/maze_check.py)
+test-maze: $(SETUP)
+	@bash scripts/run-step.sh maze $(PY) tests/examples/maze_check.py --frames $(MAZE_FRAMES)
+
+TEST_STEPS += test-maze

@@ -38,6 +38,7 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # the crate (R8_DEMO_CRATE) is drawn textured (fw_app.c); no other
 # firmware carries texture mapping
 [ "$s" != 7 ] && trim="$trim -DR8_NO_TEXTURE"
+[ "$m" != 17 ] && trim="$trim -DR8_NO_RAY"   # the ray caster: the maze's firmware only
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"

@@ -1,11 +1,12 @@
 /* demo.c - the built-in scene list and the spin (see demo.h). */
 #include "demo.h"
+#include "r8ray.h"
 
 extern const r8_demo r8_demo_cube, r8_demo_torus, r8_demo_teapot, r8_demo_terrain,
-    r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate;
+    r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate, r8_demo_maze;
 
 static const char *const names[R8_DEMO_COUNT] = {
-    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate"
+    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze"
 };
 
 #ifdef R8_DEMO_ONLY
@@ -24,6 +25,8 @@ static const char *const names[R8_DEMO_COUNT] = {
 #define R8_DEMO_THE_ r8_demo_cross
 #elif R8_DEMO_ONLY == 7
 #define R8_DEMO_THE_ r8_demo_crate
+#elif R8_DEMO_ONLY == 8
+#define R8_DEMO_THE_ r8_demo_maze
 #else
 #define R8_DEMO_THE_ r8_demo_separate
 #endif
@@ -36,7 +39,7 @@ const r8_demo *r8_demo_get(r8_u8 id)
 {
     static const r8_demo *const all[R8_DEMO_COUNT] = {
         &r8_demo_cube, &r8_demo_torus, &r8_demo_teapot, &r8_demo_terrain,
-        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate
+        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate, &r8_demo_maze
     };
     return id < R8_DEMO_COUNT ? all[id] : 0;
 }
@@ -60,10 +63,27 @@ int r8_demo_by_name(const char *name)
 {
     int i;
     for (i = 0; i < R8_DEMO_COUNT; i++)
-        if (streq(name, names[i]))
+        if (names[i] && streq(name, names[i]))
             return i;
     return -1;
 }
+
+/* The grid map of a grid scene (the generated r8_demo tables carry no
+ * grid: the maze's is named here). */
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+extern const r8_grid r8_grid_maze;
+#endif
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+static const r8_grid *grid_of(const r8_demo *d)
+{
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    if (d == &r8_demo_maze)
+        return &r8_grid_maze;
+#endif
+    (void)d;
+    return 0;
+}
+#endif
 
 int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 {
@@ -96,11 +116,27 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     run->scene.light.x = R8_RDS16(&d->light.x);
     run->scene.light.y = R8_RDS16(&d->light.y);
     run->scene.light.z = R8_RDS16(&d->light.z);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    run->scene.grid = grid_of(d);   /* (a mesh scene's firmware: 0, static) */
+#endif
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    if (run->scene.grid) {
+        /* a walk's start: the middle of the start cell */
+        const r8_grid *g = run->scene.grid;
+        run->cam.x = (r8_s16)((r8_s16)(2 * g->sx + 1) << (g->shift - 1));
+        run->cam.z = (r8_s16)((r8_s16)(2 * g->sz + 1) << (g->shift - 1));
+        run->cam.yaw = g->syaw;
+    }
+#endif
     /* the depth range the objects can occupy: all the depth methods'
      * precision goes there (nothing lies nearer, so the near plane may
      * move up to it) */
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    if (!nobj)
+        zn = R8_RDS16(&d->znear);   /* a grid scene: no objects */
+#endif
     if (zn < R8_RDS16(&d->znear))
         zn = R8_RDS16(&d->znear);
     if (zf <= zn)
@@ -117,6 +153,10 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
     const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
     r8_u8 i, n = R8_RDU8(&d->nobjects);
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+    if (run->scene.grid)
+        run->cam.yaw = (r8_u8)(run->scene.grid->syaw + 2u * (r8_u8)f);
+#endif
     for (i = 0; i < n; i++, o++) {
         r8_pose *p = &run->obj[i].pose;
         p->ax = (r8_u8)(R8_RDU8(&o->ax) + (r8_u8)(R8_RDS8(&o->sx) * f));

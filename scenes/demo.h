@@ -36,6 +36,8 @@ typedef struct r8_demo {
     r8_s16 ambient;            /* Q1.14 */
     r8_vec3 light;             /* unit vector towards the light, Q1.14 */
 } r8_demo;
+/* (A grid scene, R8_DEMO_MAZE, has no objects: r8_demo_setup puts its
+ * grid map, r8ray.h, in the run's scene.) */
 
 /* The built-in scenes, in this order. */
 #define R8_DEMO_CUBE 0        /* the rotating cube (one convex mesh) */
@@ -46,7 +48,9 @@ typedef struct r8_demo {
 #define R8_DEMO_CROSS 5       /* two interpenetrating objects */
 #define R8_DEMO_SEPARATE 6    /* several separate objects */
 #define R8_DEMO_CRATE 7       /* a textured crate (R8_SHADE_TEXTURE) */
-#define R8_DEMO_COUNT 8
+#define R8_DEMO_MAZE 8        /* a grid maze for the ray caster (R8_VIS_RAY);
+                                 the spin turns the camera in place */
+#define R8_DEMO_COUNT 9
 #ifndef R8_DEMO_MAXOBJ
 #define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
                                  scene may set its own count) */
@@ -72,7 +76,9 @@ typedef struct r8_demo_run {
  * near/far depth range fitted to the scene's extents.  -1 if d is 0 or
  * has too many objects. */
 int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width);
-/* Poses of frame `frame`: angle = start + turn * (frame & 255). */
+/* Poses of frame `frame`: angle = start + turn * (frame & 255); a grid
+ * scene turns the camera instead, 2 steps a frame from the grid's
+ * start yaw. */
 void r8_demo_pose(r8_demo_run *run, r8_u16 frame);
 
 #endif

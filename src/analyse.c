@@ -142,6 +142,38 @@ static r8_s16 fit_band(r8_render_cfg *cfg, unsigned budget)
     return 0;
 }
 
+#ifndef R8_NO_RAY
+/* A grid map: the ray caster draws it (exact: one wall per column, the
+ * nearest, by construction; its memory does not grow with the map). */
+static int analyse_grid(r8_render_cfg *cfg, const r8_camera *cam, unsigned budget,
+                        r8_analysis *a)
+{
+    r8_s16 given = cfg->band;
+    unsigned n;
+    a->why = R8_WHY_GRID;
+    if (cfg->method == R8_VIS_AUTO)
+        cfg->method = R8_VIS_RAY;
+    else
+        a->why = R8_WHY_USER;
+    if (cfg->method != R8_VIS_RAY)
+        return -1;             /* a grid scene has no meshes to draw */
+    n = 0;
+    if (given > 0)
+        n = need(cfg);
+    if ((!n || n > budget) && !fit_band(cfg, budget))
+        return -1;
+    a->method = cfg->method;
+    a->band = cfg->band;
+    a->pool = cfg->pool;
+    a->ram = need(cfg);
+    a->znear = cam->znear;
+    a->zfar = cam->zfar;
+    a->coord_bits = 16;
+    a->exact = 1;
+    return 0;
+}
+#endif
+
 int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
                unsigned budget, r8_analysis *a)
 {
@@ -153,6 +185,10 @@ int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
     r8_s32 zn = 0x7FFFFFFFL, zf = 1, m = 0, bucket;
     r8_s16 given = cfg->band;
     r8_u8 i, k, exact_method, nk = (bound && bound->kind == R8_BOUND_BOX) ? 8 : 1;
+#ifndef R8_NO_RAY
+    if (sc && cam && sc->grid)
+        return analyse_grid(cfg, cam, budget, a);
+#endif
     if (!sc || !cam || sc->nobjects == 0)
         return -1;
     cam_rot(cam, &c);

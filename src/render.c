@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include <string.h>
 #include "r8int.h"
+#include "r8ray.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
  * built when every method and shading that needs depth or shade along
@@ -76,6 +77,10 @@ const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
+#ifndef R8_NO_RAY
+    if (method == R8_VIS_RAY)
+        return "ray";
+#endif
     return method < R8_VIS_COUNT ? method_names[method] : 0;
 }
 
@@ -84,6 +89,10 @@ int r8_method_by_name(const char *name)
     int i;
     if (streq(name, "auto"))
         return R8_VIS_AUTO;
+#ifndef R8_NO_RAY
+    if (streq(name, "ray"))
+        return R8_VIS_RAY;
+#endif
     for (i = 0; i < R8_VIS_COUNT; i++)
         if (streq(name, method_names[i]))
             return i;
@@ -364,6 +373,9 @@ unsigned r8_render_ram(const r8_render_cfg *cfg)
     if (cfg->method == R8_VIS_BSP)
         return r8_bsp_ram(cfg);
 #endif
+#ifndef R8_NO_RAY
+    if (cfg->method == R8_VIS_RAY) return r8_ray_ram(cfg);
+#endif
     if (!cfg_valid(cfg))
         return 0;
     make_plan(cfg, &pl);
@@ -440,6 +452,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #ifndef R8_NO_BSP
     if (cfg->method == R8_VIS_BSP)
         return r8_bsp_init(r, cfg, work, work_size);
+#endif
+#ifndef R8_NO_RAY
+    if (cfg->method == R8_VIS_RAY) return r8_ray_init(r, cfg, work, work_size);
 #endif
     if (!cfg_valid(cfg))
         return -1;
@@ -563,6 +578,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 void r8_render_stats_get(const r8_render *r, r8_render_stats *s)
 {
     const r8_state *st = (const r8_state *)r->state;
+#ifndef R8_NO_RAY
+    if (r->cfg.method == R8_VIS_RAY) { s->faces = s->clipped = s->dropped = 0; return; }
+#endif
     s->faces = st->npoly;
     s->clipped = st->nclipped;
     s->dropped = st->dropped;
@@ -790,11 +808,22 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
+#ifndef R8_NO_RAY
+    const r8_scene *sc;
+    int painter;
+    r8_u16 k;
+    r8_u8 i;
+    r8_fid cur;
+    if (r->cfg.method == R8_VIS_RAY) { r8_ray_frame(r, cam); return; }
+    sc = st->scene;
+    painter = R8_PAINTER(st->method);
+#else
     const r8_scene *sc = st->scene;
     int painter = R8_PAINTER(st->method);
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
+#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -1023,7 +1052,13 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
+#ifndef R8_NO_RAY
+    r8_fid head, *link = &head, g;
+    if (r->cfg.method == R8_VIS_RAY) { r8_ray_band(r, fb); return; }
+    head = (r8_fid)st->first;
+#else
     r8_fid head = (r8_fid)st->first, *link = &head, g;
+#endif
 #ifndef R8_NO_WIRE
     if (r->cfg.wire) {
         r8_wire_band(r, fb);    /* wireframe.c */

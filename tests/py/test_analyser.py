@@ -11,7 +11,7 @@ from rast8.protocol import StreamDecoder, read_dump
 
 EXPECT = {"cube": "cull", "torus": "zbuf16", "teapot": "zbuf16", "terrain": "zbuf16",
           "wall": "zbuf16", "cross": "zbuf16", "separate": "painter",
-          "crate": "cull"}
+          "crate": "cull", "maze": "ray"}
 
 
 @pytest.mark.parametrize("scene", sorted(EXPECT))

@@ -44,7 +44,13 @@ int main(void)
 #else
     for (s = 0; s < R8_DEMO_COUNT; s++)
 #endif
-        for (m = 0; m < R8_VIS_COUNT; m++) {
+        for (m = 0; m <= R8_VIS_COUNT; m++) {
+            if (m == R8_VIS_COUNT) {
+                /* then the ray caster, for a grid scene (the maze) */
+                if (s != R8_DEMO_MAZE)
+                    break;
+                m = R8_VIS_RAY;
+            }
             put_u(s);
             plat_putc(' ');
             put_u(m);

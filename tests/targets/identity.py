@@ -31,13 +31,44 @@ EXT = {"avr328": "elf", "avr1284": "elf", "6502": "prg", "z80": "ihx"}
 SIZES = {"avr328": "avr328", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
 RAM = {"avr328": 2048, "avr1284": 16384}
 MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
-SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate"]
+SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze"]
 # scenes drawn with another shading than Lambert (R8_SHADE_*), checked
 # with their own method only (issue 13: the crate, textured, cull)
 SHADING = {"crate": 3}
 OWN_METHOD = {"crate": 0}
 METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"]
 BSP_SCENES = ("wall", "cross")   # BSP runs on its own scenes only (CI time)
+# world renderers (outside the mesh methods): their id, name and scenes
+WORLD = {17: ("ray", [8])}
+
+
+def mname(m):
+    return METHODS[m] if m < len(METHODS) else WORLD[m][0]
+
+
+def mid(name):
+    """A method's id from its name (mesh methods and world renderers)."""
+    if name in METHODS:
+        return METHODS.index(name)
+    return next(m for m, (n, _) in WORLD.items() if n == name)
+
+
+def combos():
+    """(scene, method): every mesh scene with every mesh method, a world
+    scene (or one in OWN_METHOD) with its own method only; bsp on
+    BSP_SCENES only."""
+    for s, name in enumerate(SCENES):
+        if name is None:
+            continue
+        own = [m for m, (_, ss) in WORLD.items() if s in ss]
+        if name in OWN_METHOD:
+            own = [OWN_METHOD[name]]
+        for m in own or range(len(METHODS)):
+            if m < len(METHODS) and METHODS[m] == "bsp" and name not in BSP_SCENES:
+                continue
+            yield s, m
+
+
 AVR328_OVERHEAD = 320  # rough statics + stack besides the arena, pre-filter only
 MARGIN_328 = 64        # the mandatory 328P cube must leave at least this much SRAM free
 STACK_MIN = 200        # AVR: fewer free bytes than this for the stack: does not fit, not run
@@ -141,7 +172,7 @@ def emu_ref(s, m, frames, wire=0):
     with tempfile.TemporaryDirectory() as td:
         out = os.path.join(td, "emu.bin")
         sh = ["--shading", "texture"] if SHADING.get(SCENES[s]) == 3 else []
-        r = subprocess.run([emu, "--scene", SCENES[s], "--method", METHODS[m], "--frames",
+        r = subprocess.run([emu, "--scene", SCENES[s], "--method", mname(m), "--frames",
                             str(frames), "--out", out] + sh + (["--wire"] if wire else []), stdout=subprocess.DEVNULL,
                            stderr=subprocess.PIPE, timeout=120)
         if r.returncode:
@@ -154,7 +185,7 @@ def decoder_check(t, s, m, frames):
     decodes, no bad packets."""
     data, rc, _ = run_target(t, fw_path(t, s, m, frames))
     rast8 = os.path.join(ROOT, ".venv", "bin", "rast8")
-    name = "%s %s/%s: simulator stream through rast8 stats" % (t, SCENES[s], METHODS[m])
+    name = "%s %s/%s: simulator stream through rast8 stats" % (t, SCENES[s], mname(m))
     if not os.path.exists(rast8):
         return False, name + ": .venv/bin/rast8 missing"
     r = subprocess.run([rast8, "stats", "--json", "-"], input=data, stdout=subprocess.PIPE,
@@ -201,21 +232,15 @@ def wire_check(t, s, m, frames):
 def plan(t, frames):
     sizes, why = read_sizes(t)
     todo, skips = [], []
-    for s in range(len(SCENES)):
-        for m in range(len(METHODS)):
-            if METHODS[m] == "bsp" and SCENES[s] not in BSP_SCENES:
-                continue
-            need = sizes.get((s, m), 0)
-            if OWN_METHOD.get(SCENES[s], m) != m:
-                skips.append((s, m, "checked with its own method only (%s)"
-                              % METHODS[OWN_METHOD[SCENES[s]]]))
-            elif need == 0:
-                skips.append((s, m, "app_ram() = 0: %s" % why.get((s, m), "configuration rejected")))
-            elif t == "avr328" and need + AVR328_OVERHEAD > RAM[t]:
-                skips.append((s, m, "RAM: app_ram() %d B + ~%d B statics/stack > %d B SRAM"
-                               % (need, AVR328_OVERHEAD, RAM[t])))
-            else:
-                todo.append((s, m, need))
+    for s, m in combos():
+        need = sizes.get((s, m), 0)
+        if need == 0:
+            skips.append((s, m, "app_ram() = 0: %s" % why.get((s, m), "configuration rejected")))
+        elif t == "avr328" and need + AVR328_OVERHEAD > RAM[t]:
+            skips.append((s, m, "RAM: app_ram() %d B + ~%d B statics/stack > %d B SRAM"
+                           % (need, AVR328_OVERHEAD, RAM[t])))
+        else:
+            todo.append((s, m, need))
     return todo, skips
 
 
@@ -223,6 +248,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--frames", type=int, default=4)
     ap.add_argument("--build-only", action="store_true")
+    ap.add_argument("--scene", help="this built-in scene only (e.g. maze)")
     ap.add_argument("targets", nargs="+")
     a = ap.parse_args()
     os.chdir(ROOT)
@@ -233,6 +259,13 @@ def main():
         print("0 passed, 1 failed")
         return 1
     plans = {t: plan(t, a.frames) for t in a.targets}
+    if a.scene:
+        if a.scene not in SCENES:
+            print("identity: unknown scene '%s'" % a.scene)
+            return 2
+        s0 = SCENES.index(a.scene)
+        plans = {t: ([j for j in p[0] if j[0] == s0], [j for j in p[1] if j[0] == s0])
+                 for t, p in plans.items()}
     files = [os.path.relpath(fw_path(t, s, m, a.frames), ROOT)
              for t in a.targets for (s, m, _) in plans[t][0]]
     files += [os.path.relpath(fw_path(t, s, m, a.frames, 1, 1), ROOT)
@@ -249,7 +282,7 @@ def main():
         def one(job):
             s, m, need = job
             path = fw_path(t, s, m, a.frames)
-            name = "%s %s/%s" % (t, SCENES[s], METHODS[m])
+            name = "%s %s/%s" % (t, SCENES[s], mname(m))
             if not os.path.exists(path):
                 return ("FAIL", "%s: not built (see the make errors above)" % name)
             reason = is_skip(path)
@@ -303,7 +336,7 @@ def main():
             for job, res in zip(todo, ex.map(one, todo)):
                 results[(job[0], job[1])] = res
         for s, m, why in skips:
-            results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], METHODS[m], why))
+            results[(s, m)] = ("SKIP", "%s %s/%s: %s" % (t, SCENES[s], mname(m), why))
         for key in sorted(results):
             st, msg = results[key][:2]
             print("%s %s" % (st, msg))
@@ -327,7 +360,7 @@ def main():
             ok, msg = decoder_check(t, first[0], first[1], a.frames)
             print("%s %s" % ("PASS" if ok else "FAIL", msg))
             passed, failed = passed + ok, failed + (not ok)
-        if t == "avr328":
+        if t == "avr328" and not a.scene:   # (the mandatory 328P checks need every scene)
             def fits(m):
                 r = results.get((0, m), ("", ""))
                 return r[0] == "PASS" and len(r) > 2 and r[2] >= MARGIN_328
@@ -335,7 +368,7 @@ def main():
                 r = results.get((0, m), ("", ""))
                 return "%d B free" % r[2] if len(r) > 2 else "-"
             cull = fits(0)
-            depth = ["%s (%s)" % (METHODS[m], free(m)) for m in range(1, len(METHODS)) if fits(m)]
+            depth = ["%s (%s)" % (mname(m), free(m)) for m in range(1, len(METHODS)) if fits(m)]
             ok = cull and depth
             print("%s mandatory: ATmega328P 128x64 1bpp cube in 2048 B SRAM with >= %d B free: "
                   "cull %s (%s), depth methods [%s]"
@@ -349,7 +382,7 @@ def main():
             def fits_s(s, m):
                 r = results.get((s, m), ("", ""))
                 return r[0] == "PASS" and len(r) > 2 and r[2] >= MARGIN_328
-            tor = [METHODS[m] for m in range(1, len(METHODS)) if fits_s(1, m)]
+            tor = [mname(m) for m in range(1, len(METHODS)) if fits_s(1, m)]
             ok = bool(tor)
             r = results.get((1, 1), ("", ""))
             print("%s mandatory: ATmega328P torus (200 faces) with painter's or better, identical, "

@@ -1,0 +1,255 @@
+#!/usr/bin/env python3
+"""maze_check.py [--frames F] [TARGET...] - the maze walk (examples/maze,
+the ray caster) against a fixed key script (tests/examples/maze.keys).
+
+Host (build/examples/maze --keys): the stream decodes to F good frames;
+every frame was steered by the script line before it (the log's key
+column); the camera turned and walked as those keys say (maze.h's
+rules), never nearer than MAZE_RADIUS to a wall cell, and the end wall
+stopped it; the same run without keys streams other frames; live over a
+pty (--pty), INPUT packets written by a reader steer it.
+Targets (default avr328 avr1284 6502 z80): the firmware
+build/x/T/maze/maze-F.* (examples/maze/fw_maze.c, the script compiled in
+and fed through maze_rx after each frame) runs in its simulator and its
+stream must equal the host's byte for byte.  A target the program does
+not fit is reported as skipped with the reason; the ATmega328P and the
+ATmega1284P must run.  Ends with "N passed, N failed".
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tests", "targets"))
+import identity  # noqa: E402  (make, run_target, is_skip)
+
+HOST = os.path.join(ROOT, "build", "examples", "maze")
+KEYS = os.path.join(ROOT, "tests", "examples", "maze.keys")
+RAST8 = os.path.join(ROOT, ".venv", "bin", "rast8")
+EXT = identity.EXT
+KEY = {"UP": 0x01, "DOWN": 0x02, "LEFT": 0x04, "RIGHT": 0x08, "A": 0x10, "B": 0x20,
+       "X": 0x100, "Y": 0x200}
+TURN, STEP, RADIUS = 4, 8, 12    # examples/maze/maze.h
+TOOL = os.path.join(ROOT, "build", "r8raycols")
+
+passed = failed = skipped = 0
+
+
+def check(ok, msg):
+    global passed, failed
+    print("%s %s" % ("PASS" if ok else "FAIL", msg))
+    if ok:
+        passed += 1
+    else:
+        failed += 1
+    return ok
+
+
+def script(path):
+    masks = []
+    for line in open(path):
+        s = line.split("#", 1)[0].strip()
+        if s:
+            masks.append(int(s, 0))
+    return masks
+
+
+def stats(data):
+    r = subprocess.run([RAST8, "stats", "--json", "-"], input=data, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, timeout=120)
+    try:
+        return json.loads(r.stdout.decode())
+    except ValueError:
+        return {"error": r.stderr.decode()[-200:]}
+
+
+def host_run(frames, keys, log=None):
+    args = [HOST, "-q", "--frames", str(frames), "--out", "-"]
+    if keys:
+        args += ["--keys", keys]
+    if log:
+        args += ["--log", log]
+    r = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=120)
+    return r.returncode, r.stdout, r.stderr.decode("latin-1").strip()
+
+
+def grid():
+    """The maze's cells (build/r8raycols prints them)."""
+    r = subprocess.run([TOOL], input="", stdout=subprocess.PIPE, text=True, check=True)
+    lines = r.stdout.splitlines()
+    _, w, h, shift = lines[0].split()
+    return [[int(v) for v in ln.split()] for ln in lines[1:1 + int(h)]], int(shift)
+
+
+def steering(rows, masks):
+    """The camera between frames as the keys say; returns the problems."""
+    cells, shift = grid()
+    bad = []
+
+    def clear(x, z):
+        for dx in (-RADIUS, RADIUS):
+            for dz in (-RADIUS, RADIUS):
+                if cells[(z + dz) >> shift][(x + dx) >> shift]:
+                    return False
+        return True
+
+    for r in rows:
+        if not clear(r["x"], r["z"]):
+            bad.append("frame %d: the camera (%d, %d) is within %d of a wall" % (r["n"], r["x"], r["z"], RADIUS))
+    for prev, cur in zip(rows, rows[1:]):
+        k = cur["keys"]
+        dyaw = (TURN if k & KEY["RIGHT"] else 0) - (TURN if k & KEY["LEFT"] else 0)
+        if (cur["yaw"] - prev["yaw"]) % 256 != dyaw % 256:
+            bad.append("frame %d: yaw %d -> %d with keys %04x" % (cur["n"], prev["yaw"], cur["yaw"], k))
+        fwd = bool(k & (KEY["UP"] | KEY["A"]))
+        back = bool(k & (KEY["DOWN"] | KEY["B"]))
+        d = abs(cur["x"] - prev["x"]) + abs(cur["z"] - prev["z"])
+        if fwd == back and d:
+            bad.append("frame %d: the camera moved with keys %04x" % (cur["n"], k))
+        if d > 2 * STEP:
+            bad.append("frame %d: a step of %d units" % (cur["n"], d))
+        if fwd != back and d == 0:
+            # a blocked step: only against a wall (one more step would come within RADIUS)
+            a = 2 * math.pi * cur["yaw"] / 256.0
+            sgn = 1 if fwd else -1
+            nx = prev["x"] + int(round(sgn * STEP * math.sin(a)))
+            nz = prev["z"] + int(round(sgn * STEP * math.cos(a)))
+            if (nx != prev["x"] and clear(nx, prev["z"])) or (nz != prev["z"] and clear(prev["x"], nz)):
+                bad.append("frame %d: keys %04x did not move the camera in the open" % (cur["n"], k))
+    return bad
+
+
+def pty_check():
+    """The live path: maze --pty, a reader on the pty sends INPUT
+    packets as `rast8 view` does; the frames stand still until a key is
+    held, then change."""
+    try:
+        import serial
+        sys.path.insert(0, os.path.join(ROOT, "host"))
+        from rast8.protocol import StreamDecoder, input_packet
+    except ImportError as e:
+        return check(False, "pty: %s (run scripts/setup.sh)" % e)
+    p = subprocess.Popen([HOST, "--pty", "--frames", "0", "--baud", "20000", "-q"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    before, after, sent, why = [], [], False, ""
+    try:
+        dev = p.stdout.readline().decode().strip()
+        port = serial.Serial(dev, timeout=0.05)
+        port.write(input_packet(0))            # the reader is there (opens the gate)
+        dec, t0 = StreamDecoder(), time.time()
+        while time.time() - t0 < 30 and len(after) < 6:
+            try:
+                data = port.read(4096)
+            except serial.SerialException as e:
+                why = str(e)
+                break
+            for f in dec.feed(data):
+                (after if sent else before).append(f.pixels)
+            if not sent and len(before) >= 4:
+                port.write(input_packet(KEY["RIGHT"]))   # turn right
+                sent = True
+        port.close()
+    except (OSError, serial.SerialException) as e:
+        why = str(e)
+    finally:
+        p.terminate()
+        p.wait(timeout=10)
+    still = len(before) >= 4 and len(set(before)) == 1
+    moved = len(after) >= 6 and len(set(after[2:])) > 1 and after[-1] != before[0]
+    return check(still and moved, "pty (%s): %d frames stand still with no key, then RIGHT "
+                 "held over INPUT packets: %d frames, %d different%s"
+                 % ("live, 20000 baud", len(before), len(after), len(set(after)),
+                    "; " + why if why else ""))
+
+
+def main():
+    global skipped
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--frames", type=int, default=24)
+    ap.add_argument("targets", nargs="*", default=["avr328", "avr1284", "6502", "z80"])
+    a = ap.parse_args()
+    os.chdir(ROOT)
+    fw = {t: os.path.join("build", "x", t, "maze", "maze-%d.%s" % (a.frames, EXT[t])) for t in a.targets}
+    if identity.make(["build/emu/avrsim", "build/examples/maze", "build/r8raycols"] + sorted(fw.values())):
+        print("maze_check: some builds failed (make output above)")
+    masks = script(KEYS)
+    # ---- the host build
+    with tempfile.TemporaryDirectory() as td:
+        log = os.path.join(td, "log")
+        rc, ref, err = host_run(a.frames, KEYS, log)
+        rows = []
+        if os.path.exists(log):
+            for line in open(log):
+                f = line.split()
+                rows.append({"n": int(f[0]), "keys": int(f[1], 16), "x": int(f[2]), "z": int(f[3]),
+                             "yaw": int(f[4])})
+    if not check(rc == 0 and ref, "host: maze --keys %s --frames %d: exit %d, %d bytes %s"
+                 % (os.path.relpath(KEYS, ROOT), a.frames, rc, len(ref), err)):
+        print("%d passed, %d failed" % (passed, failed))
+        return 1
+    st = stats(ref)
+    check(st.get("frames") == a.frames and not st.get("bad_packets") and not st.get("incomplete"),
+          "host: the stream decodes (rast8 stats): %s frames, %s bad packets, %s incomplete"
+          % (st.get("frames"), st.get("bad_packets"), st.get("incomplete")))
+    want = [0] + masks[:a.frames - 1]
+    want += [want[-1]] * (a.frames - len(want))
+    got = [r["keys"] for r in rows]
+    check(got == want, "host: frame N steered by script line N-1 (frame 0 by none): %s"
+          % ("yes" if got == want else "log %s, script %s" % (got, want)))
+    bad = steering(rows, masks)
+    check(not bad and len(rows) == a.frames,
+          "host: the camera follows the keys over %d frames (turn %d, step %d, %d from walls)%s"
+          % (len(rows), TURN, STEP, RADIUS, ": " + "; ".join(bad[:4]) if bad else ""))
+    blocked = [r for p, r in zip(rows, rows[1:]) if r["keys"] == 1 and (r["x"], r["z"]) == (p["x"], p["z"])]
+    check(len(blocked) >= 2, "host: the end wall stops the walk (%d forward steps blocked)" % len(blocked))
+    rc0, still, _ = host_run(a.frames, None)
+    check(rc0 == 0 and still != ref and stats(still).get("frames") == a.frames,
+          "host: without keys the camera stays put and the stream differs (%d vs %d bytes)"
+          % (len(still), len(ref)))
+    pty_check()
+    # ---- every target against the host
+    ran = set()
+    for t in a.targets:
+        path = os.path.join(ROOT, fw[t])
+        name = "%s maze" % t
+        if not os.path.exists(path):
+            check(False, "%s: %s not built (make output above)" % (name, fw[t]))
+            continue
+        why = identity.is_skip(path)
+        if why:
+            ram = os.path.join(os.path.dirname(path), "ram.txt")
+            if os.path.exists(ram) and open(ram).read().strip().isdigit():
+                why += " (its arena alone, maze_ram(), is %s B)" % open(ram).read().strip()
+            print("SKIP %s: %s" % (name, why))
+            skipped += 1
+            continue
+        size = {}
+        if os.path.exists(path + ".size"):
+            size = dict(kv.split("=") for kv in open(path + ".size").read().split())
+        data, rc, d = identity.run_target(t, path, timeout=600)
+        extra = "flash %s B, static RAM %s B (arena %s B)" % (
+            size.get("flash", "?"), size.get("ram_static", "?"),
+            open(os.path.join(os.path.dirname(path), "ram.txt")).read().strip())
+        if t.startswith("avr") and "stack_peak" in d:
+            extra += ", stack %d B" % d["stack_peak"]
+        at = next((i for i in range(min(len(data), len(ref))) if data[i] != ref[i]),
+                  min(len(data), len(ref)))
+        if check(rc == 0 and data == ref, "%s: %d frames, %d bytes %s the host's (%s)%s"
+                 % (name, a.frames, len(data), "identical to" if data == ref else
+                    "DIFFER at byte %d from" % at, extra, "" if rc == 0 else "; exit %d" % rc)):
+            ran.add(t)
+    for t in ("avr328", "avr1284"):
+        if t in a.targets:
+            check(t in ran, "mandatory: the %s runs the maze, identical" % identity.MCU[t])
+    print("%d targets skipped (reasons above)" % skipped)
+    print("%d passed, %d failed" % (passed, failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
