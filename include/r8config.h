@@ -20,6 +20,7 @@
  *                     crosses; the least RAM, slower on tall faces)
  *   R8_NO_LZ77        the LZ77 codec (RLE and raw stay)
  *   R8_PAGE1_ONLY     the renderer draws the SSD1306 page layout only
+ *   R8_NO_PORTAL      the portal renderer (R8_VIS_PORTAL, r8portal.h)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H
@@ -38,6 +39,7 @@
 #define R8_NO_LZ77
 #define R8_NO_RT_NORMALS
 #define R8_PAGE1_ONLY
+#define R8_NO_PORTAL
 #endif
 
 #endif

@@ -36,6 +36,8 @@
 #define R8_VIS_SBUF 6      /* S-buffer: depth-clipped spans per scanline */
 #define R8_VIS_COUNT 7
 #define R8_VIS_AUTO 255    /* let the analyser choose */
+#define R8_VIS_PORTAL 16   /* a world of sectors and portals (r8portal.h):
+                              a world renderer, outside R8_VIS_COUNT */
 
 /* Shading. */
 #define R8_SHADE_FLAT 0    /* the face's own colour */
@@ -132,6 +134,7 @@ void r8_render_stats_get(const r8_render *r, r8_render_stats *s);
 #define R8_WHY_OVERLAP 3     /* non-convex or interpenetrating: z-buffer */
 #define R8_WHY_USER 4        /* method given by the user */
 #define R8_WHY_RAM 5         /* exact method does not fit; best that fits */
+#define R8_WHY_PORTALS 7     /* sectors and portals: the portal renderer */
 
 typedef struct r8_analysis {
     r8_u8 method;       /* chosen visibility method */

@@ -14,6 +14,7 @@
 #define R8_DEMO_H
 
 #include "r8render.h"
+#include "r8portal.h"
 #include "r8flash.h"
 
 /* One object of a demo scene: a mesh, its place, its start angles and
@@ -35,7 +36,12 @@ typedef struct r8_demo {
     r8_s16 znear;              /* near plane */
     r8_s16 ambient;            /* Q1.14 */
     r8_vec3 light;             /* unit vector towards the light, Q1.14 */
+    const r8_world *world;     /* sectors and portals (0: none) */
+    const r8_s16 *path;        /* R8_FLASH: camera x, y, z, yaw per point */
+    r8_u8 npath;               /* the camera walks the path, R8_PATH_STEPS
+                                  frames from each point to the next */
 } r8_demo;
+#define R8_PATH_STEPS 16
 
 /* The built-in scenes, in this order. */
 #define R8_DEMO_CUBE 0        /* the rotating cube (one convex mesh) */
@@ -45,7 +51,9 @@ typedef struct r8_demo {
 #define R8_DEMO_WALL 4        /* seed's wall-and-pillar case */
 #define R8_DEMO_CROSS 5       /* two interpenetrating objects */
 #define R8_DEMO_SEPARATE 6    /* several separate objects */
-#define R8_DEMO_COUNT 7
+#define R8_DEMO_ROOMS 9       /* nine rooms joined by doors: the portal
+                                 renderer's world; the camera walks a path */
+#define R8_DEMO_COUNT 10      /* ids 7 and 8 are not in this build (0) */
 #ifndef R8_DEMO_MAXOBJ
 #define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
                                  scene may set its own count) */

@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include <string.h>
 #include "r8int.h"
+#include "r8portal.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
  * built when every method and shading that needs depth or shade along
@@ -63,6 +64,8 @@ const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
+    if (method == R8_VIS_PORTAL)
+        return "portal";
     return method < R8_VIS_COUNT ? method_names[method] : 0;
 }
 
@@ -71,6 +74,8 @@ int r8_method_by_name(const char *name)
     int i;
     if (streq(name, "auto"))
         return R8_VIS_AUTO;
+    if (streq(name, "portal"))
+        return R8_VIS_PORTAL;
     for (i = 0; i < R8_VIS_COUNT; i++)
         if (streq(name, method_names[i]))
             return i;
@@ -319,6 +324,9 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
 unsigned r8_render_ram(const r8_render_cfg *cfg)
 {
     plan pl;
+#if !defined(R8_NO_PORTAL) && !defined(R8_PLAN_ONLY)
+    if (cfg->method == R8_VIS_PORTAL) return r8_portal_ram(cfg);
+#endif
     if (!cfg_valid(cfg))
         return 0;
     make_plan(cfg, &pl);
@@ -392,6 +400,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
     r8_u8 i;
     r8_u16 vb = 0, fb = 0, k;
+#ifndef R8_NO_PORTAL
+    if (cfg->method == R8_VIS_PORTAL) return r8_portal_init(r, cfg, work, work_size);
+#endif
     if (!cfg_valid(cfg))
         return -1;
     make_plan(cfg, &pl);
@@ -713,6 +724,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
+#ifndef R8_NO_PORTAL
+    if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
+#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -919,6 +933,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
     r8_fid head = (r8_fid)st->first, *link = &head, g;
+#ifndef R8_NO_PORTAL
+    if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_band(r, fb); return; }
+#endif
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);
