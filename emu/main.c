@@ -61,10 +61,12 @@ static void usage(FILE *f)
 "  --scene NAME|FILE scene: a .r8s, .obj or scene blob file, or (default cube):",
             prog, R8_WIRE_VERSION);
     for (i = 0; i < R8_DEMO_COUNT; i++)
-        fprintf(f, " %s", r8_demo_name((r8_u8)i));
+        if (r8_demo_get((r8_u8)i))
+            fprintf(f, " %s", r8_demo_name((r8_u8)i));
     fprintf(f, "\n  --method NAME     visibility method (default cull): auto");
     for (i = 0; i < R8_VIS_COUNT; i++)
         fprintf(f, " %s", r8_method_name((r8_u8)i));
+    fprintf(f, " portal");
     fprintf(f, "\n"
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
@@ -336,7 +338,8 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         "", "one convex mesh: backface culling is exact",
         "convex objects apart in depth: painter's is exact",
         "concave or interpenetrating geometry: z-buffer",
-        "given by the user", "the exact method does not fit the RAM budget"
+        "given by the user", "the exact method does not fit the RAM budget",
+        "", "sectors joined by portals: the portal renderer draws each pixel once, no depth memory"
     };
     long budget = ram >= 0 ? ram : 16384;
     long extra;
@@ -367,7 +370,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         fprintf(stderr, "%s: analyser: scene %s -> method %s (%s), band %d rows, "
                 "renderer+band %u bytes; depth range z %ld..%ld, camera coordinates "
                 "need %d bits\n", prog, (cfg->demo ? cfg->demo->name : r8_demo_name(cfg->scene)),
-                r8_method_name(a.method), why[a.why < 6 ? a.why : 0], a.band, a.ram,
+                r8_method_name(a.method), why[a.why < sizeof why / sizeof why[0] ? a.why : 0], a.band, a.ram,
                 (long)a.znear, (long)a.zfar, a.coord_bits);
 }
 

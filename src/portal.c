@@ -89,6 +89,10 @@ static int inner_cfg(const r8_render_cfg *cfg, r8_render_cfg *ic, r8_scene *sc,
     ic->method = R8_VIS_CULL;
     ic->cull = R8_CULL_NORMAL;
     ic->pool = 0;
+    /* indoors, the floor and ceiling around the camera cross the near
+     * plane and the guard band: 21 polygons at most on the rooms walk */
+    if (ic->clip && ic->clip < R8_PORTAL_CLIP)
+        ic->clip = R8_PORTAL_CLIP;
     return 1;
 }
 
