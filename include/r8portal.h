@@ -37,8 +37,9 @@
 #define R8_PORTAL_ROWS 6     /* span rows for all regions, in frame heights */
 #endif
 #ifndef R8_PORTAL_CLIP
-#define R8_PORTAL_CLIP 24    /* clipped polygons per frame at least (unless
-                                cfg.clip is 0: no clipper) */
+#define R8_PORTAL_CLIP 24    /* clipped polygons per frame at least: cfg.clip
+                                is raised to it (indoors, the floor and
+                                ceiling round the camera need the clipper) */
 #endif
 #ifndef R8_PORTAL_DRAWS
 #define R8_PORTAL_DRAWS 128  /* walls drawn per frame */

@@ -8,7 +8,7 @@ compiled, so it cannot #include another .c of the folder)."""
 import os
 import sys
 
-NAMES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate"]
+NAMES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "", "", "rooms"]
 HERE = os.path.dirname(os.path.abspath(__file__))
 s = int(sys.argv[1])
 inline = "--inline" in sys.argv[2:]

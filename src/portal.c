@@ -24,98 +24,15 @@
 #include <stddef.h>
 #include "r8int.h"
 #include "r8portal.h"
+#include "portal_int.h"
 
 #ifndef R8_NO_PORTAL
-
-typedef struct pvisit {
-    r8_s16 ytop, ybot;  /* rows [ytop, ybot) */
-    r8_u16 row0;        /* their spans: rows[2 * (row0 + y - ytop)] */
-    r8_u8 sector;
-} pvisit;
-
-typedef struct pdraw {
-    r8_u16 g;           /* face id (mesh face, or nfaces + clipped polygon) */
-    r8_u8 visit;
-    r8_u8 level;
-} pdraw;
-
-typedef struct pstate {
-    r8_render inner;    /* the ordinary renderer on the world object */
-    r8_scene scene;
-    r8_object obj;
-    const r8_world *world;
-    pvisit *visit;
-    r8_s16 *rows;       /* x0, x1 per row of every visit */
-    pdraw *draw;
-    r8_u16 rows_cap, rows_used, ndraw, maxdraw;
-    r8_u8 nvisit;
-    r8_portal_stats stats;
-} pstate;
-
-#define PALIGN (sizeof(r8_s32) > sizeof(void *) ? sizeof(r8_s32) : sizeof(void *))
-
-static unsigned palign(unsigned n)
-{
-    return (unsigned)((n + (PALIGN - 1)) & ~(unsigned)(PALIGN - 1));
-}
 
 static pstate *pstate_of(const r8_render *r)
 {
     r8_u8 *w = r->work;
     w += (PALIGN - ((unsigned)((size_t)(void *)w & (PALIGN - 1)))) & (PALIGN - 1);
     return (pstate *)(void *)w;
-}
-
-/* The ordinary renderer's configuration for the world object. */
-static int inner_cfg(const r8_render_cfg *cfg, r8_render_cfg *ic, r8_scene *sc,
-                     r8_object *ob)
-{
-    const r8_world *w;
-    if (!cfg->scene || !cfg->scene->world)
-        return 0;
-    w = cfg->scene->world;
-    if (!w->mesh || !w->mesh->normals || !w->sectors || w->nsectors == 0 ||
-        w->nwalls > w->mesh->nfaces || cfg->shading == R8_SHADE_GOURAUD)
-        return 0;
-    ob->mesh = w->mesh;
-    r8_pose_identity(&ob->pose);
-    sc->objects = ob;
-    sc->nobjects = 1;
-    sc->ambient = cfg->scene->ambient;
-    sc->light = cfg->scene->light;
-    sc->world = 0;
-    *ic = *cfg;
-    ic->scene = sc;
-    ic->method = R8_VIS_CULL;
-    ic->cull = R8_CULL_NORMAL;
-    ic->pool = 0;
-    /* indoors, the floor and ceiling around the camera cross the near
-     * plane and the guard band: 21 polygons at most on the rooms walk */
-    if (ic->clip && ic->clip < R8_PORTAL_CLIP)
-        ic->clip = R8_PORTAL_CLIP;
-    return 1;
-}
-
-/* Bytes of the portal's own arrays after the inner work. */
-static unsigned own_bytes(const r8_render_cfg *cfg)
-{
-    return palign(sizeof(pvisit) * R8_PORTAL_VISITS) +
-           palign(4u * R8_PORTAL_ROWS * (unsigned)cfg->height) +
-           palign(sizeof(pdraw) * R8_PORTAL_DRAWS);
-}
-
-unsigned r8_portal_ram(const r8_render_cfg *cfg)
-{
-    r8_render_cfg ic;
-    r8_scene sc;
-    r8_object ob;
-    unsigned n;
-    if (!inner_cfg(cfg, &ic, &sc, &ob))
-        return 0;
-    n = r8_render_ram(&ic);
-    if (!n)
-        return 0;
-    return palign(sizeof(pstate)) + PALIGN + own_bytes(cfg) + n;
 }
 
 int r8_portal_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
@@ -133,19 +50,19 @@ int r8_portal_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->work = work;
     r->work_size = work_size;
     ps = pstate_of(r);
-    if (!inner_cfg(cfg, &ic, &ps->scene, &ps->obj))
+    if (!r8_portal_inner(cfg, &ic, &ps->scene, &ps->obj))
         return -1;
     ic.scene = &ps->scene;
     ps->world = cfg->scene->world;
-    p = (r8_u8 *)(void *)ps + palign(sizeof(pstate));
+    p = (r8_u8 *)(void *)ps + R8_PALIGN(sizeof(pstate));
     ps->visit = (pvisit *)(void *)p;
-    p += palign(sizeof(pvisit) * R8_PORTAL_VISITS);
+    p += R8_PALIGN(sizeof(pvisit) * R8_PORTAL_VISITS);
     ps->rows = (r8_s16 *)(void *)p;
     ps->rows_cap = (r8_u16)(R8_PORTAL_ROWS * (unsigned)cfg->height);
-    p += palign(4u * R8_PORTAL_ROWS * (unsigned)cfg->height);
+    p += R8_PALIGN(4u * R8_PORTAL_ROWS * (unsigned)cfg->height);
     ps->draw = (pdraw *)(void *)p;
     ps->maxdraw = R8_PORTAL_DRAWS;
-    p += palign(sizeof(pdraw) * R8_PORTAL_DRAWS);
+    p += R8_PALIGN(sizeof(pdraw) * R8_PORTAL_DRAWS);
     inner = work_size - (unsigned)(p - work);
     if (r8_render_init(&ps->inner, &ic, p, inner) != 0)
         return -2;

@@ -64,8 +64,10 @@ const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
+#ifndef R8_NO_PORTAL
     if (method == R8_VIS_PORTAL)
         return "portal";
+#endif
     return method < R8_VIS_COUNT ? method_names[method] : 0;
 }
 
@@ -74,8 +76,10 @@ int r8_method_by_name(const char *name)
     int i;
     if (streq(name, "auto"))
         return R8_VIS_AUTO;
+#ifndef R8_NO_PORTAL
     if (streq(name, "portal"))
         return R8_VIS_PORTAL;
+#endif
     for (i = 0; i < R8_VIS_COUNT; i++)
         if (streq(name, method_names[i]))
             return i;
@@ -324,7 +328,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
 unsigned r8_render_ram(const r8_render_cfg *cfg)
 {
     plan pl;
-#if !defined(R8_NO_PORTAL) && !defined(R8_PLAN_ONLY)
+#ifndef R8_NO_PORTAL
     if (cfg->method == R8_VIS_PORTAL) return r8_portal_ram(cfg);
 #endif
     if (!cfg_valid(cfg))

@@ -29,6 +29,15 @@
 
 static app_cfg cfg;
 
+/* A world of sectors (the rooms) needs the clipper: the floor and
+ * ceiling round the camera cross the near plane. */
+static void world_clip(app_cfg *c)
+{
+    const r8_demo *d = r8_demo_get(c->scene);
+    if (d && R8_RDPTR(&d->world))
+        c->render.clip = R8_PORTAL_CLIP;
+}
+
 #ifdef FW_HOST
 #include <stdlib.h>
 static r8_u8 mem[1L << 20];
@@ -43,6 +52,7 @@ int main(int argc, char **argv)
     cfg.render.method = (r8_u8)(argc > 2 ? atoi(argv[2]) : FW_METHOD);
     cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
     cfg.render.shading = (r8_u8)(argc > 4 ? atoi(argv[4]) : FW_SHADING);
+    world_clip(&cfg);
     need = app_ram(&cfg);
     if (need == 0 || need > sizeof mem)
         plat_exit(APP_E_CFG);
@@ -68,6 +78,7 @@ int main(void)
     cfg.render.method = FW_METHOD;
     cfg.render.shading = FW_SHADING;
     cfg.frames = FW_FRAMES;
+    world_clip(&cfg);
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;
 }

@@ -41,7 +41,18 @@ int main(void)
 #else
     for (s = 0; s < R8_DEMO_COUNT; s++)
 #endif
-        for (m = 0; m < R8_VIS_COUNT; m++) {
+        for (m = 0; m <= R8_VIS_PORTAL; m++) {
+            const r8_demo *d = r8_demo_get(s);
+            /* a world of sectors: the portal renderer (and painter's and
+             * zbuf16 on its walls, for make bench); else the mesh methods */
+            if (!d)
+                continue;
+            if (R8_RDPTR(&d->world)) {
+                if (m != R8_VIS_PORTAL && m != R8_VIS_PAINTER && m != R8_VIS_Z16)
+                    continue;
+            } else if (m >= R8_VIS_COUNT) {
+                continue;
+            }
             put_u(s);
             plat_putc(' ');
             put_u(m);
@@ -56,6 +67,8 @@ int main(void)
             acfg.render.shading = FW_SHADING;
 #endif
             acfg.scene = s;
+            if (R8_RDPTR(&d->world))
+                acfg.render.clip = R8_PORTAL_CLIP;   /* as fw_app.c */
             acfg.render.method = m;
             put_u(app_ram(&acfg));
 #else
