@@ -34,7 +34,8 @@ esac
 [ "$m" != 6 ] && trim="$trim -DR8_NO_SBUF"
 # the portal renderer (16): left out of every other firmware; its own
 # firmware keeps the clipper (the floor and ceiling round the camera)
-[ "$m" != 16 ] && trim="$trim -DR8_NO_PORTAL"
+# (the rooms, scene 9, a world: every method of it keeps both)
+[ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"

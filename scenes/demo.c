@@ -96,7 +96,11 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     run->scene.light.x = R8_RDS16(&d->light.x);
     run->scene.light.y = R8_RDS16(&d->light.y);
     run->scene.light.z = R8_RDS16(&d->light.z);
+#ifndef R8_NO_PORTAL
     run->scene.world = (const r8_world *)R8_RDPTR(&d->world);
+#else
+    run->scene.world = 0;
+#endif
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
     /* the depth range the objects can occupy: all the depth methods'
@@ -106,12 +110,14 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
         zn = R8_RDS16(&d->znear);
     if (zf <= zn)
         zf = zn + 1;
+#ifndef R8_NO_PORTAL
     if (run->scene.world) {
         /* the camera walks through the world: anything within its
          * diameter may be in view */
         zn = R8_RDS16(&d->znear);
         zf = 2L * run->scene.world->mesh->radius;
     }
+#endif
     run->cam.znear = (r8_s16)zn;
     run->cam.zfar = (r8_s16)zf;
     r8_demo_pose(run, 0);
@@ -130,6 +136,7 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
         p->ay = (r8_u8)(R8_RDU8(&o->ay) + (r8_u8)(R8_RDS8(&o->sy) * f));
         p->az = (r8_u8)(R8_RDU8(&o->az) + (r8_u8)(R8_RDS8(&o->sz) * f));
     }
+#ifndef R8_NO_PORTAL
     n = R8_RDU8(&d->npath);
     if (n > 1) {
         /* the walk: point k to point k + 1 in R8_PATH_STEPS frames (the
@@ -145,4 +152,5 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
         dy = (r8_s16)(((R8_RDS16(b + 3) - R8_RDS16(a + 3) + 128) & 255) - 128);
         c->yaw = (r8_u8)(R8_RDS16(a + 3) + R8_ASR32C(r8_mul16(dy, t), 4));
     }
+#endif
 }

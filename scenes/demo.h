@@ -36,12 +36,21 @@ typedef struct r8_demo {
     r8_s16 znear;              /* near plane */
     r8_s16 ambient;            /* Q1.14 */
     r8_vec3 light;             /* unit vector towards the light, Q1.14 */
+#ifndef R8_NO_PORTAL
     const r8_world *world;     /* sectors and portals (0: none) */
     const r8_s16 *path;        /* R8_FLASH: camera x, y, z, yaw per point */
     r8_u8 npath;               /* the camera walks the path, R8_PATH_STEPS
                                   frames from each point to the next */
+#endif
 } r8_demo;
 #define R8_PATH_STEPS 16
+/* The world fields of a scene's initialiser (generated scenes/\*.c): left
+ * out with the portal renderer, so no other firmware's flash grows. */
+#ifndef R8_NO_PORTAL
+#define R8_DEMO_WORLD(w, p, n) , w, p, n
+#else
+#define R8_DEMO_WORLD(w, p, n)
+#endif
 
 /* The built-in scenes, in this order. */
 #define R8_DEMO_CUBE 0        /* the rotating cube (one convex mesh) */

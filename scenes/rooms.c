@@ -395,8 +395,9 @@ static const r8_s16 rooms_rooms_n[810] R8_FLASH = {
     0, 0, 16384, -16384, 0, 0, 0, 0, 16384, 16384, 0, 0,
     -16384, 0, 0, 16384, 0, 0,
 };
-static const r8_mesh rooms_rooms = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 270, 0, 909};
 static const r8_mesh rooms_rooms_walls = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 250, 0, 909};
+#ifndef R8_NO_PORTAL
+static const r8_mesh rooms_rooms = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 270, 0, 909};
 static const r8_sector rooms_sectors[9] R8_FLASH = {
     {0, 250, 28, 2},
     {28, 252, 28, 2},
@@ -463,8 +464,9 @@ static const r8_s16 rooms_path[192] R8_FLASH = {
     165, 0, 5, 192,
     85, 0, 5, 192,
 };
+#endif
 static const r8_demo_obj rooms_objects[1] R8_FLASH = {
     {&rooms_rooms_walls, 0, 0, 0, 0, 0, 0, 0, 0, 0},
 };
 static const char rooms_name[] R8_FLASH = "rooms";
-const r8_demo r8_demo_rooms R8_FLASH = {rooms_name, rooms_objects, 1, 40, 8, 5734, {-4246, -14154, -7077}, &rooms_world, rooms_path, 48};
+const r8_demo r8_demo_rooms R8_FLASH = {rooms_name, rooms_objects, 1, 40, 8, 5734, {-4246, -14154, -7077} R8_DEMO_WORLD(&rooms_world, rooms_path, 48)};

@@ -33,9 +33,13 @@ static app_cfg cfg;
  * ceiling round the camera cross the near plane. */
 static void world_clip(app_cfg *c)
 {
+#ifndef R8_NO_PORTAL
     const r8_demo *d = r8_demo_get(c->scene);
     if (d && R8_RDPTR(&d->world))
         c->render.clip = R8_PORTAL_CLIP;
+#else
+    (void)c;
+#endif
 }
 
 #ifdef FW_HOST

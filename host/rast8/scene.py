@@ -597,11 +597,13 @@ def to_c_scene(sc):
         for k in range(0, len(ns), 4):
             out.append("    " + ", ".join(f"{x}, {y}, {z}" for x, y, z in ns[k:k + 4]) + ",")
         out.append("};")
-        out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
-                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}}};")
+        mesh = (f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
+                f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}}};")
         if sc.world is not None and mname == sc.world.name:
             lines, mids[mname] = sectors.c_world(sc.world, sid, cid)
-            out += lines
+            out += [lines[0], "#ifndef R8_NO_PORTAL", mesh] + lines[1:] + ["#endif"]
+        else:
+            out.append(mesh)
     out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")
     for o in sc.objects:
         out.append(f"    {{&{mids[o.mesh]}, {o.pos[0]}, {o.pos[1]}, {o.pos[2]}, "
@@ -609,9 +611,9 @@ def to_c_scene(sc):
     out.append("};")
     lx, ly, lz = _light_q14(sc.light)
     out.append(f'static const char {sid}_name[] R8_FLASH = "{sc.name}";')
-    world = ", 0, 0, 0"
+    world = " R8_DEMO_WORLD(0, 0, 0)"
     if sc.world is not None:
-        world = f", &{sid}_world, {sid}_path, {len(sc.world.path)}"
+        world = f" R8_DEMO_WORLD(&{sid}_world, {sid}_path, {len(sc.world.path)})"
     out.append(f"const r8_demo r8_demo_{sid} R8_FLASH = {{{sid}_name, {sid}_objects, {len(sc.objects)}, "
                f"{sc.focal}, {sc.near}, {_q14(sc.ambient)}, {{{lx}, {ly}, {lz}}}{world}}};")
     return "\n".join(out) + "\n"

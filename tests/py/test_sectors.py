@@ -107,7 +107,7 @@ def test_rooms_c_has_the_world_and_the_walls_mesh(tmp_path):
     assert "static const r8_world rooms_world = {&rooms_rooms, rooms_sectors, rooms_target, %d, 9};" \
         % len(walls) in c
     assert "rooms_rooms_walls = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, %d," % len(walls) in c
-    assert "&rooms_world, rooms_path, 48};" in c
+    assert "R8_DEMO_WORLD(&rooms_world, rooms_path, 48)};" in c
     # the generated scenes/rooms.c is up to date
     with open(os.path.join(ROOT, "scenes", "rooms.c"), encoding="utf-8") as f:
         assert f.read() == c
