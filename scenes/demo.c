@@ -98,9 +98,7 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     run->scene.light.z = R8_RDS16(&d->light.z);
 #ifndef R8_NO_PORTAL
     run->scene.world = (const r8_world *)R8_RDPTR(&d->world);
-#else
-    run->scene.world = 0;
-#endif
+#endif   /* (else never read: the analyser and renderer ignore it) */
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
     /* the depth range the objects can occupy: all the depth methods'

@@ -5,12 +5,21 @@
  * BYTES is app_ram(cfg) for app_defaults + scene + method (FW_HAVE_APP),
  * else r8_render_ram(cfg) for the defaults.  The firmware builds size
  * their static arena from these lines. */
+#if defined(FW_SCENE) && FW_SCENE != 9
+#define R8_NO_PORTAL   /* a mesh scene: as its table (ports/scene_strip.py) */
+#endif
 #include "plat.h"
 #include "r8render.h"
 #ifdef FW_HAVE_APP
 #include "app.h"
 static app_cfg acfg;
 #include "fw_trim.c"   /* sizing renders nothing: no LZ77, no S-buffer */
+#endif
+
+#ifndef R8_NO_PORTAL
+#define FW_WORLD(d) (R8_RDPTR(&(d)->world) != 0)
+#else
+#define FW_WORLD(d) 0
 #endif
 
 static void put_u(unsigned v)
@@ -47,7 +56,7 @@ int main(void)
              * zbuf16 on its walls, for make bench); else the mesh methods */
             if (!d)
                 continue;
-            if (R8_RDPTR(&d->world)) {
+            if (FW_WORLD(d)) {
                 if (m != R8_VIS_PORTAL && m != R8_VIS_PAINTER && m != R8_VIS_Z16)
                     continue;
             } else if (m >= R8_VIS_COUNT) {
@@ -67,7 +76,7 @@ int main(void)
             acfg.render.shading = FW_SHADING;
 #endif
             acfg.scene = s;
-            if (R8_RDPTR(&d->world))
+            if (FW_WORLD(d))
                 acfg.render.clip = R8_PORTAL_CLIP;   /* as fw_app.c */
             acfg.render.method = m;
             put_u(app_ram(&acfg));
