@@ -180,10 +180,113 @@ static void test_walk_equals_zbuf16(void)
     TEST_ASSERT_LESS_OR_EQUAL(BOUND, worst);
 }
 
+/* Band heights change nothing (8, 16, 64 rows; every 16th frame). */
+static void test_bands_agree(void)
+{
+    static r8_u8 full[W * H];
+    r8_render_cfg c;
+    r8_u16 f;
+    for (f = 0; f < NPATH; f = (r8_u16)(f + 16)) {
+        cfg_for(&c, R8_VIS_PORTAL, 64);
+        TEST_ASSERT_EQUAL_INT(0, render(&c, f, full));
+        cfg_for(&c, R8_VIS_PORTAL, 8);
+        TEST_ASSERT_EQUAL_INT(0, render(&c, f, img));
+        TEST_ASSERT_EQUAL_INT(0, diff(full, img, W * H));
+        cfg_for(&c, R8_VIS_PORTAL, 16);
+        TEST_ASSERT_EQUAL_INT(0, render(&c, f, img));
+        TEST_ASSERT_EQUAL_INT(0, diff(full, img, W * H));
+    }
+}
+
+/* Only the sectors seen are set up: on the walk the portal renderer
+ * tests fewer faces than the world has and visits fewer sectors, and
+ * the camera's sector is r8_portal_locate's. */
+static void test_only_sectors_seen(void)
+{
+    r8_render_cfg c;
+    r8_u16 f;
+    unsigned most = 0, fewest = 255;
+    cfg_for(&c, R8_VIS_PORTAL, 8);
+    for (f = 0; f < NPATH; f = (r8_u16)(f + 8)) {
+        const r8_world *w = run.scene.world;
+        TEST_ASSERT_EQUAL_INT(0, render(&c, f, img));
+        TEST_ASSERT_EQUAL_INT(r8_portal_locate(w, run.cam.x, run.cam.y, run.cam.z), last.sector);
+        TEST_ASSERT_TRUE(last.visits >= 1 && last.visits < w->nsectors);
+        TEST_ASSERT_TRUE(last.faces < w->mesh->nfaces);
+        TEST_ASSERT_TRUE(last.portals == last.visits - 1u);
+        if (last.visits > most) most = last.visits;
+        if (last.visits < fewest) fewest = last.visits;
+    }
+    TEST_ASSERT_TRUE(most >= 3);       /* seen through two doors in a row */
+    TEST_ASSERT_EQUAL_INT(1, fewest);  /* facing a wall: its own room only */
+}
+
+/* r8_render_ram is what the portal renderer touches: guard bytes past
+ * it never change; less memory is refused with -2; a scene without a
+ * world, and Gouraud shading, with -1. */
+static void test_memory_and_refusals(void)
+{
+    r8_render_cfg c;
+    r8_render r;
+    unsigned need, i;
+    r8_u16 f;
+    cfg_for(&c, R8_VIS_PORTAL, 8);
+    need = r8_render_ram(&c);
+    TEST_ASSERT_TRUE(need > 0 && need + 64 <= sizeof work);
+    for (f = 0; f < NPATH; f = (r8_u16)(f + 32)) {
+        memset(work, 0xA5, sizeof work);
+        TEST_ASSERT_EQUAL_INT(0, r8_render_init(&r, &c, work, need));
+        {
+            r8_fb band;
+            r8_s16 y;
+            r8_demo_pose(&run, f);
+            r8_render_frame(&r, &run.cam);
+            r8_fb_init(&band, bandbuf, c.format, W, H, 0, c.band);
+            for (y = 0; y < H; y = (r8_s16)(y + c.band)) {
+                r8_fb_set_band(&band, y);
+                r8_render_band(&r, &band);
+            }
+        }
+        for (i = need; i < need + 64; i++)
+            TEST_ASSERT_EQUAL_INT(0xA5, work[i]);
+    }
+    TEST_ASSERT_EQUAL_INT(-2, r8_render_init(&r, &c, work, need - 1));
+    c.shading = R8_SHADE_GOURAUD;
+    TEST_ASSERT_EQUAL_INT(0, (long)r8_render_ram(&c));
+    TEST_ASSERT_EQUAL_INT(-1, r8_render_init(&r, &c, work, sizeof work));
+    cfg_for(&c, R8_VIS_PORTAL, 8);
+    run.scene.world = 0;
+    TEST_ASSERT_EQUAL_INT(0, (long)r8_render_ram(&c));
+    TEST_ASSERT_EQUAL_INT(-1, r8_render_init(&r, &c, work, sizeof work));
+    TEST_ASSERT_EQUAL_INT(0, strcmp("portal", r8_method_name(R8_VIS_PORTAL)));
+    TEST_ASSERT_EQUAL_INT(R8_VIS_PORTAL, r8_method_by_name("portal"));
+}
+
+/* The analyser picks the portal renderer for a world, says why, and it
+ * needs less memory than the 16-bit z-buffer on the same walls. */
+static void test_analyser_picks_portal(void)
+{
+    r8_render_cfg c, z;
+    r8_analysis a;
+    cfg_for(&c, R8_VIS_AUTO, 8);
+    c.band = 0;
+    TEST_ASSERT_EQUAL_INT(0, r8_analyse(&c, &run.cam, 0, 16384u, &a));
+    TEST_ASSERT_EQUAL_INT(R8_VIS_PORTAL, a.method);
+    TEST_ASSERT_EQUAL_INT(R8_WHY_PORTALS, a.why);
+    TEST_ASSERT_EQUAL_INT(1, a.exact);
+    cfg_for(&c, R8_VIS_PORTAL, 8);
+    cfg_for(&z, R8_VIS_Z16, 8);
+    TEST_ASSERT_TRUE(r8_render_ram(&c) < r8_render_ram(&z));
+}
+
 int main(int argc, char **argv)
 {
     measure = argc > 1 && strcmp(argv[1], "--measure") == 0;
     UNITY_BEGIN();
     RUN_TEST(test_walk_equals_zbuf16);
+    RUN_TEST(test_bands_agree);
+    RUN_TEST(test_only_sectors_seen);
+    RUN_TEST(test_memory_and_refusals);
+    RUN_TEST(test_analyser_picks_portal);
     return UNITY_END();
 }
