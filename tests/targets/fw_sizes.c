@@ -16,12 +16,6 @@ static app_cfg acfg;
 #include "fw_trim.c"   /* sizing renders nothing: no LZ77, no S-buffer */
 #endif
 
-#ifndef R8_NO_PORTAL
-#define FW_WORLD(d) (R8_RDPTR(&(d)->world) != 0)
-#else
-#define FW_WORLD(d) 0
-#endif
-
 static void put_u(unsigned v)
 {
     char d[6];
@@ -56,12 +50,14 @@ int main(void)
              * zbuf16 on its walls, for make bench); else the mesh methods */
             if (!d)
                 continue;
-            if (FW_WORLD(d)) {
+#ifndef R8_NO_PORTAL
+            if (R8_RDPTR(&d->world)) {
                 if (m != R8_VIS_PORTAL && m != R8_VIS_PAINTER && m != R8_VIS_Z16)
                     continue;
-            } else if (m >= R8_VIS_COUNT) {
+            } else
+#endif
+            if (m >= R8_VIS_COUNT)
                 continue;
-            }
             put_u(s);
             plat_putc(' ');
             put_u(m);
@@ -76,8 +72,10 @@ int main(void)
             acfg.render.shading = FW_SHADING;
 #endif
             acfg.scene = s;
-            if (FW_WORLD(d))
+#ifndef R8_NO_PORTAL
+            if (R8_RDPTR(&d->world))
                 acfg.render.clip = R8_PORTAL_CLIP;   /* as fw_app.c */
+#endif
             acfg.render.method = m;
             put_u(app_ram(&acfg));
 #else
