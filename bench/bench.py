@@ -463,7 +463,7 @@ def shadings_md(recs):
          "The chart's cost axis (`make chart`).  *same*: all three streams equal the host's.", "",
          "| scene | method | flat | Lambert | Gouraud | same |", "|---|---|---:|---:|---:|---|"]
     for sc in SHADE_SCENES:
-        for m in idt.METHODS:
+        for m in idt.METHODS[:7]:
             cells, same = [], True
             for sh in SHADINGS:
                 r = by.get((sc, m, sh))
@@ -643,7 +643,80 @@ def ray_figures():
     return raycast_ref.run(os.path.join(ROOT, "build", "r8raycols"), 200)
 
 
+PORTAL_SCENE = 9                 # rooms (scenes/demo.h R8_DEMO_ROOMS)
+PORTAL_METHODS = [16, 3, 1]      # portal, zbuf16, painter's
+PORTAL_TARGETS = ["avr1284", "6502", "z80"]
+
+
+def portal_main():
+    """--portal (make bench-portal): issue 14's figures only.  The host
+    walk (build/portal_bench: every frame of the rooms path) gives
+    overdraw, polygons, vertices transformed, sectors and differences; the
+    firmware of the rooms with each method on the targets gives cycles
+    (frames N..2N-1: the first room, looking at its door), RAM and flash."""
+    t0 = time.time()
+    os.chdir(ROOT)
+    r = run([os.path.join(ROOT, "build", "portal_bench")], timeout=600)
+    if r.returncode:
+        sys.exit("bench: build/portal_bench failed: %s" % r.stderr.decode()[-300:])
+    host = [json.loads(line) for line in r.stdout.decode().splitlines() if line.strip()]
+    ready = ["build/emu/avrsim", "build/emu/prof65", "build/emu/fw-host"] + sorted(
+        {"build/x/%s/sizes.txt" % idt.SIZES[t] for t in PORTAL_TARGETS})
+    if idt.make(ready, keep_going=False):
+        sys.exit("bench: cannot build the runners / sizes")
+    files = []
+    for t in PORTAL_TARGETS:
+        for m in PORTAL_METHODS:
+            files.append(os.path.relpath(idt.fw_path(t, PORTAL_SCENE, m, FRAMES), ROOT))
+            if t == "6502":
+                files.append(os.path.relpath(idt.fw_path(t, PORTAL_SCENE, m, N), ROOT))
+    print("bench: building %d firmware images" % len(files))
+    idt.make(files)
+    jobs = []
+    for t in PORTAL_TARGETS:
+        sizes, _ = idt.read_sizes(t)
+        for m in PORTAL_METHODS:
+            st = (idt.host_ref(PORTAL_SCENE, m, N), idt.host_ref(PORTAL_SCENE, m, FRAMES))
+            jobs.append((t, m, sizes.get((PORTAL_SCENE, m), 0), st))
+    print("bench: running %d simulations" % len(jobs))
+    with cf.ThreadPoolExecutor(2) as ex:
+        recs = list(ex.map(lambda j: measure(j[0], PORTAL_SCENE, j[1], j[2], j[3]), jobs))
+    out = {"scene": "rooms", "host_walk": host, "targets": recs}
+    os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
+    with open(os.path.join(ROOT, "build", "bench", "portal.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    L = ["## Portal renderer (rooms, 128x64)", "",
+         "Host walk: all %d frames of the camera path (8 bpp, Lambert, band 8, clip 24)." %
+         host[0]["frames"], "",
+         "| method | overdraw mean | max | polygons mean | max | vertices transformed (of %d) |"
+         " sectors visited (of %d) | faces tested | pixels != zbuf16 (max) | work RAM, band 8 |" % (
+             host[0]["vertices"], host[0].get("sectors", 0)),
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for h in host:
+        L.append("| %s | %.3f | %.3f | %.1f | %d | %.1f | %s | %s | %.1f (%d) | %d |" % (
+            h["method"], h["overdraw_mean"], h["overdraw_max"], h["polygons_mean"], h["polygons_max"],
+            h["vertices_transformed_mean"],
+            "%.2f" % h["sectors_visited_mean"] if "sectors_visited_mean" in h else "all",
+            "%.1f" % h["faces_tested_mean"] if "faces_tested_mean" in h else "all",
+            h["pixels_differing_from_zbuf16_mean"], h["pixels_differing_from_zbuf16_max"],
+            h["work_bytes_band8"]))
+    L += ["", "Firmware (frames %d..%d of the walk; PAGE1, Lambert):" % (N, 2 * N - 1), "",
+          "| target | method | cycles/frame | fps | arena | static RAM | stack | flash | same as host |",
+          "|---|---|---:|---:|---:|---:|---:|---:|---|"]
+    for rec in recs:
+        L.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            rec["target"], rec["method"], fmt(rec["cycles_per_frame"]), fmt(rec["fps_compute"], 2),
+            fmt(rec["arena_bytes"]), fmt(rec["ram_static_bytes"]), fmt(rec["stack_peak_bytes"]),
+            fmt(rec["flash_bytes"]), rec["skipped"] or rec["identical_to_host"]))
+    with open(os.path.join(ROOT, "build", "bench", "portal.md"), "w") as f:
+        f.write("\n".join(L) + "\n")
+    print("\n".join(L))
+    print("bench: wrote build/bench/portal.json and portal.md in %.0f s" % (time.time() - t0))
+
+
 def main():
+    if "--portal" in sys.argv[1:]:
+        return portal_main()
     import argparse
     ap = argparse.ArgumentParser(description="make bench: every target x scene x method")
     ap.add_argument("--scene", help="this built-in scene only (e.g. maze), written to "
@@ -676,7 +749,7 @@ def main():
     idt.make(["build/x/avr1284/sizes-sh2.txt"])
     for s in [idt.SCENES.index(n) for n in SHADE_SCENES if only is None or n == a.scene]:
         for m in range(len(idt.METHODS)):
-            if idt.METHODS[m] == "bsp" and idt.SCENES[s] not in idt.BSP_SCENES:
+            if (s, m) not in set(idt.combos()):
                 continue
             for sh in (0, 2):
                 shade_jobs.append((s, m, sh))

@@ -64,10 +64,10 @@ static void usage(FILE *f)
         if (r8_demo_name((r8_u8)i))
             fprintf(f, " %s", r8_demo_name((r8_u8)i));
     fprintf(f, "\n  --method NAME     visibility method (default cull; ray for a grid\n"
-            "                    scene such as maze): auto");
+            "                    scene such as maze, portal for rooms): auto");
     for (i = 0; i < R8_VIS_COUNT; i++)
         fprintf(f, " %s", r8_method_name((r8_u8)i));
-    fprintf(f, " %s", r8_method_name(R8_VIS_RAY));
+    fprintf(f, " %s %s", r8_method_name(R8_VIS_RAY), r8_method_name(R8_VIS_PORTAL));
     fprintf(f, "\n"
 "  --width W --height H   frame size (default 128x64)\n"
 "  --format F        page1 (SSD1306 pages, default), row1, idx8\n"
@@ -345,7 +345,7 @@ static void analyse(app_cfg *cfg, int band_given, long ram, int quiet)
         "concave or interpenetrating geometry: z-buffer",
         "given by the user", "the exact method does not fit the RAM budget",
         "a grid map: the ray caster draws it",
-        "",
+        "sectors joined by portals: the portal renderer draws each pixel once, no depth memory",
         "non-convex meshes with BSP trees, apart in depth: BSP order is exact"
     };
     long budget = ram >= 0 ? ram : 16384;

@@ -27,6 +27,7 @@
  *   R8_NO_WIRE        wireframe (cfg.wire is then ignored), Wu's lines
  *                     and circles (r8_wu_line, r8_circle*)
  *   R8_NO_TEXTURE     texture mapping (R8_SHADE_TEXTURE)
+ *   R8_NO_PORTAL      the portal renderer (R8_VIS_PORTAL, r8portal.h)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H
@@ -48,6 +49,7 @@
 #define R8_NO_LZW
 #define R8_NO_RT_NORMALS
 #define R8_PAGE1_ONLY
+#define R8_NO_PORTAL
 #endif
 
 #endif

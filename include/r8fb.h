@@ -88,4 +88,14 @@ extern const r8_u8 r8_fb_bit[8];
 /* One pixel of shade level s through the same dither (8 bpp: base + s). */
 void r8_fb_dot(r8_fb *fb, r8_s16 x, r8_s16 y, r8_u8 s, r8_u8 base);
 
+/* Bench instrumentation (host builds with -DR8_COUNT_PX only, bench/
+ * portal_bench.c): pixels written into bands by the span and pixel
+ * writers, for the overdraw figures. */
+#ifdef R8_COUNT_PX
+extern r8_u32 r8_px_written;
+#define R8_COUNT_PX_ADD(n) (r8_px_written += (r8_u32)(n))
+#else
+#define R8_COUNT_PX_ADD(n) ((void)0)
+#endif
+
 #endif

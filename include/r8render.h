@@ -39,6 +39,8 @@
 #define R8_VIS_RAY 17      /* world renderer: ray caster over the scene's
                               grid map (r8ray.h); not in R8_VIS_COUNT */
 #define R8_VIS_AUTO 255    /* let the analyser choose */
+#define R8_VIS_PORTAL 16   /* a world of sectors and portals (r8portal.h):
+                              a world renderer, outside R8_VIS_COUNT */
 
 /* Shading. */
 #define R8_SHADE_FLAT 0    /* the face's own colour */
@@ -152,6 +154,7 @@ void r8_render_stats_get(const r8_render *r, r8_render_stats *s);
 #define R8_WHY_USER 4        /* method given by the user */
 #define R8_WHY_RAM 5         /* exact method does not fit; best that fits */
 #define R8_WHY_GRID 6        /* a grid map: the ray caster draws it */
+#define R8_WHY_PORTALS 7     /* sectors and portals: the portal renderer */
 #define R8_WHY_BSP 8         /* non-convex meshes with BSP trees, apart in
                                 depth: BSP order is exact, no depth memory */
 

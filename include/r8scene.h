@@ -106,6 +106,8 @@ typedef struct r8_object {
 /* The scene: the application's objects and the light.  Poses are read
  * at every r8_render_frame; the object list itself (count, meshes) is
  * fixed after r8_render_init. */
+struct r8_world;             /* r8portal.h */
+
 typedef struct r8_scene {
     r8_object *objects;
     r8_u8 nobjects;
@@ -113,6 +115,7 @@ typedef struct r8_scene {
     r8_vec3 light;          /* unit vector towards the light, world space, Q1.14 */
     const struct r8_grid *grid; /* a grid map for the ray caster (r8ray.h,
                                R8_VIS_RAY); 0 = none */
+    const struct r8_world *world;  /* sectors and portals (r8portal.h), 0 = none */
 } r8_scene;
 
 /* A pose at the origin with no rotation, visible, own colours. */

@@ -39,6 +39,11 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # firmware carries texture mapping
 [ "$s" != 7 ] && trim="$trim -DR8_NO_TEXTURE"
 [ "$m" != 17 ] && trim="$trim -DR8_NO_RAY"   # the ray caster: the maze's firmware only
+# the portal renderer (16): left out of every other firmware; its own
+# firmware keeps the clipper (the floor and ceiling round the camera)
+# (the rooms, scene 9, a world: every method of it keeps both)
+[ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
+[ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
 case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"

@@ -8,7 +8,8 @@ compiled, so it cannot #include another .c of the folder)."""
 import os
 import sys
 
-NAMES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze"]
+NAMES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms"]
+WORLDS = {9}      # scenes of sectors and portals (the rooms)
 HERE = os.path.dirname(os.path.abspath(__file__))
 s = int(sys.argv[1])
 inline = "--inline" in sys.argv[2:]
@@ -18,6 +19,8 @@ if NAMES[s] != "crate":
     # only the crate is textured: the others' meshes without the texture
     # members (R8_MESH_TEX), as their firmware is built (ports/fwdefs.sh)
     print("#ifndef R8_NO_TEXTURE\n#define R8_NO_TEXTURE\n#endif")
+if s not in WORLDS:
+    print("#define R8_NO_PORTAL   /* a mesh scene: no world fields (as its firmware) */")
 for name in ("demo.c", NAMES[s] + ".c"):
     if inline:
         with open(os.path.join(HERE, "..", "scenes", name), encoding="utf-8") as f:

@@ -103,4 +103,4 @@ static const r8_demo_obj crate_objects[1] R8_FLASH = {
     {&crate_crate, 0, 0, 200, 0, 0, 0, 1, 2, 0},
 };
 static const char crate_name[] R8_FLASH = "crate";
-const r8_demo r8_demo_crate R8_FLASH = {crate_name, crate_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_crate R8_FLASH = {crate_name, crate_objects, 1, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

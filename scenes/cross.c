@@ -79,4 +79,4 @@ static const r8_demo_obj cross_objects[1] R8_FLASH = {
     {&cross_slab_post, 0, 0, 200, 0, 0, 0, 1, 3, 0},
 };
 static const char cross_name[] R8_FLASH = "cross";
-const r8_demo r8_demo_cross R8_FLASH = {cross_name, cross_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_cross R8_FLASH = {cross_name, cross_objects, 1, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

@@ -28,4 +28,4 @@ static const r8_demo_obj cube_objects[1] R8_FLASH = {
     {&cube_cube, 0, 0, 220, 0, 0, 0, 2, 3, 1},
 };
 static const char cube_name[] R8_FLASH = "cube";
-const r8_demo r8_demo_cube R8_FLASH = {cube_name, cube_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_cube R8_FLASH = {cube_name, cube_objects, 1, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

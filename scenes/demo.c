@@ -3,10 +3,11 @@
 #include "r8ray.h"
 
 extern const r8_demo r8_demo_cube, r8_demo_torus, r8_demo_teapot, r8_demo_terrain,
-    r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate, r8_demo_maze;
+    r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate, r8_demo_maze,
+    r8_demo_rooms;
 
 static const char *const names[R8_DEMO_COUNT] = {
-    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze"
+    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms"
 };
 
 #ifdef R8_DEMO_ONLY
@@ -27,6 +28,8 @@ static const char *const names[R8_DEMO_COUNT] = {
 #define R8_DEMO_THE_ r8_demo_crate
 #elif R8_DEMO_ONLY == 8
 #define R8_DEMO_THE_ r8_demo_maze
+#elif R8_DEMO_ONLY == 9
+#define R8_DEMO_THE_ r8_demo_rooms
 #else
 #define R8_DEMO_THE_ r8_demo_separate
 #endif
@@ -39,7 +42,8 @@ const r8_demo *r8_demo_get(r8_u8 id)
 {
     static const r8_demo *const all[R8_DEMO_COUNT] = {
         &r8_demo_cube, &r8_demo_torus, &r8_demo_teapot, &r8_demo_terrain,
-        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate, &r8_demo_maze
+        &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate, &r8_demo_maze,
+        &r8_demo_rooms
     };
     return id < R8_DEMO_COUNT ? all[id] : 0;
 }
@@ -63,7 +67,7 @@ int r8_demo_by_name(const char *name)
 {
     int i;
     for (i = 0; i < R8_DEMO_COUNT; i++)
-        if (names[i] && streq(name, names[i]))
+        if (names[i] && names[i][0] && streq(name, names[i]))
             return i;
     return -1;
 }
@@ -119,6 +123,9 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     run->scene.grid = grid_of(d);   /* (a mesh scene's firmware: 0, static) */
 #endif
+#ifndef R8_NO_PORTAL
+    run->scene.world = (const r8_world *)R8_RDPTR(&d->world);
+#endif   /* (else never read: the analyser and renderer ignore it) */
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
@@ -141,6 +148,14 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
         zn = R8_RDS16(&d->znear);
     if (zf <= zn)
         zf = zn + 1;
+#ifndef R8_NO_PORTAL
+    if (run->scene.world) {
+        /* the camera walks through the world: anything within its
+         * diameter may be in view */
+        zn = R8_RDS16(&d->znear);
+        zf = 2L * run->scene.world->mesh->radius;
+    }
+#endif
     run->cam.znear = (r8_s16)zn;
     run->cam.zfar = (r8_s16)zf;
     r8_demo_pose(run, 0);
@@ -163,4 +178,21 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
         p->ay = (r8_u8)(R8_RDU8(&o->ay) + (r8_u8)(R8_RDS8(&o->sy) * f));
         p->az = (r8_u8)(R8_RDU8(&o->az) + (r8_u8)(R8_RDS8(&o->sz) * f));
     }
+#ifndef R8_NO_PORTAL
+    n = R8_RDU8(&d->npath);
+    if (n > 1) {
+        /* the walk: point k to point k + 1 in R8_PATH_STEPS frames (the
+         * last back to the first); yaw the short way round */
+        const r8_s16 *pa = (const r8_s16 *)R8_RDPTR(&d->path);
+        r8_u16 seg = (r8_u16)((frame / R8_PATH_STEPS) % n);
+        r8_s16 t = (r8_s16)(frame % R8_PATH_STEPS), dy;
+        const r8_s16 *a = pa + 4u * seg, *b = pa + 4u * (seg + 1u < n ? seg + 1u : 0u);
+        r8_camera *c = &run->cam;
+        c->x = (r8_s16)(R8_RDS16(a) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b) - R8_RDS16(a)), t), 4));
+        c->y = (r8_s16)(R8_RDS16(a + 1) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b + 1) - R8_RDS16(a + 1)), t), 4));
+        c->z = (r8_s16)(R8_RDS16(a + 2) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b + 2) - R8_RDS16(a + 2)), t), 4));
+        dy = (r8_s16)(((R8_RDS16(b + 3) - R8_RDS16(a + 3) + 128) & 255) - 128);
+        c->yaw = (r8_u8)(R8_RDS16(a + 3) + R8_ASR32C(r8_mul16(dy, t), 4));
+    }
+#endif
 }

@@ -14,6 +14,7 @@
 #define R8_DEMO_H
 
 #include "r8render.h"
+#include "r8portal.h"
 #include "r8flash.h"
 
 /* One object of a demo scene: a mesh, its place, its start angles and
@@ -35,9 +36,23 @@ typedef struct r8_demo {
     r8_s16 znear;              /* near plane */
     r8_s16 ambient;            /* Q1.14 */
     r8_vec3 light;             /* unit vector towards the light, Q1.14 */
+#ifndef R8_NO_PORTAL
+    const r8_world *world;     /* sectors and portals (0: none) */
+    const r8_s16 *path;        /* R8_FLASH: camera x, y, z, yaw per point */
+    r8_u8 npath;               /* the camera walks the path, R8_PATH_STEPS
+                                  frames from each point to the next */
+#endif
 } r8_demo;
 /* (A grid scene, R8_DEMO_MAZE, has no objects: r8_demo_setup puts its
  * grid map, r8ray.h, in the run's scene.) */
+#define R8_PATH_STEPS 16
+/* The world fields of a scene's initialiser (generated scenes/\*.c): left
+ * out with the portal renderer, so no other firmware's flash grows. */
+#ifndef R8_NO_PORTAL
+#define R8_DEMO_WORLD(w, p, n) , w, p, n
+#else
+#define R8_DEMO_WORLD(w, p, n)
+#endif
 
 /* The built-in scenes, in this order. */
 #define R8_DEMO_CUBE 0        /* the rotating cube (one convex mesh) */
@@ -50,7 +65,9 @@ typedef struct r8_demo {
 #define R8_DEMO_CRATE 7       /* a textured crate (R8_SHADE_TEXTURE) */
 #define R8_DEMO_MAZE 8        /* a grid maze for the ray caster (R8_VIS_RAY);
                                  the spin turns the camera in place */
-#define R8_DEMO_COUNT 9
+#define R8_DEMO_ROOMS 9       /* nine rooms joined by doors: the portal
+                                 renderer's world; the camera walks a path */
+#define R8_DEMO_COUNT 10
 #ifndef R8_DEMO_MAXOBJ
 #define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
                                  scene may set its own count) */

@@ -54,4 +54,4 @@ static const r8_demo_obj separate_objects[4] R8_FLASH = {
     {&separate_bar, -30, 30, 420, 0, 0, 0, 1, 0, 2},
 };
 static const char separate_name[] R8_FLASH = "separate";
-const r8_demo r8_demo_separate R8_FLASH = {separate_name, separate_objects, 4, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_separate R8_FLASH = {separate_name, separate_objects, 4, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

@@ -369,4 +369,4 @@ static const r8_demo_obj teapot_objects[1] R8_FLASH = {
     {&teapot_teapot, 0, 0, 190, 20, 0, 0, 0, 3, 0},
 };
 static const char teapot_name[] R8_FLASH = "teapot";
-const r8_demo r8_demo_teapot R8_FLASH = {teapot_name, teapot_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_teapot R8_FLASH = {teapot_name, teapot_objects, 1, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

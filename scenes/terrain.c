@@ -351,4 +351,4 @@ static const r8_demo_obj terrain_objects[1] R8_FLASH = {
     {&terrain_terrain, 0, 10, 210, 28, 0, 0, 0, 2, 0},
 };
 static const char terrain_name[] R8_FLASH = "terrain";
-const r8_demo r8_demo_terrain R8_FLASH = {terrain_name, terrain_objects, 1, 44, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_terrain R8_FLASH = {terrain_name, terrain_objects, 1, 44, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

@@ -312,4 +312,4 @@ static const r8_demo_obj torus_objects[1] R8_FLASH = {
     {&torus_torus, 0, 0, 170, 40, 0, 0, 2, 3, 1},
 };
 static const char torus_name[] R8_FLASH = "torus";
-const r8_demo r8_demo_torus R8_FLASH = {torus_name, torus_objects, 1, 50, 16, 3277, {-9459, -9459, -9459}};
+const r8_demo r8_demo_torus R8_FLASH = {torus_name, torus_objects, 1, 50, 16, 3277, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

@@ -44,4 +44,4 @@ static const r8_demo_obj wall_objects[2] R8_FLASH = {
     {&wall_pillar, -30, 0, 420, 0, 0, 0, 0, 1, 0},
 };
 static const char wall_name[] R8_FLASH = "wall";
-const r8_demo r8_demo_wall R8_FLASH = {wall_name, wall_objects, 2, 40, 16, 4096, {-9459, -9459, -9459}};
+const r8_demo r8_demo_wall R8_FLASH = {wall_name, wall_objects, 2, 40, 16, 4096, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};

@@ -249,6 +249,12 @@ int r8_analyse(r8_render_cfg *cfg, const r8_camera *cam, const r8_bound *bound,
         exact_method = R8_VIS_Z16;
         a->why = R8_WHY_OVERLAP;
     }
+#ifndef R8_NO_PORTAL
+    if (sc->world) {
+        exact_method = R8_VIS_PORTAL;   /* sectors and portals: no depth memory */
+        a->why = R8_WHY_PORTALS;
+    }
+#endif
     if (cfg->method != R8_VIS_AUTO) {
         a->why = R8_WHY_USER;
     } else {

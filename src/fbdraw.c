@@ -118,12 +118,17 @@ void r8_fb_span(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1, r8_u8 c)
     }
 }
 
+#ifdef R8_COUNT_PX
+r8_u32 r8_px_written;
+#endif
+
 void r8_fb_span_dither(r8_fb *fb, r8_s16 y, r8_s16 x0, r8_s16 x1,
                        r8_u8 s, r8_u8 base)
 {
     r8_u8 pat;
     if (!clip_span(fb, y, &x0, &x1))
         return;
+    R8_COUNT_PX_ADD(x1 - x0);
     pat = r8_fb_dither_row(s, y);
     y = (r8_s16)(y - fb->y0);
     switch (fb->format) {

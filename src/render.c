@@ -25,6 +25,7 @@
 #include <string.h>
 #include "r8int.h"
 #include "r8ray.h"
+#include "r8portal.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
  * built when every method and shading that needs depth or shade along
@@ -81,6 +82,10 @@ const char *r8_method_name(r8_u8 method)
     if (method == R8_VIS_RAY)
         return "ray";
 #endif
+#ifndef R8_NO_PORTAL
+    if (method == R8_VIS_PORTAL)
+        return "portal";
+#endif
     return method < R8_VIS_COUNT ? method_names[method] : 0;
 }
 
@@ -92,6 +97,10 @@ int r8_method_by_name(const char *name)
 #ifndef R8_NO_RAY
     if (streq(name, "ray"))
         return R8_VIS_RAY;
+#endif
+#ifndef R8_NO_PORTAL
+    if (streq(name, "portal"))
+        return R8_VIS_PORTAL;
 #endif
     for (i = 0; i < R8_VIS_COUNT; i++)
         if (streq(name, method_names[i]))
@@ -376,6 +385,9 @@ unsigned r8_render_ram(const r8_render_cfg *cfg)
 #ifndef R8_NO_RAY
     if (cfg->method == R8_VIS_RAY) return r8_ray_ram(cfg);
 #endif
+#ifndef R8_NO_PORTAL
+    if (cfg->method == R8_VIS_PORTAL) return r8_portal_ram(cfg);
+#endif
     if (!cfg_valid(cfg))
         return 0;
     make_plan(cfg, &pl);
@@ -455,6 +467,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
 #ifndef R8_NO_RAY
     if (cfg->method == R8_VIS_RAY) return r8_ray_init(r, cfg, work, work_size);
+#endif
+#ifndef R8_NO_PORTAL
+    if (cfg->method == R8_VIS_PORTAL) return r8_portal_init(r, cfg, work, work_size);
 #endif
     if (!cfg_valid(cfg))
         return -1;
@@ -808,22 +823,19 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
-#ifndef R8_NO_RAY
     const r8_scene *sc;
     int painter;
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
+#ifndef R8_NO_RAY
     if (r->cfg.method == R8_VIS_RAY) { r8_ray_frame(r, cam); return; }
+#endif
+#ifndef R8_NO_PORTAL
+    if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
+#endif
     sc = st->scene;
     painter = R8_PAINTER(st->method);
-#else
-    const r8_scene *sc = st->scene;
-    int painter = R8_PAINTER(st->method);
-    r8_u16 k;
-    r8_u8 i;
-    r8_fid cur;
-#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -1052,12 +1064,12 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
     r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
-#ifndef R8_NO_RAY
     r8_fid head, *link = &head, g;
+#ifndef R8_NO_RAY
     if (r->cfg.method == R8_VIS_RAY) { r8_ray_band(r, fb); return; }
-    head = (r8_fid)st->first;
-#else
-    r8_fid head = (r8_fid)st->first, *link = &head, g;
+#endif
+#ifndef R8_NO_PORTAL
+    if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_band(r, fb); return; }
 #endif
 #ifndef R8_NO_WIRE
     if (r->cfg.wire) {
@@ -1065,6 +1077,7 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         return;
     }
 #endif
+    head = (r8_fid)st->first;
     if (y1 > fb->height)
         y1 = fb->height;
     r8_fb_clear(fb, 0);

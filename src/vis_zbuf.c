@@ -45,6 +45,7 @@ static void pixw_init(pixw *w, r8_fb *fb, r8_s16 y)
 
 static void pixw_put(const pixw *w, r8_s16 x, r8_u8 level)
 {
+    R8_COUNT_PX_ADD(1);
     if (w->row) {
         if (level > R8_RDU8(&w->thr[x & 3]))
             w->row[x] |= w->m;

@@ -55,11 +55,12 @@ int main(int argc, char **argv)
                    "on the host (PGM picture or raw bytes).\n"
                    "scenes:");
             for (k = 0; k < R8_DEMO_COUNT; k++)
-                if (r8_demo_name((r8_u8)k))
+                if (r8_demo_get((r8_u8)k))
                     printf(" %s", r8_demo_name((r8_u8)k));
             printf("\nmethods: auto (the analyser picks)");
             for (k = 0; k < R8_VIS_COUNT; k++)
                 printf(" %s", r8_method_name((r8_u8)k));
+            printf(" portal");
             printf("\n");
             return 0;
         }

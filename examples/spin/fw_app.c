@@ -34,6 +34,19 @@
 
 static app_cfg cfg;
 
+/* A world of sectors (the rooms) needs the clipper: the floor and
+ * ceiling round the camera cross the near plane. */
+static void world_clip(app_cfg *c)
+{
+#ifndef R8_NO_PORTAL
+    const r8_demo *d = r8_demo_get(c->scene);
+    if (d && R8_RDPTR(&d->world))
+        c->render.clip = R8_PORTAL_CLIP;
+#else
+    (void)c;
+#endif
+}
+
 #ifdef FW_HOST
 #include <stdlib.h>
 static r8_u8 mem[1L << 20];
@@ -49,6 +62,7 @@ int main(int argc, char **argv)
     cfg.frames = (r8_u16)(argc > 3 ? atoi(argv[3]) : FW_FRAMES);
     cfg.render.shading = (r8_u8)(argc > 4 ? atoi(argv[4]) : FW_SHADING);
     cfg.render.wire = (r8_u8)(argc > 5 ? atoi(argv[5]) : 0);
+    world_clip(&cfg);
     need = app_ram(&cfg);
     if (need == 0 || need > sizeof mem)
         plat_exit(APP_E_CFG);
@@ -83,6 +97,7 @@ int main(void)
 #ifdef FW_WIRE
     cfg.render.wire = FW_WIRE;
 #endif
+    world_clip(&cfg);
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;
 }

@@ -186,6 +186,12 @@ def cmd_scene(args):
                     n, len(m.verts), len(m.faces), "convex" if m.convex else "not convex",
                     m.radius()))
             print("%d objects" % len(sc.objects))
+            if sc.world is not None:
+                w = sc.world
+                walls, portals = w.faces()
+                print("world %s: %d sectors, %d walls, %d portals, camera path of %d points "
+                      "(%d frames)" % (w.name, len(w.sectors), len(walls), len(portals),
+                                       len(w.path), len(S.sectors.frames(w))))
         elif args.scene_cmd == "texture":
             from . import texture as T
             try:

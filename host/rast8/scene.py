@@ -15,10 +15,11 @@ import sys
 from dataclasses import dataclass, field
 
 from .concave import split_mesh
+from . import sectors
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE_DIR = os.path.join(HERE, "scenes")
-BUILTIN_ORDER = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate"]
+BUILTIN_ORDER = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "rooms"]
 
 
 class SceneError(Exception):
@@ -62,6 +63,7 @@ class Scene:
     ambient: float = 0.2
     bsp: bool = False        # merge rigid groups, split faces for BSP trees
     textures: dict = field(default_factory=dict)   # name -> texture.Texture
+    world: object = None    # sectors.World (portal renderer), or None
 
 
 def _int(tok, path, ln, lo=-32768, hi=32767, what="value"):
@@ -105,6 +107,10 @@ def parse_r8s(text, path="<scene>"):
     """Parse the text scene format; raises SceneError naming file and line."""
     sc = None
     mesh = None
+    try:   # a world block and camera path (rast8/sectors.py)
+        text, world = sectors.extract(text, path)
+    except sectors.WorldError as e:
+        raise SceneError(e.path, e.line, e.msg) from None
     for ln, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip()
         if not line:
@@ -214,6 +220,12 @@ def parse_r8s(text, path="<scene>"):
         raise SceneError(path, len(text.splitlines()), f"mesh '{mesh.name}' not closed with 'end'")
     if sc is None:
         raise SceneError(path, 1, "no 'scene NAME' line")
+    if world is not None:
+        if world.name in sc.meshes:
+            raise SceneError(path, 1, f"world '{world.name}' has the name of a mesh")
+        sc.world = world
+        sc.meshes[world.name] = sectors.to_mesh(world)
+        sc.objects.insert(0, Obj(world.name, (0, 0, 0)))   # its walls, for the other methods
     if not sc.objects:
         raise SceneError(path, len(text.splitlines()), "scene has no objects")
     if len(sc.objects) > 255:
@@ -695,8 +707,13 @@ def to_c_scene(sc):
             out.append("};")
             out.append("#endif")
             tail = f", R8_MESH_BSP({cid}_bsp)"
-        out.append(f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
-                   f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tail}{tex}}};")
+        mesh = (f"static const r8_mesh {cid} = {{{cid}_v, {cid}_f, {cid}_n, {len(m.verts)}, "
+                f"{len(m.faces)}, {1 if m.convex else 0}, {m.radius()}{tail}{tex}}};")
+        if sc.world is not None and mname == sc.world.name:
+            lines, mids[mname] = sectors.c_world(sc.world, sid, cid)
+            out += [lines[0], "#ifndef R8_NO_PORTAL", mesh] + lines[1:] + ["#endif"]
+        else:
+            out.append(mesh)
     out.append(f"static const r8_demo_obj {sid}_objects[{len(sc.objects)}] R8_FLASH = {{")
     for o in sc.objects:
         out.append(f"    {{&{mids[o.mesh]}, {o.pos[0]}, {o.pos[1]}, {o.pos[2]}, "
@@ -704,8 +721,11 @@ def to_c_scene(sc):
     out.append("};")
     lx, ly, lz = _light_q14(sc.light)
     out.append(f'static const char {sid}_name[] R8_FLASH = "{sc.name}";')
+    world = " R8_DEMO_WORLD(0, 0, 0)"
+    if sc.world is not None:
+        world = f" R8_DEMO_WORLD(&{sid}_world, {sid}_path, {len(sc.world.path)})"
     out.append(f"const r8_demo r8_demo_{sid} R8_FLASH = {{{sid}_name, {sid}_objects, {len(sc.objects)}, "
-               f"{sc.focal}, {sc.near}, {_q14(sc.ambient)}, {{{lx}, {ly}, {lz}}}}};")
+               f"{sc.focal}, {sc.near}, {_q14(sc.ambient)}, {{{lx}, {ly}, {lz}}}{world}}};")
     return "\n".join(out) + "\n"
 
 

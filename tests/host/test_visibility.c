@@ -36,6 +36,14 @@ static void use_scene(r8_render_cfg *c, r8_u8 s)
     c->scene = &run.scene;
 }
 
+/* A built-in scene of meshes only (ids not in this build are 0; a world
+ * of sectors has its own test: test_portal.c). */
+static int mesh_demo(r8_u8 s)
+{
+    const r8_demo *d = r8_demo_get(s);
+    return d && !d->world;
+}
+
 void setUp(void) {}
 void tearDown(void) {}
 

@@ -11,7 +11,8 @@ from rast8.protocol import StreamDecoder, read_dump
 
 EXPECT = {"cube": "cull", "torus": "zbuf16", "teapot": "zbuf16", "terrain": "zbuf16",
           "wall": "zbuf16", "cross": "zbuf16", "separate": "painter",
-          "crate": "cull", "maze": "ray"}
+          "crate": "cull", "maze": "ray",
+          "rooms": "portal"}
 
 
 @pytest.mark.parametrize("scene", sorted(EXPECT))

@@ -8,6 +8,9 @@
 #if defined(FW_SCENE) && FW_SCENE != 7 && !defined(R8_NO_TEXTURE)
 #define R8_NO_TEXTURE   /* as the firmware of that scene (ports/fwdefs.sh) */
 #endif
+#if defined(FW_SCENE) && FW_SCENE != 9
+#define R8_NO_PORTAL   /* a mesh scene: as its table (ports/scene_strip.py) */
+#endif
 #include "plat.h"
 #include "r8render.h"
 #ifdef FW_HAVE_APP
@@ -44,13 +47,24 @@ int main(void)
 #else
     for (s = 0; s < R8_DEMO_COUNT; s++)
 #endif
-        for (m = 0; m <= R8_VIS_COUNT; m++) {
-            if (m == R8_VIS_COUNT) {
-                /* then the ray caster, for a grid scene (the maze) */
-                if (s != R8_DEMO_MAZE)
-                    break;
-                m = R8_VIS_RAY;
-            }
+        for (m = 0; m <= R8_VIS_RAY; m++) {
+            const r8_demo *d = r8_demo_get(s);
+            /* a world of sectors: the portal renderer (and painter's and
+             * zbuf16 on its walls, for make bench); a grid (the maze): the
+             * ray caster; else the mesh methods */
+            if (!d)
+                continue;
+#ifndef R8_NO_PORTAL
+            if (R8_RDPTR(&d->world)) {
+                if (m != R8_VIS_PORTAL && m != R8_VIS_PAINTER && m != R8_VIS_Z16)
+                    continue;
+            } else
+#endif
+            if (s == R8_DEMO_MAZE) {
+                if (m != R8_VIS_RAY)
+                    continue;
+            } else if (m >= R8_VIS_COUNT)
+                continue;
             put_u(s);
             plat_putc(' ');
             put_u(m);
@@ -68,6 +82,10 @@ int main(void)
                 acfg.render.shading = R8_SHADE_TEXTURE;
 #endif
             acfg.scene = s;
+#ifndef R8_NO_PORTAL
+            if (R8_RDPTR(&d->world))
+                acfg.render.clip = R8_PORTAL_CLIP;   /* as fw_app.c */
+#endif
             acfg.render.method = m;
             put_u(app_ram(&acfg));
 #else
