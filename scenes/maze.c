@@ -30,4 +30,4 @@ const r8_grid r8_grid_maze = { maze_cells, 16, 16, 6, 1, 1, 0 };
 
 static const char maze_name[] R8_FLASH = "maze";
 /* no objects; focal = width (53 degrees across), ambient and light unused */
-const r8_demo r8_demo_maze R8_FLASH = {maze_name, 0, 0, 64, 4, 0, {0, 0, 0}};
+const r8_demo r8_demo_maze R8_FLASH = {maze_name, 0, 0, 64, 4, 0, {0, 0, 0} R8_DEMO_WORLD(0, 0, 0)};

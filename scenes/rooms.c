@@ -467,7 +467,7 @@ static const r8_u8 rooms_rooms_bsp[1084] R8_FLASH = {
     255, 255, 255, 255, 13, 1, 255, 255, 255, 255, 255, 255,
 };
 #endif
-static const r8_mesh rooms_rooms_walls = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 250, 0, 909};
+static const r8_mesh rooms_rooms_walls = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 250, 0, 909, 0 R8_MESH_TEX(0, 0)};
 #ifndef R8_NO_PORTAL
 static const r8_mesh rooms_rooms = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, 270, 0, 909, R8_MESH_BSP(rooms_rooms_bsp) R8_MESH_TEX(0, 0)};
 static const r8_sector rooms_sectors[9] R8_FLASH = {

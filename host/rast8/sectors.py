@@ -277,7 +277,7 @@ def c_world(w, sid, mid):
     rows, targets = w.table()
     m = to_mesh(w)
     out = [f"static const r8_mesh {mid}_walls = {{{mid}_v, {mid}_f, {mid}_n, {len(w.verts)}, "
-           f"{len(walls)}, 0, {m.radius()}}};",
+           f"{len(walls)}, 0, {m.radius()}, 0 R8_MESH_TEX(0, 0)}};",
            f"static const r8_sector {sid}_sectors[{len(rows)}] R8_FLASH = {{"]
     out += [f"    {{{a}, {b}, {c}, {d}}}," for a, b, c, d in rows]
     out.append("};")

@@ -21,8 +21,8 @@ static void test_names(void)
     TEST_ASSERT_EQUAL_INT(R8_VIS_RAY, r8_method_by_name("ray"));
     TEST_ASSERT_TRUE(R8_VIS_RAY >= R8_VIS_COUNT);
     TEST_ASSERT_EQUAL_INT(R8_DEMO_MAZE, r8_demo_by_name("maze"));
-    TEST_ASSERT_TRUE(r8_demo_get(7) == 0);
-    TEST_ASSERT_TRUE(r8_demo_name(7) == 0);
+    TEST_ASSERT_TRUE(r8_demo_get(R8_DEMO_COUNT) == 0);
+    TEST_ASSERT_TRUE(r8_demo_name(R8_DEMO_COUNT) == 0);
 }
 
 static void test_maze_demo_is_a_grid_scene(void)

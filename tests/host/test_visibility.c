@@ -23,12 +23,6 @@ static r8_u8 ref[W * H], img[W * H], bandbuf[W * H];
 static int measure;
 static r8_demo_run run;
 
-/* A built-in scene of meshes (not a missing id or a grid scene). */
-static int mesh_demo(r8_u8 s)
-{
-    return r8_demo_get(s) && r8_demo_get(s)->nobjects > 0;
-}
-
 /* The built-in scene s set up (frame 0) for cfg c. */
 static void use_scene(r8_render_cfg *c, r8_u8 s)
 {
@@ -36,12 +30,13 @@ static void use_scene(r8_render_cfg *c, r8_u8 s)
     c->scene = &run.scene;
 }
 
-/* A built-in scene of meshes only (ids not in this build are 0; a world
- * of sectors has its own test: test_portal.c). */
+/* A built-in scene of meshes only (ids not in this build are 0; a grid
+ * scene has no objects; a world of sectors has its own test:
+ * test_portal.c). */
 static int mesh_demo(r8_u8 s)
 {
     const r8_demo *d = r8_demo_get(s);
-    return d && !d->world;
+    return d && d->nobjects > 0 && !d->world;
 }
 
 void setUp(void) {}
