@@ -13,7 +13,9 @@
  * program's own code (arbitrary words).  For r8k_edge the return value
  * and all of *it (left as it was on R8_EDGE_WIDE); for r8k_project the
  * return value, out[0..2] (left as they were on 1; out[2] always), *m,
- * *e, and c, p untouched.  Inputs come from classes aimed at each path
+ * *e, and c, p untouched.  For r8k_fill the window around p (guard
+ * bytes included), over lengths 0..700 that hit every remainder mod 16.
+ * Inputs come from classes aimed at each path
  * and limit of the reference; the test counts how often each was hit
  * and fails when one was too rare to mean anything. */
 #include <string.h>
@@ -26,7 +28,9 @@ void r8k_trap_ref(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
+void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #define r8k_trap r8k_trap_ref
+#define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
 #define r8k_edge r8k_edge_ref
 #define r8k_project r8k_project_ref
@@ -35,6 +39,7 @@ int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m,
 #undef r8k_xform
 #undef r8k_edge
 #undef r8k_project
+#undef r8k_fill
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -544,6 +549,43 @@ static void test_project_random(void)
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_limneg);
 }
 
+/* ---- r8k_fill: lengths 0..700 at random offsets in band_asm/band_ref
+ * (kern_trap.h's windows), the bytes around them kept ---- */
+static void test_fill_random(void)
+{
+    unsigned long i;
+    unsigned rem[16];
+    memset(rem, 0, sizeof rem);
+    for (i = 0; i < 3000; i++) {
+        unsigned c = rndn(4), n, off, j, len;
+        r8_u8 b, v = (r8_u8)(rndn(3) == 0 ? 0 : rnd());
+        if (c == 0)
+            n = rndn(40);
+        else if (c == 1)
+            n = 16u * rndn(45) + rndn(2);
+        else
+            n = rndn(701);
+        off = GUARD + rndn(256);
+        len = off + n + GUARD;
+        b = (r8_u8)rnd();
+        for (j = 0; j < len; j++) {     /* an odd step: every value */
+            b = (r8_u8)(b + 151u);
+            band_ref[j] = b;
+        }
+        memcpy(band_asm, band_ref, len);
+        r8k_fill_ref(band_ref + off, v, n);
+        r8k_fill(band_asm + off, v, n);
+        rem[n & 15]++;
+        if (memcmp(band_asm, band_ref, len) != 0) {
+            print_case("r8k_fill", i);
+            unity_fail_int(__LINE__, "r8k_fill differs from the reference", (long)n, (long)off);
+        }
+    }
+    for (i = 0; i < 16; i++)
+        if (rem[i] < 20)
+            unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 20, (long)rem[i]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -552,5 +594,6 @@ int main(void)
     RUN_TEST(test_xform_random);
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
+    RUN_TEST(test_fill_random);
     return UNITY_END();
 }
