@@ -83,6 +83,94 @@ static void print_case(const char *what, unsigned long i)
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
 
+/* ---- r8k_trap's page groups (trap.S: 4+ rows of one page byte, a
+ * one-bit m, |val| < 16384, -128 <= q <= 127, spans of 16+ columns get
+ * one write per byte for the columns all rows cover): inputs aimed at
+ * that path and at its limits (q = -128 / 127, val = +-16383 / 16384,
+ * the interior just 16 columns or none, full and partial pages) ---- */
+static r8_s16 rnd_edge_val(r8_s16 w)
+{
+    static const r8_s16 lim[6] = { -16385, -16384, -16383, 16382, 16383, 16384 };
+    unsigned c = rndn(10);
+    if (c < 6)
+        return rnds(-20, (r8_s16)(w + 20));
+    if (c < 8)
+        return lim[rndn(6)];
+    return rnds(-16400, 16400);
+}
+
+static r8_s16 rnd_edge_q(void)
+{
+    static const r8_s16 lim[6] = { -129, -128, -127, 126, 127, 128 };
+    unsigned c = rndn(10);
+    if (c < 6)
+        return rnds(-6, 6);
+    if (c < 8)
+        return lim[rndn(6)];
+    return rnds(-130, 130);
+}
+
+static void test_trap_groups(void)
+{
+    unsigned long i, sets = 0, clears = 0, diths = 0, full = 0;
+    for (i = 0; i < 2500; i++) {
+        r8_trapfill ta, tr;
+        r8_interp la, lr_, ra, rr_;
+        r8_s16 w = (r8_s16)(rndn(4) == 0 ? 1 + rndn(600) : 16 + rndn(145));
+        r8_u16 rows = (r8_u16)(rndn(4) == 0 ? 1u + rndn(30) : 4u + rndn(5));
+        unsigned pages = (rows + 15u) / 8u + 1u, off = rndn(256), len, k, bit = rndn(8);
+        r8_u8 *wa = band_asm + off, *wr = band_ref + off, b = (r8_u8)rnd();
+        if (rndn(3) == 0)
+            bit = 0;                    /* a whole page byte */
+        len = GUARD + pages * (unsigned)w + GUARD;
+        for (k = 0; k < len; k++) {
+            b = (r8_u8)(b + 151u);
+            wa[k] = b;
+        }
+        memcpy(wr, wa, len);
+        ta.page = wa + GUARD;
+        ta.m = (r8_u8)(1u << bit);
+        ta.k = (r8_u8)rndn(4);
+        k = rndn(4);
+        for (bit = 0; bit < 4; bit++) {
+            if (k == 0)
+                ta.pat[bit] = 0xFF;
+            else if (k == 1)
+                ta.pat[bit] = 0x00;
+            else
+                ta.pat[bit] = (r8_u8)rnd();
+        }
+        sets += k == 0;
+        clears += k == 1;
+        diths += k > 1;
+        full += ta.m == 1 && rows >= 8;
+        ta.w = w;
+        rnd_interp(&la, w);
+        rnd_interp(&ra, w);
+        la.val = rnd_edge_val(w);
+        la.q = rnd_edge_q();
+        ra.q = rnd_edge_q();
+        if (rndn(4) == 0)
+            ra.val = rnd_edge_val(w);
+        else                            /* 10..40 columns right of l */
+            ra.val = (r8_s16)(la.val + rnds(10, 40));
+        tr = ta;
+        tr.page = wr + GUARD;
+        lr_ = la;
+        rr_ = ra;
+        r8k_trap_ref(&tr, &lr_, &rr_, rows);
+        r8k_trap(&ta, &la, &ra, rows);
+        if (memcmp(wa - off, wr - off, off + len) != 0 || ta.page - wa != tr.page - wr ||
+            ta.m != tr.m || ta.k != tr.k || memcmp(&la, &lr_, sizeof la) != 0 ||
+            memcmp(&ra, &rr_, sizeof ra) != 0) {
+            print_case("r8k_trap page groups", i);
+            unity_fail_int(__LINE__, "r8k_trap differs from the reference", 0, 1);
+        }
+    }
+    if (sets < 300 || clears < 300 || diths < 800 || full < 200)
+        unity_fail_int(__LINE__, "r8k_trap page groups: a class too rare", 300, (long)full);
+}
+
 /* ---- r8k_xform ---- */
 
 static const r8_s16 vt_ext[96] R8_FLASH = {
@@ -591,6 +679,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_trap_random);
     RUN_TEST(test_trap_many_rows);
+    RUN_TEST(test_trap_groups);
     RUN_TEST(test_xform_random);
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
