@@ -230,26 +230,7 @@ row:
     rjmp  lneg
 2:  cp    r26, r30
     cpc   r27, r31
-    brge  step
-    brtc  span              /* (T clear: back to step) */
-grow:                       /* a row of a group with an interior [A, B): */
-    lds   r0, r8k_trap_ab   /* its pieces [xl, A) and [B, xr) */
-    lds   r1, r8k_trap_ab+1
-    cp    r26, r0
-    cpc   r27, r1
-    brge  7f                /* xl = A: no left piece */
-    push  r30
-    push  r31
-    movw  r30, r0
-    rcall span
-    pop   r31
-    pop   r30
-7:  lds   r26, r8k_trap_ab+2
-    lds   r27, r8k_trap_ab+3
-    cp    r26, r30
-    cpc   r27, r31
-    brge  step
-    rcall span
+    brlt  span              /* (T clear: back to step) */
 step:
     STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
@@ -353,6 +334,71 @@ c3: CCLR
     rjmp  step
 1:  ret
 
+/* A group's last row (grp): the closed form needs den < 0x2000, err <
+ * den and r < den (then err + n r < 0x10000 and no step wraps);
+ * otherwise no group (gbail). */
+.macro GUARD el, eh, rl, rh, dl, dh
+    mov   r24, \dh
+    cpi   r24, 0x20
+    brsh  74f
+    cp    \el, \dl
+    cpc   \eh, \dh
+    brsh  74f
+    cp    \rl, \dl
+    cpc   \rh, \dh
+    brlo  75f
+74: rjmp  gbail
+75:
+.endm
+
+/* val (in vl:vh) after n = K steps: + n q + floor((err + n r) / den),
+ * the quotient 0..n <= 7 in three restoring steps; up: q in 0..127 (q
+ * from ~q = nql), else q in -128..-1.  r25:r24, r1:r0 scratch. */
+.macro LAST vl, vh, el, eh, nql, rl, rh, dl, dh, up
+    mul   \rl, K
+    movw  r24, r0
+    mul   \rh, K
+    add   r25, r0
+    add   r24, \el
+    adc   r25, \eh          /* x = err + n r */
+    mov   r1, \nql
+.if \up
+    com   r1                /* q */
+    mul   r1, K
+    add   \vl, r0
+    adc   \vh, r1
+.else
+    inc   r1                /* -q */
+    mul   r1, K
+    sub   \vl, r0
+    sbc   \vh, r1
+.endif
+    movw  r0, \dl           /* 4 den */
+    lsl   r0
+    rol   r1
+    lsl   r0
+    rol   r1
+    cp    r24, r0
+    cpc   r25, r1
+    brlo  71f
+    sub   r24, r0
+    sbc   r25, r1
+    adiw  \vl, 4
+71: lsr   r1
+    ror   r0
+    cp    r24, r0
+    cpc   r25, r1
+    brlo  72f
+    sub   r24, r0
+    sbc   r25, r1
+    adiw  \vl, 2
+72: cp    r24, \dl
+    cpc   r25, \dh
+    brlo  73f
+    adiw  \vl, 1
+73:
+.endm
+
 /* A page group: the rows from bit M of this page byte to bit 7 (or to
  * the last row), g of them.  When g >= GMIN, M is one bit, both edges
  * are tame (|val| < 16384, -128 <= q <= 127: no 16-bit wrap in g rows)
@@ -362,18 +408,60 @@ c3: CCLR
  * and the rows then fill only [xl, A) and [B, xr) (T set).  A DDA moves
  * by q or q + 1 a row, so it is monotone: A = max(first, last row's
  * left end, 0) and B = min(first, last row's right end, w), the last
- * row's from copies of the edges stepped g - 1 times.  Otherwise (T
+ * row's in closed form (val + (g - 1) q + the carries of err).  Otherwise (T
  * clear) rows fill their whole spans as before.  Column x of the
  * interior gets bit b from pattern row (K0 + b) & 3 (K0 the phase of
  * bit 0; 8 rows are two dither periods), bit 3 - (x & 3).  GMIN and
  * IMIN: the cube / torus / teapot figures (docs/benchmarks.md); smaller
  * groups and narrower spans lose more in set-up than they save. */
 #ifndef GMIN
-#define GMIN 4
+#define GMIN 7
 #endif
 #ifndef IMIN
 #define IMIN 16
 #endif
+/* a row of a group with an interior [A, B) (T set): its pieces [xl, A)
+ * and [B, xr) (xl <= A < B <= xr) */
+growr:
+    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    ldd   r31, Y+9
+    cp    RVL, r30
+    cpc   RVH, r31
+    brge  1f
+    movw  r30, RVL
+1:  movw  r26, LVL          /* X = max(l->val, 0) */
+    sbrc  LVH, 7
+    clr   r26
+    sbrc  LVH, 7
+    clr   r27
+    lds   r0, r8k_trap_ab
+    lds   r1, r8k_trap_ab+1
+    cp    r26, r0
+    cpc   r27, r1
+    brge  7f                /* xl = A: no left piece */
+    push  r30
+    push  r31
+    movw  r30, r0
+    rcall span
+    pop   r31
+    pop   r30
+7:  lds   r26, r8k_trap_ab+2
+    lds   r27, r8k_trap_ab+3
+    cp    r26, r30
+    cpc   r27, r31
+    brge  8f
+    rcall span
+8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    brne  9f
+    rjmp  wrap
+9:  dec   ROWS
+    brne  growr
+    rjmp  fin
+
 nogrp:
     clt                     /* the rows: whole spans */
     rjmp  row
@@ -420,41 +508,33 @@ grp:
     sbc   r30, r30
     cp    r30, RNQH
     brne  nogrp
-    push  K                 /* the last row's edges, stepped in copies */
-    push  ROWS
+    push  K                 /* the last row's left end when q >= 0, */
+    push  ROWS              /* right end when q < 0: in closed form */
+    push  M
     mov   K, T0
-    dec   K                 /* g - 1 */
-    movw  r26, LVL
-    movw  r0, LEL
-    mov   ROWS, K
-1:  STEP  r26, r27, r0, r1, LNQL, LNQH, LRL, LRH, LDL, LDH
-    dec   ROWS
-    brne  1b
-    cp    r26, LVL          /* A = max(lv, last lv, 0) */
-    cpc   r27, LVH
-    brge  2f
-    movw  r26, LVL
+    dec   K                 /* n = g - 1 */
+    movw  r26, LVL          /* A = max(lv, last lv, 0) */
+    sbrs  LNQH, 7
+    rjmp  2f
+    GUARD LEL, LEH, LRL, LRH, LDL, LDH
+    LAST  r26, r27, LEL, LEH, LNQL, LRL, LRH, LDL, LDH, 1
 2:  sbrs  r27, 7
     rjmp  3f
     clr   r26
     clr   r27
-3:  movw  r30, RVL
-    movw  r0, REL
-    mov   ROWS, K
-4:  STEP  r30, r31, r0, r1, RNQL, RNQH, RRL, RRH, RDL, RDH
-    dec   ROWS
-    brne  4b
-    cp    RVL, r30          /* B = min(rv, last rv, w) */
-    cpc   RVH, r31
-    brge  5f
-    movw  r30, RVL
+3:  movw  r30, RVL          /* B = min(rv, last rv, w) */
+    sbrc  RNQH, 7
+    rjmp  5f
+    GUARD REL, REH, RRL, RRH, RDL, RDH
+    LAST  r30, r31, REL, REH, RNQL, RRL, RRH, RDL, RDH, 0
 5:  ldd   r0, Y+8
     ldd   r1, Y+9
     cp    r30, r0
     cpc   r31, r1
     brlt  6f
     movw  r30, r0
-6:  pop   ROWS
+6:  pop   M
+    pop   ROWS
     pop   K
     sub   r30, r26          /* B - A >= IMIN columns, else no interior */
     sbc   r31, r27
@@ -462,6 +542,11 @@ grp:
     sbiw  r30, IMIN
     brge  9f
 8:  rjmp  nogrp
+gbail:                      /* (an edge the closed form does not take) */
+    pop   M
+    pop   ROWS
+    pop   K
+    rjmp  nogrp
 9:  adiw  r30, IMIN
     add   r30, r26
     adc   r31, r27
@@ -585,7 +670,7 @@ idone:
     pop   r3
     pop   r2
     set                     /* the rows: their ragged ends */
-    rjmp  row
+    rjmp  growr
 
 fin:
     std   Y+2, M

@@ -83,8 +83,8 @@ static void print_case(const char *what, unsigned long i)
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
 
-/* ---- r8k_trap's page groups (trap.S: 4+ rows of one page byte, a
- * one-bit m, |val| < 16384, -128 <= q <= 127, spans of 16+ columns get
+/* ---- r8k_trap's page groups (trap.S: GMIN (7) or more rows of one
+ * page byte, a one-bit m, |val| < 16384, -128 <= q <= 127, spans of 16+ columns get
  * one write per byte for the columns all rows cover): inputs aimed at
  * that path and at its limits (q = -128 / 127, val = +-16383 / 16384,
  * the interior just 16 columns or none, full and partial pages) ---- */
@@ -117,11 +117,11 @@ static void test_trap_groups(void)
         r8_trapfill ta, tr;
         r8_interp la, lr_, ra, rr_;
         r8_s16 w = (r8_s16)(rndn(4) == 0 ? 1 + rndn(600) : 16 + rndn(145));
-        r8_u16 rows = (r8_u16)(rndn(4) == 0 ? 1u + rndn(30) : 4u + rndn(5));
+        r8_u16 rows = (r8_u16)(rndn(4) == 0 ? 1u + rndn(30) : 5u + rndn(4));
         unsigned pages = (rows + 15u) / 8u + 1u, off = rndn(256), len, k, bit = rndn(8);
         r8_u8 *wa = band_asm + off, *wr = band_ref + off, b = (r8_u8)rnd();
-        if (rndn(3) == 0)
-            bit = 0;                    /* a whole page byte */
+        if (rndn(3) != 0)
+            bit = rndn(2);              /* 7 or 8 rows of the page byte */
         len = GUARD + pages * (unsigned)w + GUARD;
         for (k = 0; k < len; k++) {
             b = (r8_u8)(b + 151u);
