@@ -9,6 +9,8 @@
  *   r8k_xform   a model vertex (flash) into camera space (R8_ASM_XFORM)
  *   r8k_project a camera-space point to screen coordinates (R8_ASM_PROJECT)
  *   r8k_edge    an edge's column DDA for its first row (R8_ASM_EDGE)
+ *   r8k_fill    n bytes set to one value: the band and depth clears
+ *               (R8_ASM_FILL)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -60,5 +62,8 @@ int r8k_project(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_
  * x beyond +-1024 px): the caller then sets it up in 32 bits (scan.c). */
 r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 #define R8_EDGE_WIDE (-32767 - 1)
+
+/* p[0..n-1] = v (memset; on AVR an unrolled store loop). */
+void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n);
 
 #endif

@@ -4,6 +4,14 @@
 #include "r8kern.h"
 #include "r8fb.h"
 #include "r8flash.h"
+#include <string.h>
+
+#ifndef R8_ASM_FILL
+void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n)
+{
+    memset(p, v, n);
+}
+#endif
 
 #ifndef R8_ASM_XFORM
 void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out)

@@ -26,6 +26,7 @@
 #include "r8int.h"
 #include "r8ray.h"
 #include "r8portal.h"
+#include "r8kern.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
  * built when every method and shading that needs depth or shade along
@@ -1080,10 +1081,14 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     head = (r8_fid)st->first;
     if (y1 > fb->height)
         y1 = fb->height;
-    r8_fb_clear(fb, 0);
+    /* the band and depth clears: r8k_fill (r8kern.h; AVR: fill.S) */
+    if (fb->format == R8_FMT_PAGE1)
+        r8k_fill(fb->buf, 0, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
+    else
+        r8k_fill(fb->buf, 0, r8_fb_bytes(fb->format, fb->width, fb->rows));
 #if R8_W_DEPTH
     if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
-        memset(st->depth, 0, st->depth_bytes);
+        r8k_fill(st->depth, 0, st->depth_bytes);
         if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
             memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
     }

@@ -23,6 +23,15 @@
  * column xr + j (mod 4).  Per column: 5 cycles (set, clear) or 7
  * (dither), and 4 per pass of 4 columns.
  *
+ * Page groups (issue 10): the rows of a call that share a page byte
+ * (from bit m to bit 7, or to the last row) form a group; when it has
+ * GMIN rows or more, m is one bit, both edges are tame and the first
+ * span is IMIN columns wide, the columns every row of the group covers
+ * get one read-modify-write per byte for all the group's bits (a plain
+ * store on a whole page byte), and each row then fills only its ragged
+ * ends (grp below).  The group's interior [A, B) sits in r8k_trap_ab (4
+ * bytes of .bss) while its rows run.
+ *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
  */
@@ -207,7 +216,7 @@ r8k_trap:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
-    clt                     /* T clear: spans return to step */
+    rjmp  grp
 
 row:
     ldd   r30, Y+8          /* Z = min(r->val, w) */
@@ -221,7 +230,7 @@ row:
     rjmp  lneg
 2:  cp    r26, r30
     cpc   r27, r31
-    brlt  span
+    brlt  span              /* (T clear: back to step) */
 step:
     STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
@@ -249,7 +258,10 @@ wrap:                       /* m = 1, page += w */
     ldd   NM, Y+9
     adc   T0, NM
     std   Y+1, T0
-    rjmp  next
+    dec   ROWS
+    breq  1f
+    rjmp  grp               /* the next page: a new group */
+1:  rjmp  fin
 
 span:                       /* X = xl < Z = xr */
     sbrc  K, 1              /* Q = pat[k] */
@@ -290,7 +302,7 @@ d3: CDIT  4
     brne  d0
     brts  1f
     rjmp  step
-1:  rjmp  ostep
+1:  ret
 
 sset:
     SETUP
@@ -304,7 +316,7 @@ s3: CSET
     brne  s0
     brts  1f
     rjmp  step
-1:  rjmp  ostep
+1:  ret
 
 sclr:
     SETUP
@@ -320,7 +332,345 @@ c3: CCLR
     brne  c0
     brts  1f
     rjmp  step
-1:  rjmp  ostep
+1:  ret
+
+/* A group's last row (grp): the closed form needs den < 0x2000, err <
+ * den and r < den (then err + n r < 0x10000 and no step wraps);
+ * otherwise no group (gbail). */
+.macro GUARD el, eh, rl, rh, dl, dh
+    mov   r24, \dh
+    cpi   r24, 0x20
+    brsh  74f
+    cp    \el, \dl
+    cpc   \eh, \dh
+    brsh  74f
+    cp    \rl, \dl
+    cpc   \rh, \dh
+    brlo  75f
+74: rjmp  gbail
+75:
+.endm
+
+/* val (in vl:vh) after n = K steps: + n q + floor((err + n r) / den),
+ * the quotient 0..n <= 7 in three restoring steps; up: q in 0..127 (q
+ * from ~q = nql), else q in -128..-1.  r25:r24, r1:r0 scratch. */
+.macro LAST vl, vh, el, eh, nql, rl, rh, dl, dh, up
+    mul   \rl, K
+    movw  r24, r0
+    mul   \rh, K
+    add   r25, r0
+    add   r24, \el
+    adc   r25, \eh          /* x = err + n r */
+    mov   r1, \nql
+.if \up
+    com   r1                /* q */
+    mul   r1, K
+    add   \vl, r0
+    adc   \vh, r1
+.else
+    inc   r1                /* -q */
+    mul   r1, K
+    sub   \vl, r0
+    sbc   \vh, r1
+.endif
+    movw  r0, \dl           /* 4 den */
+    lsl   r0
+    rol   r1
+    lsl   r0
+    rol   r1
+    cp    r24, r0
+    cpc   r25, r1
+    brlo  71f
+    sub   r24, r0
+    sbc   r25, r1
+    adiw  \vl, 4
+71: lsr   r1
+    ror   r0
+    cp    r24, r0
+    cpc   r25, r1
+    brlo  72f
+    sub   r24, r0
+    sbc   r25, r1
+    adiw  \vl, 2
+72: cp    r24, \dl
+    cpc   r25, \dh
+    brlo  73f
+    adiw  \vl, 1
+73:
+.endm
+
+/* A page group: the rows from bit M of this page byte to bit 7 (or to
+ * the last row), g of them.  When g >= GMIN, M is one bit, both edges
+ * are tame (|val| < 16384, -128 <= q <= 127: no 16-bit wrap in g rows)
+ * and the first span has IMIN columns or more, the columns every row of
+ * the group covers, [A, B) with B - A >= IMIN, get one read-modify-write
+ * per byte for all the group's bits gm (a plain store when gm = 0xFF),
+ * and the rows then fill only [xl, A) and [B, xr) (T set).  A DDA moves
+ * by q or q + 1 a row, so it is monotone: A = max(first, last row's
+ * left end, 0) and B = min(first, last row's right end, w), the last
+ * row's in closed form (val + (g - 1) q + the carries of err).  Otherwise (T
+ * clear) rows fill their whole spans as before.  Column x of the
+ * interior gets bit b from pattern row (K0 + b) & 3 (K0 the phase of
+ * bit 0; 8 rows are two dither periods), bit 3 - (x & 3).  GMIN and
+ * IMIN: the cube / torus / teapot figures (docs/benchmarks.md); smaller
+ * groups and narrower spans lose more in set-up than they save. */
+#ifndef GMIN
+#define GMIN 7
+#endif
+#ifndef IMIN
+#define IMIN 16
+#endif
+/* a row of a group with an interior [A, B) (T set): its pieces [xl, A)
+ * and [B, xr) (xl <= A < B <= xr) */
+growr:
+    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    ldd   r31, Y+9
+    cp    RVL, r30
+    cpc   RVH, r31
+    brge  1f
+    movw  r30, RVL
+1:  movw  r26, LVL          /* X = max(l->val, 0) */
+    sbrc  LVH, 7
+    clr   r26
+    sbrc  LVH, 7
+    clr   r27
+    lds   r0, r8k_trap_ab
+    lds   r1, r8k_trap_ab+1
+    cp    r26, r0
+    cpc   r27, r1
+    brge  7f                /* xl = A: no left piece */
+    push  r30
+    push  r31
+    movw  r30, r0
+    rcall span
+    pop   r31
+    pop   r30
+7:  lds   r26, r8k_trap_ab+2
+    lds   r27, r8k_trap_ab+3
+    cp    r26, r30
+    cpc   r27, r31
+    brge  8f
+    rcall span
+8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    brne  9f
+    rjmp  wrap
+9:  dec   ROWS
+    brne  growr
+    rjmp  fin
+
+nogrp:
+    clt                     /* the rows: whole spans */
+    rjmp  row
+grp:
+    cpi   ROWS, GMIN        /* fewer than GMIN rows left, or on the page */
+    brlo  nogrp
+    cpi   M, (1 << (8 - GMIN)) + 1
+    brsh  nogrp
+    clr   T0                /* T0 = g, Q = M << g (0 past bit 7) */
+    mov   Q, M
+1:  inc   T0
+    lsl   Q
+    breq  2f
+    cp    T0, ROWS
+    brne  1b
+2:  sub   Q, M              /* gm */
+    ldi   r30, GMIN
+    cp    T0, r30
+    brlo  nogrp
+    mov   r30, M            /* one bit */
+    dec   r30
+    and   r30, M
+    brne  nogrp
+    movw  r26, LVL          /* the first row's span: IMIN columns or more */
+    movw  r30, RVL
+    sub   r30, r26
+    sbc   r31, r27
+    brlt  nogrp
+    sbiw  r30, IMIN
+    brlt  nogrp
+    mov   r30, LVH          /* -64 <= val high byte <= 63 */
+    subi  r30, 0xC0
+    brmi  nogrp
+    mov   r30, RVH
+    subi  r30, 0xC0
+    brmi  nogrp
+    mov   r30, LNQL         /* ~q (so q) in -128..127 */
+    lsl   r30
+    sbc   r30, r30
+    cp    r30, LNQH
+    brne  nogrp
+    mov   r30, RNQL
+    lsl   r30
+    sbc   r30, r30
+    cp    r30, RNQH
+    brne  nogrp
+    push  K                 /* the last row's left end when q >= 0, */
+    push  ROWS              /* right end when q < 0: in closed form */
+    push  M
+    mov   K, T0
+    dec   K                 /* n = g - 1 */
+    movw  r26, LVL          /* A = max(lv, last lv, 0) */
+    sbrs  LNQH, 7
+    rjmp  2f
+    GUARD LEL, LEH, LRL, LRH, LDL, LDH
+    LAST  r26, r27, LEL, LEH, LNQL, LRL, LRH, LDL, LDH, 1
+2:  sbrs  r27, 7
+    rjmp  3f
+    clr   r26
+    clr   r27
+3:  movw  r30, RVL          /* B = min(rv, last rv, w) */
+    sbrc  RNQH, 7
+    rjmp  5f
+    GUARD REL, REH, RRL, RRH, RDL, RDH
+    LAST  r30, r31, REL, REH, RNQL, RRL, RRH, RDL, RDH, 0
+5:  ldd   r0, Y+8
+    ldd   r1, Y+9
+    cp    r30, r0
+    cpc   r31, r1
+    brlt  6f
+    movw  r30, r0
+6:  pop   M
+    pop   ROWS
+    pop   K
+    sub   r30, r26          /* B - A >= IMIN columns, else no interior */
+    sbc   r31, r27
+    brlt  8f
+    sbiw  r30, IMIN
+    brge  9f
+8:  rjmp  nogrp
+gbail:                      /* (an edge the closed form does not take) */
+    pop   M
+    pop   ROWS
+    pop   K
+    rjmp  nogrp
+9:  adiw  r30, IMIN
+    add   r30, r26
+    adc   r31, r27
+    push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r12
+    push  r13
+    push  r14
+7:  sts   r8k_trap_ab, r26
+    sts   r8k_trap_ab+1, r27
+    sts   r8k_trap_ab+2, r30
+    sts   r8k_trap_ab+3, r31
+    /* the column bytes: C_c (r2 + c) bit b = bit 3 - c of pat[(K0 + b) & 3] */
+    mov   r31, M            /* r30 = K0 + 3 = K - bitpos(M) + 3 */
+    mov   r30, K
+    subi  r30, -3
+1:  lsr   r31
+    breq  2f
+    dec   r30
+    rjmp  1b
+2:  clr   r1
+    clr   r2
+    clr   r3
+    clr   r4
+    clr   r5
+    ldi   r31, 4
+    mov   r13, r31
+3:  mov   r26, r30          /* b = 3 down to 0: pat[(K0 + b) & 3] */
+    andi  r26, 3
+    subi  r26, -4
+    add   r26, r28
+    mov   r27, r29
+    adc   r27, r1
+    ld    r14, X
+    lsr   r14               /* its bit 0 -> column 3, ... bit 3 -> 0 */
+    rol   r5
+    lsr   r14
+    rol   r4
+    lsr   r14
+    rol   r3
+    lsr   r14
+    rol   r2
+    dec   r30
+    dec   r13
+    brne  3b
+    mov   r0, r2            /* the nibble twice, under gm */
+    swap  r0
+    or    r2, r0
+    and   r2, Q
+    mov   r0, r3
+    swap  r0
+    or    r3, r0
+    and   r3, Q
+    mov   r0, r4
+    swap  r0
+    or    r4, r0
+    and   r4, Q
+    mov   r0, r5
+    swap  r0
+    or    r5, r0
+    and   r5, Q
+    mov   r12, Q
+    com   r12
+    lds   r30, r8k_trap_ab+2  /* loop column j: column byte (B + j) & 3 */
+    sbrs  r30, 1
+    rjmp  4f
+    movw  r26, r2
+    movw  r2, r4
+    movw  r4, r26
+4:  sbrs  r30, 0
+    rjmp  5f
+    mov   r26, r2
+    mov   r2, r3
+    mov   r3, r4
+    mov   r4, r5
+    mov   r5, r26
+5:  lds   r26, r8k_trap_ab
+    lds   r27, r8k_trap_ab+1
+    lds   r31, r8k_trap_ab+3
+    SETUP
+    cpi   Q, 0xFF
+    breq  ifull
+    ENTER i0, i1, i2, i3
+i0: ld    T0, X
+    and   T0, r12
+    or    T0, r2
+    st    X+, T0
+i1: ld    T0, X
+    and   T0, r12
+    or    T0, r3
+    st    X+, T0
+i2: ld    T0, X
+    and   T0, r12
+    or    T0, r4
+    st    X+, T0
+i3: ld    T0, X
+    and   T0, r12
+    or    T0, r5
+    st    X+, T0
+    cp    r26, r30
+    cpc   r27, r31
+    brne  i0
+    rjmp  idone
+ifull:
+    ENTER f0, f1, f2, f3
+f0: st    X+, r2
+f1: st    X+, r3
+f2: st    X+, r4
+f3: st    X+, r5
+    cp    r26, r30
+    cpc   r27, r31
+    brne  f0
+idone:
+    pop   r14
+    pop   r13
+    pop   r12
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
+    set                     /* the rows: their ragged ends */
+    rjmp  growr
 
 fin:
     std   Y+2, M
@@ -423,8 +773,8 @@ one:
     brge  ostep
     ldd   M, Y+2
     ldd   K, Y+3
-    set                     /* T set: the span returns to ostep */
-    rjmp  span
+    set                     /* T set: the span returns */
+    rcall span
 ostep:
     movw  r30, r22          /* l */
     MSTEP
@@ -457,3 +807,10 @@ oneg:
     rjmp  1b
 
     .size r8k_trap, .-r8k_trap
+
+/* a group's interior [A, B) for its rows (A, B: 2 bytes each) */
+    .section .bss.r8k_trap_ab,"aw",@nobits
+    .type   r8k_trap_ab, @object
+    .size   r8k_trap_ab, 4
+r8k_trap_ab:
+    .zero   4

@@ -15,15 +15,19 @@
 #undef R8_ASM_XFORM
 #undef R8_ASM_PROJECT
 #undef R8_ASM_EDGE
+#undef R8_ASM_FILL
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
 #define r8k_edge ref_edge
+#define r8k_fill ref_fill
 #include "../../src/kern.c"
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project
 #undef r8k_edge
+#undef r8k_fill
+void ref_fill(r8_u8 *p, r8_u8 v, unsigned n);
 r8_s16 ref_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void ref_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
@@ -412,6 +416,26 @@ static void test_edge(void)
     TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_ytop);
 }
 
+/* r8k_fill: the library's (fill.S on AVR) against the reference and a
+ * plain loop, lengths 0..300 at random offsets, the bytes around kept */
+static void test_fill(void)
+{
+    static r8_u8 a[340], b[340], c[340];
+    unsigned i, j;
+    for (i = 0; i < 400; i++) {
+        unsigned n = rndn(i < 40 ? 40 : 301), off = 8u + rndn(24);
+        r8_u8 v = (r8_u8)rnd16();
+        for (j = 0; j < sizeof a; j++)
+            a[j] = b[j] = c[j] = (r8_u8)(j * 151u + i);
+        r8k_fill(a + off, v, n);
+        ref_fill(b + off, v, n);
+        for (j = 0; j < n; j++)
+            c[off + j] = v;
+        TEST_ASSERT_EQUAL_MEMORY(c, a, sizeof a);
+        TEST_ASSERT_EQUAL_MEMORY(c, b, sizeof b);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -419,5 +443,6 @@ int main(void)
     RUN_TEST(test_xform);
     RUN_TEST(test_project);
     RUN_TEST(test_edge);
+    RUN_TEST(test_fill);
     return UNITY_END();
 }

@@ -13,7 +13,9 @@
  * program's own code (arbitrary words).  For r8k_edge the return value
  * and all of *it (left as it was on R8_EDGE_WIDE); for r8k_project the
  * return value, out[0..2] (left as they were on 1; out[2] always), *m,
- * *e, and c, p untouched.  Inputs come from classes aimed at each path
+ * *e, and c, p untouched.  For r8k_fill the window around p (guard
+ * bytes included), over lengths 0..700 that hit every remainder mod 16.
+ * Inputs come from classes aimed at each path
  * and limit of the reference; the test counts how often each was hit
  * and fails when one was too rare to mean anything. */
 #include <string.h>
@@ -26,7 +28,9 @@ void r8k_trap_ref(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
+void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #define r8k_trap r8k_trap_ref
+#define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
 #define r8k_edge r8k_edge_ref
 #define r8k_project r8k_project_ref
@@ -35,6 +39,7 @@ int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m,
 #undef r8k_xform
 #undef r8k_edge
 #undef r8k_project
+#undef r8k_fill
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -77,6 +82,94 @@ static void print_case(const char *what, unsigned long i)
 
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
+
+/* ---- r8k_trap's page groups (trap.S: GMIN (7) or more rows of one
+ * page byte, a one-bit m, |val| < 16384, -128 <= q <= 127, spans of 16+ columns get
+ * one write per byte for the columns all rows cover): inputs aimed at
+ * that path and at its limits (q = -128 / 127, val = +-16383 / 16384,
+ * the interior just 16 columns or none, full and partial pages) ---- */
+static r8_s16 rnd_edge_val(r8_s16 w)
+{
+    static const r8_s16 lim[6] = { -16385, -16384, -16383, 16382, 16383, 16384 };
+    unsigned c = rndn(10);
+    if (c < 6)
+        return rnds(-20, (r8_s16)(w + 20));
+    if (c < 8)
+        return lim[rndn(6)];
+    return rnds(-16400, 16400);
+}
+
+static r8_s16 rnd_edge_q(void)
+{
+    static const r8_s16 lim[6] = { -129, -128, -127, 126, 127, 128 };
+    unsigned c = rndn(10);
+    if (c < 6)
+        return rnds(-6, 6);
+    if (c < 8)
+        return lim[rndn(6)];
+    return rnds(-130, 130);
+}
+
+static void test_trap_groups(void)
+{
+    unsigned long i, sets = 0, clears = 0, diths = 0, full = 0;
+    for (i = 0; i < 2500; i++) {
+        r8_trapfill ta, tr;
+        r8_interp la, lr_, ra, rr_;
+        r8_s16 w = (r8_s16)(rndn(4) == 0 ? 1 + rndn(600) : 16 + rndn(145));
+        r8_u16 rows = (r8_u16)(rndn(4) == 0 ? 1u + rndn(30) : 5u + rndn(4));
+        unsigned pages = (rows + 15u) / 8u + 1u, off = rndn(256), len, k, bit = rndn(8);
+        r8_u8 *wa = band_asm + off, *wr = band_ref + off, b = (r8_u8)rnd();
+        if (rndn(3) != 0)
+            bit = rndn(2);              /* 7 or 8 rows of the page byte */
+        len = GUARD + pages * (unsigned)w + GUARD;
+        for (k = 0; k < len; k++) {
+            b = (r8_u8)(b + 151u);
+            wa[k] = b;
+        }
+        memcpy(wr, wa, len);
+        ta.page = wa + GUARD;
+        ta.m = (r8_u8)(1u << bit);
+        ta.k = (r8_u8)rndn(4);
+        k = rndn(4);
+        for (bit = 0; bit < 4; bit++) {
+            if (k == 0)
+                ta.pat[bit] = 0xFF;
+            else if (k == 1)
+                ta.pat[bit] = 0x00;
+            else
+                ta.pat[bit] = (r8_u8)rnd();
+        }
+        sets += k == 0;
+        clears += k == 1;
+        diths += k > 1;
+        full += ta.m == 1 && rows >= 8;
+        ta.w = w;
+        rnd_interp(&la, w);
+        rnd_interp(&ra, w);
+        la.val = rnd_edge_val(w);
+        la.q = rnd_edge_q();
+        ra.q = rnd_edge_q();
+        if (rndn(4) == 0)
+            ra.val = rnd_edge_val(w);
+        else                            /* 10..40 columns right of l */
+            ra.val = (r8_s16)(la.val + rnds(10, 40));
+        tr = ta;
+        tr.page = wr + GUARD;
+        lr_ = la;
+        rr_ = ra;
+        r8k_trap_ref(&tr, &lr_, &rr_, rows);
+        r8k_trap(&ta, &la, &ra, rows);
+        if (memcmp(wa - off, wr - off, off + len) != 0 || ta.page - wa != tr.page - wr ||
+            ta.m != tr.m || ta.k != tr.k || memcmp(&la, &lr_, sizeof la) != 0 ||
+            memcmp(&ra, &rr_, sizeof ra) != 0) {
+            print_case("r8k_trap page groups", i);
+            unity_fail_int(__LINE__, "r8k_trap differs from the reference", 0, 1);
+        }
+    }
+    if (sets < 300 || clears < 300 || diths < 800 || full < 200)
+        unity_fail_int(__LINE__, "r8k_trap page groups: a class too rare", 300, (long)full);
+}
 
 /* ---- r8k_xform ---- */
 
@@ -544,13 +637,52 @@ static void test_project_random(void)
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_limneg);
 }
 
+/* ---- r8k_fill: lengths 0..700 at random offsets in band_asm/band_ref
+ * (kern_trap.h's windows), the bytes around them kept ---- */
+static void test_fill_random(void)
+{
+    unsigned long i;
+    unsigned rem[16];
+    memset(rem, 0, sizeof rem);
+    for (i = 0; i < 3000; i++) {
+        unsigned c = rndn(4), n, off, j, len;
+        r8_u8 b, v = (r8_u8)(rndn(3) == 0 ? 0 : rnd());
+        if (c == 0)
+            n = rndn(40);
+        else if (c == 1)
+            n = 16u * rndn(45) + rndn(2);
+        else
+            n = rndn(701);
+        off = GUARD + rndn(256);
+        len = off + n + GUARD;
+        b = (r8_u8)rnd();
+        for (j = 0; j < len; j++) {     /* an odd step: every value */
+            b = (r8_u8)(b + 151u);
+            band_ref[j] = b;
+        }
+        memcpy(band_asm, band_ref, len);
+        r8k_fill_ref(band_ref + off, v, n);
+        r8k_fill(band_asm + off, v, n);
+        rem[n & 15]++;
+        if (memcmp(band_asm, band_ref, len) != 0) {
+            print_case("r8k_fill", i);
+            unity_fail_int(__LINE__, "r8k_fill differs from the reference", (long)n, (long)off);
+        }
+    }
+    for (i = 0; i < 16; i++)
+        if (rem[i] < 20)
+            unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 20, (long)rem[i]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_trap_random);
     RUN_TEST(test_trap_many_rows);
+    RUN_TEST(test_trap_groups);
     RUN_TEST(test_xform_random);
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
+    RUN_TEST(test_fill_random);
     return UNITY_END();
 }

@@ -28,6 +28,8 @@ r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 #define r8k_xform r8k_xform_ref
 #define r8k_project r8k_project_ref
 #define r8k_edge r8k_edge_ref
+#define r8k_fill r8k_fill_ref
+#undef R8_ASM_FILL
 #undef R8_ASM_TRAP
 #undef R8_ASM_XFORM
 #undef R8_ASM_PROJECT
@@ -37,6 +39,7 @@ r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 #undef r8k_xform
 #undef r8k_project
 #undef r8k_edge
+#undef r8k_fill
 
 r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
