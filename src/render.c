@@ -464,9 +464,6 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         st->attrs |= R8_ATTR_S;
 #endif
     st->first = (r8_fid)R8_FID_END;
-#ifndef R8_NO_BSP
-    st->bspstk = 0;
-#endif
     st->npoly = 0;
     st->dropped = 0;
     st->nclipped = 0;
@@ -648,16 +645,16 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     r8_u16 f;
 #ifndef R8_NO_BSP
     r8_u16 nf;
-    int bsp = st->bspstk != 0;     /* faces in tree order, near to far */
+    int bsp = r->cfg.method == R8_VIS_BSP;   /* faces in tree order, near to far */
 #endif
     if (o->hidden)
         return;
 #ifndef R8_NO_BSP
     if (bsp)
-        r8_bsp_begin(st, me);
+        r8_bsp_begin(r, me);
     for (nf = me->nfaces; nf-- > 0;) {
         const r8_face *fc;
-        f = bsp ? r8_bsp_next(st, o, me) : nf;
+        f = bsp ? r8_bsp_next(r, o, me) : nf;
         fc = &me->faces[f];
         {
 #else
@@ -765,7 +762,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
 #ifndef R8_NO_BSP
-    if (st->bspstk)
+    if (r->cfg.method == R8_VIS_BSP)
         r8_bsp_frame(r);           /* BSP: tree order instead */
     else
 #endif
