@@ -46,9 +46,13 @@ void r8_render_defaults(r8_render_cfg *cfg)
     cfg->pool = R8_POOL_AUTO;
 }
 
-static const char *const method_names[R8_VIS_COUNT] = {
-    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"
+static const char *const method_names[] = {
+    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"
+#ifndef R8_NO_BSP
+    , "bsp"                        /* (a build without it: no name, no flash) */
+#endif
 };
+#define R8_NAMES ((r8_u8)(sizeof method_names / sizeof method_names[0]))
 
 static int streq(const char *a, const char *b)
 {
@@ -63,7 +67,7 @@ const char *r8_method_name(r8_u8 method)
 {
     if (method == R8_VIS_AUTO)
         return "auto";
-    return method < R8_VIS_COUNT ? method_names[method] : 0;
+    return method < R8_NAMES ? method_names[method] : 0;
 }
 
 int r8_method_by_name(const char *name)
@@ -71,7 +75,7 @@ int r8_method_by_name(const char *name)
     int i;
     if (streq(name, "auto"))
         return R8_VIS_AUTO;
-    for (i = 0; i < R8_VIS_COUNT; i++)
+    for (i = 0; i < R8_NAMES; i++)
         if (streq(name, method_names[i]))
             return i;
     return -1;
