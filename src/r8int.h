@@ -215,11 +215,6 @@ typedef struct r8_state {
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
-#ifndef R8_NO_BSP
-    r8_u16 *bspstk;     /* BSP walk stack (vis_bsp.c), 0: not BSP */
-    r8_u16 bspcur;      /* the walk's next subtree */
-    r8_u16 bspsp;       /* entries on the stack */
-#endif
     r8_u16 npoly;       /* faces set up this frame */
     r8_u16 dropped;     /* polygons lost: clip budget, S-buffer pool */
 #if R8_W_TEXTURE
@@ -269,11 +264,12 @@ void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);
 unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg);
 /* vis_bsp.c: BSP order.  r8_render_ram / r8_render_init hand R8_VIS_BSP
  * here; it plans and sets up painter's (whose draw list it fills in tree
- * order) plus the walk's stack. */
+ * order) behind the walk's own block at the start of work memory (so
+ * r8_state is the same with and without BSP). */
 unsigned r8_bsp_ram(const r8_render_cfg *cfg);
 int r8_bsp_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned work_size);
-void r8_bsp_begin(r8_state *st, const r8_mesh *me);
-r8_u16 r8_bsp_next(r8_state *st, const r8_objx *o, const r8_mesh *me);
+void r8_bsp_begin(r8_render *r, const r8_mesh *me);
+r8_u16 r8_bsp_next(r8_render *r, const r8_objx *o, const r8_mesh *me);
 void r8_bsp_frame(r8_render *r);
 /* texture.c: set up textured face g (object oi, 255: clipper polygon
  * g - nfaces) whose scan t->s.c.vp[0..n) face_setup has set; draw its

@@ -62,9 +62,13 @@ void r8_render_defaults(r8_render_cfg *cfg)
 #endif
 }
 
-static const char *const method_names[R8_VIS_COUNT] = {
-    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"
+static const char *const method_names[] = {
+    "cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf"
+#ifndef R8_NO_BSP
+    , "bsp"                        /* (a build without it: no name, no flash) */
+#endif
 };
+#define R8_NAMES ((r8_u8)(sizeof method_names / sizeof method_names[0]))
 
 static int streq(const char *a, const char *b)
 {
@@ -87,7 +91,7 @@ const char *r8_method_name(r8_u8 method)
     if (method == R8_VIS_PORTAL)
         return "portal";
 #endif
-    return method < R8_VIS_COUNT ? method_names[method] : 0;
+    return method < R8_NAMES ? method_names[method] : 0;
 }
 
 int r8_method_by_name(const char *name)
@@ -103,7 +107,7 @@ int r8_method_by_name(const char *name)
     if (streq(name, "portal"))
         return R8_VIS_PORTAL;
 #endif
-    for (i = 0; i < R8_VIS_COUNT; i++)
+    for (i = 0; i < R8_NAMES; i++)
         if (streq(name, method_names[i]))
             return i;
     return -1;
@@ -539,9 +543,6 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->persp = cfg->persp;
 #endif
     st->first = (r8_fid)R8_FID_END;
-#ifndef R8_NO_BSP
-    st->bspstk = 0;
-#endif
     st->npoly = 0;
     st->dropped = 0;
     st->nclipped = 0;
@@ -726,16 +727,16 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     r8_u16 f;
 #ifndef R8_NO_BSP
     r8_u16 nf;
-    int bsp = st->bspstk != 0;     /* faces in tree order, near to far */
+    int bsp = r->cfg.method == R8_VIS_BSP;   /* faces in tree order, near to far */
 #endif
     if (o->hidden)
         return;
 #ifndef R8_NO_BSP
     if (bsp)
-        r8_bsp_begin(st, me);
+        r8_bsp_begin(r, me);
     for (nf = me->nfaces; nf-- > 0;) {
         const r8_face *fc;
-        f = bsp ? r8_bsp_next(st, o, me) : nf;
+        f = bsp ? r8_bsp_next(r, o, me) : nf;
         fc = &me->faces[f];
         {
 #else
@@ -851,7 +852,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
 #ifndef R8_NO_BSP
-    if (st->bspstk)
+    if (r->cfg.method == R8_VIS_BSP)
         r8_bsp_frame(r);           /* BSP: tree order instead */
     else
 #endif

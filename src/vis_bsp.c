@@ -17,7 +17,8 @@
  * of the one draw list - which then runs far to near.  Nothing is
  * sorted: the walk is one plane test per face.
  *
- * Memory: painter's, plus 2 bytes per level of the deepest tree. */
+ * Memory: painter's, plus 2 bytes per level of the deepest tree and 6
+ * (the walk's block, at the start of work memory). */
 #include <stddef.h>
 #include "r8int.h"
 
@@ -48,6 +49,13 @@ static unsigned stack_bytes(const r8_scene *sc)
     return 2u * d;
 }
 
+/* The walk's block at the start of work memory (2-byte aligned): next
+ * subtree, entries on the stack, the stack's capacity, then the stack. */
+#define BLK_CUR 0
+#define BLK_SP 1
+#define BLK_CAP 2
+#define BLK_HEAD 3
+
 unsigned r8_bsp_ram(const r8_render_cfg *cfg)
 {
     r8_render_cfg c;
@@ -57,57 +65,69 @@ unsigned r8_bsp_ram(const r8_render_cfg *cfg)
     c = *cfg;
     c.method = R8_VIS_PAINTER;
     n = r8_render_ram(&c);
-    return n ? n + s + 1u : 0;     /* + 1: the stack's alignment */
+    return n ? n + 2u * BLK_HEAD + s + 1u : 0;     /* + 1: the block's alignment */
 }
 
 #ifndef R8_PLAN_ONLY   /* a sizing build plans only */
 
+static r8_u16 *block(const r8_render *r)
+{
+    r8_u8 *p = r->work;
+    if ((size_t)(void *)p & 1u)
+        p++;
+    return (r8_u16 *)(void *)p;
+}
+
 int r8_bsp_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned work_size)
 {
     r8_render_cfg c;
-    r8_state *st;
-    unsigned need = r8_bsp_ram(cfg), s, base;
+    unsigned need = r8_bsp_ram(cfg), s, head;
+    r8_u16 *b;
     int rc;
     if (!need)
         return -1;
     if (work_size < need)
         return -2;
     s = stack_bytes(cfg->scene);
-    base = need - s - 1u;          /* painter's own plan */
+    head = 2u * BLK_HEAD + s + (((size_t)(void *)work & 1u) ? 1u : 0u);
     c = *cfg;
     c.method = R8_VIS_PAINTER;
-    rc = r8_render_init(r, &c, work, base);
+    rc = r8_render_init(r, &c, work + head, work_size - head);   /* painter's behind it */
     if (rc)
         return rc;
     r->cfg.method = R8_VIS_BSP;
+    r->work = work;
     r->work_size = work_size;
-    st = (r8_state *)r->state;
-    if ((size_t)(void *)(work + base) & 1u)
-        base++;
-    st->bspstk = (r8_u16 *)(void *)(work + base);
-    st->bspsp = (r8_u16)(s / 2u);  /* capacity until r8_bsp_begin */
-    st->bspcur = BSP_NONE;
+    b = block(r);
+    b[BLK_CUR] = BSP_NONE;
+    b[BLK_SP] = 0;
+    b[BLK_CAP] = (r8_u16)(s / 2u);
     return 0;
 }
 
-void r8_bsp_begin(r8_state *st, const r8_mesh *me)
+void r8_bsp_begin(r8_render *r, const r8_mesh *me)
 {
-    st->bspcur = rd16(me->bsp);
-    st->bspsp = 0;
+    r8_u16 *b = block(r);
+    b[BLK_CUR] = rd16(me->bsp);
+    b[BLK_SP] = 0;
 }
 
 /* The next face of object o's mesh, near to far from the eye (an
  * in-order walk with the near subtree first).  The tree is the
  * converter's flash data, trusted like the face list; an index past the
  * faces ends its subtree and the stack never grows past the tree's
- * stated depth, so even a bad tree reads and writes nothing outside. */
-r8_u16 r8_bsp_next(r8_state *st, const r8_objx *o, const r8_mesh *me)
+ * stated depth (nor the block's capacity), so even a bad tree reads and
+ * writes nothing outside. */
+r8_u16 r8_bsp_next(r8_render *r, const r8_objx *o, const r8_mesh *me)
 {
     const r8_u8 *t = me->bsp;
-    r8_u16 n = st->bspcur, cap = rd16(t + 2);
+    r8_u16 *b = block(r), *stk = b + BLK_HEAD;
+    r8_u16 n = b[BLK_CUR], sp = b[BLK_SP], cap = rd16(t + 2);
+    if (cap > b[BLK_CAP])
+        cap = b[BLK_CAP];
     for (;;) {
         if (n >= me->nfaces)
-            n = BSP_NONE;          /* (also a bad index: never past the faces) */
+            n = BSP_NONE;
         if (n != BSP_NONE) {
             const r8_u8 *nd = t + 4u + 4u * (unsigned)n;
             const r8_face *fc = &me->faces[n];
@@ -120,19 +140,24 @@ r8_u16 r8_bsp_next(r8_state *st, const r8_objx *o, const r8_mesh *me)
                 nearc = rd16(nd + 2);
                 farc = rd16(nd);
             }
-            if (nearc == BSP_NONE || st->bspsp >= cap) {
-                st->bspcur = farc;
+            if (nearc == BSP_NONE || sp >= cap) {
+                b[BLK_CUR] = farc;
+                b[BLK_SP] = sp;
                 return n;
             }
-            st->bspstk[st->bspsp++] = (r8_u16)(front ? (n | 0x8000u) : n);
+            stk[sp++] = (r8_u16)(front ? (n | 0x8000u) : n);
             n = nearc;
         } else {
             r8_u16 e;
-            if (!st->bspsp)
+            if (!sp) {
+                b[BLK_CUR] = BSP_NONE;
+                b[BLK_SP] = 0;
                 return 0;          /* a malformed tree: never read past it */
-            e = st->bspstk[--st->bspsp];
+            }
+            e = stk[--sp];
             n = (r8_u16)(e & 0x7FFFu);
-            st->bspcur = rd16(t + 4u + 4u * (unsigned)n + ((e & 0x8000u) ? 2u : 0u));
+            b[BLK_CUR] = rd16(t + 4u + 4u * (unsigned)n + ((e & 0x8000u) ? 2u : 0u));
+            b[BLK_SP] = sp;
             return n;
         }
     }

@@ -139,3 +139,21 @@ def test_c_walk_against_reference(probe, scene):
     assert b["coverage_diff_pct"] == z["coverage_diff_pct"]     # same faces, same edges
     if scene != "cross":
         assert b["depth_order_errors"] == 0 and b["error_pct"] == z["error_pct"]
+
+
+def test_bsp_keyword_merges_and_cuts():
+    text = ("scene x\nbsp\n"
+            "mesh a\nv -50 -5 -5\nv 50 -5 -5\nv 50 5 -5\nv -50 5 -5\nv -50 -5 5\nv 50 -5 5\nv 50 5 5\nv -50 5 5\n"
+            "f 9 0 1 2 3\nf 9 5 4 7 6\nf 9 1 5 6 2\nf 9 4 0 3 7\nf 9 4 5 1 0\nf 9 3 2 6 7\nend\n"
+            "mesh b\nv -5 -50 -5\nv 5 -50 -5\nv 5 50 -5\nv -5 50 -5\nv -5 -50 5\nv 5 -50 5\nv 5 50 5\nv -5 50 5\n"
+            "f 9 0 1 2 3\nf 9 5 4 7 6\nf 9 1 5 6 2\nf 9 4 0 3 7\nf 9 4 5 1 0\nf 9 3 2 6 7\nend\n"
+            "object a at 0 0 200 spin 1 2 0\nobject b at 0 0 200 spin 1 2 0\n")
+    sc = S.finish(S.parse_r8s(text, "x.r8s"))
+    assert sc.bsp and len(sc.objects) == 1
+    (m,) = sc.meshes.values()
+    assert m.bsp and len(m.faces) > 12
+    _check_tree(m)
+    plain = S.finish(S.parse_r8s(text.replace("bsp\n", ""), "x.r8s"))
+    assert len(plain.objects) == 2 and all(mm.bsp for mm in plain.meshes.values())   # convex: no cut
+    with pytest.raises(S.SceneError, match="usage: bsp"):
+        S.parse_r8s(text.replace("bsp\n", "bsp 1\n"), "x.r8s")
