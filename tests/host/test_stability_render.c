@@ -110,7 +110,7 @@ static const r8_demo_obj x_objs[] = {
     {&xa, 0, 0, 0, 0, 0, 0, 0, 0, 1},
     {&xb, 0, 0, 0, 0, 0, 0, 0, 0, 1}
 };
-static const r8_demo x_scene = {"x", x_objs, 2, 50, 16, 4096, {-9459, -9459, -9459}};
+static const r8_demo x_scene = {"x", x_objs, 2, 50, 16, 4096, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};
 
 /* Interpenetrating quads (an X seen from above, 60 units deep): every
  * method against the 16-bit z-buffer.  Bounds: the 4x4-block methods go
@@ -191,7 +191,7 @@ static const r8_demo_obj cyc_objs[] = {
     {&p1, 0, 0, 0, 0, 0, 0, 0, 0, 2},
     {&p2, 0, 0, 0, 0, 0, 0, 0, 0, 2}
 };
-static const r8_demo cyc_scene = {"cyclic", cyc_objs, 3, 50, 16, 4096, {-9459, -9459, -9459}};
+static const r8_demo cyc_scene = {"cyclic", cyc_objs, 3, 50, 16, 4096, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};
 
 /* Pixels covered by at least two of sc's objects (each rendered alone). */
 static void overlap_map(const r8_demo *sc, r8_u16 fr, r8_u8 *cnt)
@@ -319,7 +319,7 @@ static const r8_s16 floor_v[] = {-32767, 0, -32767, 32767, 0, -32767, 32767, 0, 
 static const r8_face floor_f[] = {{4, 16, {3, 2, 1, 0}}};   /* clockwise seen from above */
 static const r8_mesh floor_m = {floor_v, floor_f, 0, 4, 1, 0, 32767};
 static r8_demo_obj floor_objs[1] = {{&floor_m, 0, 40, 0, 0, 0, 0, 0, 3, 0}};
-static const r8_demo floor_scene = {"floor", floor_objs, 1, 50, 16, 4096, {-9459, -9459, -9459}};
+static const r8_demo floor_scene = {"floor", floor_objs, 1, 50, 16, 4096, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};
 
 /* The 16-bit overflow case proper: a floor 65534 units wide but only
  * 1980 deep, from z = 20 to z = 2000: its edge vectors are (65534, 0, 0)
@@ -331,7 +331,7 @@ static const r8_s16 strip_v[] = {-32767, 0, 2000, 32767, 0, 2000, 32767, 0, 20, 
 static const r8_face strip_f[] = {{4, 16, {0, 1, 2, 3}}};
 static const r8_mesh strip_m = {strip_v, strip_f, 0, 4, 1, 0, 32767};
 static const r8_demo_obj strip_objs[1] = {{&strip_m, 0, 40, 0, 0, 0, 0, 0, 0, 0}};
-static const r8_demo strip_scene = {"strip", strip_objs, 1, 50, 16, 4096, {-9459, -9459, -9459}};
+static const r8_demo strip_scene = {"strip", strip_objs, 1, 50, 16, 4096, {-9459, -9459, -9459} R8_DEMO_WORLD(0, 0, 0)};
 
 static void test_cross_product_overflow(void)
 {
