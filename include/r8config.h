@@ -35,6 +35,7 @@
 #define R8_NO_BLOCK
 #define R8_NO_SBUF
 #define R8_NO_GOURAUD
+#define R8_NO_TEXTURE
 #define R8_NO_CLIP
 #define R8_NO_LZ77
 #define R8_NO_RT_NORMALS

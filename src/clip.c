@@ -135,10 +135,15 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
         r8_s16 *s;
 #if R8_W_TEXTURE
         if (R8_TEXTURED(st->shading)) {
-            r8_s16 *uv = st->cuv + (unsigned)(cp - st->cpoly) * R8_CUV_STRIDE;
+            /* (cp is st->cpoly[st->nclipped]: no struct pointer
+             * differences, which SDCC 4.2 cannot compile here) */
+            r8_s16 *uv = st->cuv + (unsigned)st->nclipped * R8_CUV_STRIDE;
+            r8_u8 k = 0;
+            while (&st->scene->objects[k] != ob)
+                k++;
             uv[2u * i] = in[i].u;
             uv[2u * i + 1u] = in[i].v;
-            uv[R8_CUV_STRIDE - 1u] = (r8_s16)(ob - st->scene->objects);
+            uv[R8_CUV_STRIDE - 1u] = k;
         }
 #endif
         c.x = in[i].x;
