@@ -43,6 +43,7 @@
 #define R8_NO_SBUF
 #define R8_NO_BSP
 #define R8_NO_GOURAUD
+#define R8_NO_TEXTURE
 #define R8_NO_CLIP
 #define R8_NO_LZ77
 #define R8_NO_HUFF

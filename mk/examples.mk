@@ -29,7 +29,7 @@ FLY_TARGETS := avr328 avr1284 6502 z80
 # with these): the flythrough is painter's, Lambert, SSD1306 pages, RLE,
 # meshes with their normals; it keeps the clipper
 FLY_XDEFS  := -Isrc -I$(FLY_DIR) -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
-  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF
+  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_TEXTURE
 FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(FLY_FRAMES).elf \
   $(EXB)/6502/fly/fly-$(FLY_FRAMES).prg $(EXB)/z80/fly/fly-$(FLY_FRAMES).ihx
 
@@ -109,7 +109,7 @@ OLED_FRAMES := 16
 OLED_STEP   := 5
 OLED_X      := $(EXB)/avr328/oled
 OLED_XDEFS  := -Isrc -I$(OLED_DIR) -DOLED_TRIM -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK \
-  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY
+  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_TEXTURE
 OLED_OBJS   := $(OLED_X)/oled_cube.o $(OLED_X)/ssd1306_spi.o
 SSDSIM      := $(BUILD)/emu/ssd1306sim
 

@@ -75,6 +75,9 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
     r8_s32 big = 0, zn = st->zn16;
     const r8_mesh *me = ob->mesh;
     r8_proj wide;
+#if R8_W_TEXTURE
+    r8_s16 *tuv = 0;
+#endif
     unsigned stride = 2u;   /* 1 << vsh: no run-time shift (cc65 trap, DEVELOPERS.md) */
     if (st->vsh == 2)
         stride = 4u;
@@ -129,16 +132,28 @@ int r8_clip_face(r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f,
         return 0;
     wide = st->cam;
     wide.guard = 1400;   /* intersections lie on the 900 px planes */
+#if R8_W_TEXTURE
+    if (R8_TEXTURED(st->shading)) {
+        /* u, v of the corners beside the polygon (cp is
+         * st->cpoly[st->nclipped]), and its object */
+        const r8_object *p = st->scene->objects;
+        r8_u8 k = 0;
+        while (p != ob) {
+            p++;
+            k++;
+        }
+        tuv = st->cuv + (unsigned)st->nclipped * R8_CUV_STRIDE;
+        tuv[R8_CUV_STRIDE - 1u] = k;
+    }
+#endif
     *zsum = 0;
     for (i = 0; i < n; i++) {
         r8_vec3l c;
         r8_s16 *s;
 #if R8_W_TEXTURE
-        if (R8_TEXTURED(st->shading)) {
-            r8_s16 *uv = st->cuv + (unsigned)(cp - st->cpoly) * R8_CUV_STRIDE;
-            uv[2u * i] = in[i].u;
-            uv[2u * i + 1u] = in[i].v;
-            uv[R8_CUV_STRIDE - 1u] = (r8_s16)(ob - st->scene->objects);
+        if (tuv) {
+            tuv[2u * i] = in[i].u;
+            tuv[2u * i + 1u] = in[i].v;
         }
 #endif
         c.x = in[i].x;

@@ -104,9 +104,9 @@ typedef struct r8_clipv {
     r8_s32 x, y, z;
     r8_s16 s;
     r8_u16 src;
-#if R8_W_TEXTURE
-    r8_s16 u, v;        /* texture coordinates (8.8 texels) */
-#endif
+    r8_s16 u, v;        /* texture coordinates (8.8 texels); kept in builds
+                           without textures too, so clip.c and render.c
+                           agree on R8_CLIP_BYTES whatever the flags */
 } r8_clipv;
 #define R8_CLIP_BYTES (2u * R8_MAX_CLIP_POLY * (unsigned)sizeof(r8_clipv))
 
