@@ -37,7 +37,9 @@
  * flash, 2 KB of RAM: no room for a z-buffer band anyway) cull and
  * painter's with flat and Lambert shading into the SSD1306 page layout,
  * RLE on the wire, meshes with their normals (the scene converter's),
- * no clipper (keep the camera off the geometry); edit here for more */
+ * no clipper (keep the camera off the geometry), no wireframe, Wu's
+ * lines or circles, no texture, BSP, portal or ray caster; edit here
+ * for more */
 #define R8_NO_ZBUF
 #define R8_NO_BLOCK
 #define R8_NO_SBUF
@@ -51,6 +53,8 @@
 #define R8_NO_RT_NORMALS
 #define R8_PAGE1_ONLY
 #define R8_NO_PORTAL
+#define R8_NO_WIRE
+#define R8_NO_RAY
 #endif
 
 #endif
