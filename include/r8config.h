@@ -28,6 +28,7 @@
  *                     and circles (r8_wu_line, r8_circle*)
  *   R8_NO_TEXTURE     texture mapping (R8_SHADE_TEXTURE)
  *   R8_NO_PORTAL      the portal renderer (R8_VIS_PORTAL, r8portal.h)
+ *   R8_NO_RAY         the ray caster (R8_VIS_RAY, r8ray.h)
  */
 #ifndef R8CONFIG_H
 #define R8CONFIG_H

@@ -28,8 +28,11 @@ FLY_TARGETS := avr328 avr1284 6502 z80
 # what the firmware leaves out (fw_fly.c compiles render.c and scan.c in
 # with these): the flythrough is painter's, Lambert, SSD1306 pages, RLE,
 # meshes with their normals; it keeps the clipper
+# the parts no mesh example firmware uses (each costs flash when linked)
+EX_NEW_OFF := -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL -DR8_NO_RAY
 FLY_XDEFS  := -Isrc -I$(FLY_DIR) -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
-  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_TEXTURE
+  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_TEXTURE \
+  $(EX_NEW_OFF)
 FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(FLY_FRAMES).elf \
   $(EXB)/6502/fly/fly-$(FLY_FRAMES).prg $(EXB)/z80/fly/fly-$(FLY_FRAMES).ihx
 
@@ -109,7 +112,8 @@ OLED_FRAMES := 16
 OLED_STEP   := 5
 OLED_X      := $(EXB)/avr328/oled
 OLED_XDEFS  := -Isrc -I$(OLED_DIR) -DOLED_TRIM -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK \
-  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_TEXTURE
+  -DR8_NO_SBUF -DR8_NO_GOURAUD -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_TEXTURE \
+  $(EX_NEW_OFF)
 OLED_OBJS   := $(OLED_X)/oled_cube.o $(OLED_X)/ssd1306_spi.o
 SSDSIM      := $(BUILD)/emu/ssd1306sim
 
@@ -186,7 +190,8 @@ MAZE_TARGETS := avr328 avr1284 6502 z80
 # the walk is the ray caster only: every mesh method, Gouraud, the
 # clipper and run-time normals left out (render.c and scan.c compiled in)
 MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
-  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP
+  -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP \
+  -DR8_NO_TEXTURE -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL
 MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/maze-$(MAZE_FRAMES).elf \
   $(EXB)/6502/maze/maze-$(MAZE_FRAMES).prg $(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx
 
