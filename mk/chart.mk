@@ -56,6 +56,7 @@ chart: $(R8PROBE) $(SETUP)
 	  $(MAKE) --no-print-directory bench || echo "chart: make bench failed; charting host instruction counts"; fi
 	@if [ -f $(BUILD)/bench/results.json ]; then $(PY) bench/accuracy.py $(BUILD)/bench/results.json; fi
 	$(PY) bench/chart.py $(CHART_ARGS)
+	$(PY) bench/chart.py --texture   # affine, subdivided, bilinear on the crate
 
 # ---- make docs: the generated tables and chart into the tracked docs
 # (the only target that writes docs/: make bench and make chart write to

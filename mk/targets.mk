@@ -352,8 +352,10 @@ xtest-z80-kern:
 TEST_STEPS += xtest-avr xtest-avr-kern xtest-6502 xtest-z80 xtest-z80-kern xident-avr328 xident-avr1284 xident-6502 xident-z80 xprof-6502
 
 # ---- benchmark
-bench: $(SETUP)
+# every target x scene x method, then the portal renderer's walk (mk/portal.mk)
+bench: $(SETUP) $(BUILD)/portal_bench
 	$(PY) bench/bench.py
+	$(PY) bench/bench.py --portal
 # only the band codecs' figures (encode/decode cycles per byte per CPU)
 bench-codecs: $(SETUP)
 	$(PY) bench/codec_bench.py
