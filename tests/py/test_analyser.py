@@ -10,7 +10,7 @@ import pytest
 from rast8.protocol import StreamDecoder, read_dump
 
 EXPECT = {"cube": "cull", "torus": "zbuf16", "teapot": "zbuf16", "terrain": "zbuf16",
-          "wall": "zbuf16", "cross": "zbuf16", "separate": "painter",
+          "wall": "zbuf16", "cross": "bsp", "separate": "painter",
           "crate": "cull", "maze": "ray",
           "rooms": "portal"}
 

@@ -82,8 +82,8 @@ def test_obj_vt():
     text = ("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
             "f 1/1 2/2 3/3 4/4\n")
     m = S.parse_obj(text, "q.obj")
-    # fan of two triangles; OBJ v runs up, rast8's down
-    assert m.uvs == [[(0, 1), (1, 1), (1, 0)], [(0, 1), (1, 0), (0, 0)]]
+    # a planar convex quad stays one face (concave.py); OBJ v runs up, rast8's down
+    assert m.uvs == [[(0, 1), (1, 1), (1, 0), (0, 0)]]
     with pytest.raises(S.SceneError):
         S.parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1/1 2/2 3/3\n", "q.obj")   # no vt yet
 
@@ -135,3 +135,17 @@ def test_error_against_reference(persp, filt):
 
 def test_subdivision_beats_affine():
     assert _errors(8, "nearest") < _errors(0, "nearest") / 4
+
+
+def test_obj_vt_follows_the_concave_split():
+    # an L-shaped (concave) face: its convex pieces keep each corner's u, v
+    pts = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    text = "".join("v %d %d 0\n" % p for p in pts)
+    text += "".join("vt %g %g\n" % (x / 2, y / 2) for x, y in pts)
+    text += "f " + " ".join("%d/%d" % (k + 1, k + 1) for k in range(len(pts))) + "\n"
+    m = S.parse_obj(text, "l.obj")
+    assert len(m.faces) >= 2 and len(m.uvs) == len(m.faces)
+    for (_, idx), uv in zip(m.faces, m.uvs):
+        for i, (u, v) in zip(idx, uv):
+            x, y = pts[i]
+            assert (u, v) == (x / 2, (1.0 - y / 2) % 2.0)
