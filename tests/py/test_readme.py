@@ -44,3 +44,15 @@ def test_using_it_commands(tmp_path):
             assert r.returncode == 0, (cmd, r.stdout, r.stderr)
     assert (tmp_path / "frames" / "frame_00000.png").exists()
     assert (tmp_path / "teapot.pgm").exists()
+
+
+def test_api_program_compiles(tmp_path):
+    """The README's "API in one program" is strict C89 against the headers."""
+    m = re.search(r"## The API in one program\n.*?```c\n(.*?)```", README, re.S)
+    assert m, "README has no API program"
+    src = tmp_path / "api.c"
+    src.write_text(m.group(1))
+    r = subprocess.run(["gcc", "-std=c89", "-pedantic", "-Wall", "-Wextra", "-Werror",
+                        "-I" + os.path.join(ROOT, "include"), "-c", str(src), "-o", str(tmp_path / "api.o")],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
