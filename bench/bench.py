@@ -51,7 +51,7 @@ FRAMES = 2 * N
 CLOCK = {"avr1284": 16000000, "avr328": 16000000, "6502": 985248, "z80": 3500000}
 CPU = {"avr1284": "ATmega1284P", "avr328": "ATmega328P", "6502": "6502", "z80": "Z80"}
 TARGETS = ["avr328", "avr1284", "6502", "z80"]
-SHADINGS = ["flat", "lambert", "gouraud"]   # R8_SHADE_* order
+SHADINGS = ["flat", "lambert", "gouraud", "texture"]   # R8_SHADE_* order
 # every shading of these (the speed-accuracy chart's scenes), on the 1284P
 SHADE_SCENES = ["cube", "torus", "teapot", "cross", "wall"]
 W, H, FMT = 128, 64, "PAGE1"
@@ -95,7 +95,7 @@ def frames_from(info, key="compute"):
 
 def measure(t, s, m, need, host_streams, sh=1, wire=0):
     rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.mname(m),
-           "shading": SHADINGS[sh],
+           "shading": SHADINGS[idt.SHADING.get(idt.SCENES[s], sh) if sh == 1 else sh],
            "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
            "cycles_per_frame": None, "cycles_exact": None, "host_instructions_per_frame": None,
            "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
@@ -766,7 +766,8 @@ def main():
     streams = {}
     for s, m in combos:
         try:
-            streams[(s, m)] = (idt.host_ref(s, m, N), idt.host_ref(s, m, FRAMES))
+            sh = idt.SHADING.get(idt.SCENES[s], 1)   # the crate's firmware is textured
+            streams[(s, m)] = (idt.host_ref(s, m, N, sh), idt.host_ref(s, m, FRAMES, sh))
         except Exception as e:  # noqa: BLE001
             print("bench: host %d %d: %s" % (s, m, e))
             streams[(s, m)] = (b"", b"")
