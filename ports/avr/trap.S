@@ -340,21 +340,22 @@ c3: CCLR
 .macro GUARD el, eh, rl, rh, dl, dh
     mov   r24, \dh
     cpi   r24, 0x20
-    brsh  74f
+    brsh  76f
     cp    \el, \dl
     cpc   \eh, \dh
-    brsh  74f
+    brsh  76f
     cp    \rl, \dl
     cpc   \rh, \dh
-    brlo  75f
-74: rjmp  gbail
-75:
+    brlo  77f
+76: rjmp  gbail
+77:
 .endm
 
-/* val (in vl:vh) after n = K steps: + n q + floor((err + n r) / den),
- * the quotient 0..n <= 7 in three restoring steps; up: q in 0..127 (q
- * from ~q = nql), else q in -128..-1.  r25:r24, r1:r0 scratch. */
-.macro LAST vl, vh, el, eh, nql, rl, rh, dl, dh, up
+/* The row n = K of a group in closed form: val (in vl:vh) + n q +
+ * floor(x / den) and r25:r24 = x mod den (the err of that row), x = err +
+ * n r; the quotient 0..n <= 7 in three restoring steps (q in -128..127,
+ * from ~q in nql:nqh).  r1:r0 scratch. */
+.macro LAST vl, vh, el, eh, nql, nqh, rl, rh, dl, dh
     mul   \rl, K
     movw  r24, r0
     mul   \rh, K
@@ -362,41 +363,43 @@ c3: CCLR
     add   r24, \el
     adc   r25, \eh          /* x = err + n r */
     mov   r1, \nql
-.if \up
-    com   r1                /* q */
+    sbrs  \nqh, 7
+    rjmp  70f
+    com   r1                /* q in 0..127 */
     mul   r1, K
     add   \vl, r0
     adc   \vh, r1
-.else
-    inc   r1                /* -q */
+    rjmp  71f
+70: inc   r1                /* -q in 1..128 */
     mul   r1, K
     sub   \vl, r0
     sbc   \vh, r1
-.endif
-    movw  r0, \dl           /* 4 den */
+71: movw  r0, \dl           /* 4 den */
     lsl   r0
     rol   r1
     lsl   r0
     rol   r1
-    cp    r24, r0
-    cpc   r25, r1
-    brlo  71f
-    sub   r24, r0
-    sbc   r25, r1
-    adiw  \vl, 4
-71: lsr   r1
-    ror   r0
     cp    r24, r0
     cpc   r25, r1
     brlo  72f
     sub   r24, r0
     sbc   r25, r1
-    adiw  \vl, 2
-72: cp    r24, \dl
-    cpc   r25, \dh
+    adiw  \vl, 4
+72: lsr   r1
+    ror   r0
+    cp    r24, r0
+    cpc   r25, r1
     brlo  73f
+    sub   r24, r0
+    sbc   r25, r1
+    adiw  \vl, 2
+73: cp    r24, \dl
+    cpc   r25, \dh
+    brlo  74f
+    sub   r24, \dl
+    sbc   r25, \dh
     adiw  \vl, 1
-73:
+74:
 .endm
 
 /* A page group: the rows from bit M of this page byte to bit 7 (or to
@@ -508,31 +511,59 @@ grp:
     sbc   r30, r30
     cp    r30, RNQH
     brne  nogrp
-    push  K                 /* the last row's left end when q >= 0, */
-    push  ROWS              /* right end when q < 0: in closed form */
+    push  K                 /* both edges' row g - 1 in closed form */
+    push  ROWS
     push  M
     mov   K, T0
     dec   K                 /* n = g - 1 */
-    movw  r26, LVL          /* A = max(lv, last lv, 0) */
-    sbrs  LNQH, 7
-    rjmp  2f
     GUARD LEL, LEH, LRL, LRH, LDL, LDH
-    LAST  r26, r27, LEL, LEH, LNQL, LRL, LRH, LDL, LDH, 1
-2:  sbrs  r27, 7
-    rjmp  3f
+    GUARD REL, REH, RRL, RRH, RDL, RDH
+    sts   r8k_trap_ab+12, K
+    movw  r26, LVL
+    LAST  r26, r27, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    sts   r8k_trap_ab+4, r26
+    sts   r8k_trap_ab+5, r27
+    sts   r8k_trap_ab+6, r24
+    sts   r8k_trap_ab+7, r25
+    movw  r30, RVL
+    LAST  r30, r31, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    sts   r8k_trap_ab+8, r30
+    sts   r8k_trap_ab+9, r31
+    sts   r8k_trap_ab+10, r24
+    sts   r8k_trap_ab+11, r25
+    sbrs  r27, 7            /* A = max(first, last, 0); T: the left */
+    rjmp  1f                /* end the same on every row */
     clr   r26
     clr   r27
-3:  movw  r30, RVL          /* B = min(rv, last rv, w) */
-    sbrc  RNQH, 7
-    rjmp  5f
-    GUARD REL, REH, RRL, RRH, RDL, RDH
-    LAST  r30, r31, REL, REH, RNQL, RRL, RRH, RDL, RDH, 0
-5:  ldd   r0, Y+8
-    ldd   r1, Y+9
+1:  movw  r24, LVL
+    sbrs  r25, 7
+    rjmp  2f
+    clr   r24
+    clr   r25
+2:  clt
+    cp    r24, r26
+    cpc   r25, r27
+    brne  3f
+    set
+3:  brlt  4f
+    movw  r26, r24
+4:  ldd   r0, Y+8           /* B = min(first, last, w); T cleared */
+    ldd   r1, Y+9           /* unless the right end is the same too */
     cp    r30, r0
     cpc   r31, r1
-    brlt  6f
+    brlt  5f
     movw  r30, r0
+5:  movw  r24, RVL
+    cp    r24, r0
+    cpc   r25, r1
+    brlt  1f
+    movw  r24, r0
+1:  cp    r24, r30
+    cpc   r25, r31
+    breq  2f
+    clt
+2:  brge  6f
+    movw  r30, r24
 6:  pop   M
     pop   ROWS
     pop   K
@@ -669,7 +700,23 @@ idone:
     pop   r4
     pop   r3
     pop   r2
-    set                     /* the rows: their ragged ends */
+    brtc  2f                /* T: no row but the last can have a */
+    lds   LVL, r8k_trap_ab+4  /* ragged end: on to row g - 1 */
+    lds   LVH, r8k_trap_ab+5
+    lds   LEL, r8k_trap_ab+6
+    lds   LEH, r8k_trap_ab+7
+    lds   RVL, r8k_trap_ab+8
+    lds   RVH, r8k_trap_ab+9
+    lds   REL, r8k_trap_ab+10
+    lds   REH, r8k_trap_ab+11
+    lds   r0, r8k_trap_ab+12
+    sub   ROWS, r0
+    add   K, r0
+    andi  K, 3
+1:  lsl   M
+    dec   r0
+    brne  1b
+2:  set                     /* the rows: their ragged ends */
     rjmp  growr
 
 fin:
@@ -808,9 +855,10 @@ oneg:
 
     .size r8k_trap, .-r8k_trap
 
-/* a group's interior [A, B) for its rows (A, B: 2 bytes each) */
+/* a group's interior [A, B) for its rows (A, B: 2 bytes each), its row
+ * g - 1 (left val, err, right val, err) and n = g - 1 */
     .section .bss.r8k_trap_ab,"aw",@nobits
     .type   r8k_trap_ab, @object
-    .size   r8k_trap_ab, 4
+    .size   r8k_trap_ab, 13
 r8k_trap_ab:
-    .zero   4
+    .zero   13

@@ -154,6 +154,15 @@ static void test_trap_groups(void)
             ra.val = rnd_edge_val(w);
         else                            /* 10..40 columns right of l */
             ra.val = (r8_s16)(la.val + rnds(10, 40));
+        k = rndn(8);                    /* edges with the same end on */
+        if (k < 3) {                    /* every row of the group (or */
+            la.q = (r8_s16)(rndn(2) ? 0 : -1);  /* all but one), one */
+            la.r = (r8_u16)(la.q ? la.den - 1u - rndn(2) : rndn(2));
+        }                               /* side or both */
+        if (k == 0 || k == 3 || k == 4) {
+            ra.q = (r8_s16)(rndn(2) ? 0 : -1);
+            ra.r = (r8_u16)(ra.q ? ra.den - 1u - rndn(2) : rndn(2));
+        }
         tr = ta;
         tr.page = wr + GUARD;
         lr_ = la;
