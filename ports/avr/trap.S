@@ -473,6 +473,19 @@ grp:
     brlo  nogrp
     cpi   M, (1 << (8 - GMIN)) + 1
     brsh  nogrp
+#if GMIN == 7
+    /* M is 1 or 2 here: g = 8 (M = 1, 8 rows or more left) or 7 */
+    ldi   r30, 7
+    ldi   Q, 0xFE           /* gm: bits 1..7 */
+    cpi   M, 1
+    brne  2f
+    ldi   Q, 0x7F           /* bits 0..6 */
+    cpi   ROWS, 8
+    brlo  2f
+    ldi   Q, 0xFF
+    ldi   r30, 8
+2:  mov   T0, r30
+#else
     clr   T0                /* T0 = g, Q = M << g (0 past bit 7) */
     mov   Q, M
 1:  inc   T0
@@ -488,6 +501,7 @@ grp:
     dec   r30
     and   r30, M
     brne  nogrp
+#endif
     movw  r26, LVL          /* the first row's span: IMIN columns or more */
     movw  r30, RVL
     sub   r30, r26
@@ -547,23 +561,28 @@ grp:
     set
 3:  brlt  4f
     movw  r26, r24
-4:  ldd   r0, Y+8           /* B = min(first, last, w); T cleared */
-    ldd   r1, Y+9           /* unless the right end is the same too */
-    cp    r30, r0
-    cpc   r31, r1
-    brlt  5f
-    movw  r30, r0
-5:  movw  r24, RVL
+4:  movw  r24, RVL          /* B = min(first, last, w) */
+    ldd   r0, Y+8
+    ldd   r1, Y+9
     cp    r24, r0
     cpc   r25, r1
-    brlt  1f
+    brlt  5f
     movw  r24, r0
-1:  cp    r24, r30
+5:  cp    r30, r0
+    cpc   r31, r1
+    brlt  1f
+    movw  r30, r0
+1:  clr   r0                /* flags: bit 0 the left end, bit 1 the */
+    bld   r0, 0             /* right end the same on every row */
+    cp    r24, r30
     cpc   r25, r31
-    breq  2f
-    clt
-2:  brge  6f
-    movw  r30, r24
+    brlt  3f
+    brne  2f
+    set
+    bld   r0, 1
+    rjmp  2f
+3:  movw  r30, r24
+2:  sts   r8k_trap_ab+13, r0
 6:  pop   M
     pop   ROWS
     pop   K
@@ -700,9 +719,14 @@ idone:
     pop   r4
     pop   r3
     pop   r2
-    brtc  2f                /* T: no row but the last can have a */
-    lds   LVL, r8k_trap_ab+4  /* ragged end: on to row g - 1 */
-    lds   LVH, r8k_trap_ab+5
+    set                     /* the rows: their ragged ends */
+    lds   r0, r8k_trap_ab+13
+    sbrs  r0, 0
+    rjmp  4f
+    sbrs  r0, 1
+    rjmp  growR             /* only right ends */
+    lds   LVL, r8k_trap_ab+4  /* no row but the last can have a */
+    lds   LVH, r8k_trap_ab+5  /* ragged end: on to row g - 1 */
     lds   LEL, r8k_trap_ab+6
     lds   LEH, r8k_trap_ab+7
     lds   RVL, r8k_trap_ab+8
@@ -716,8 +740,59 @@ idone:
 1:  lsl   M
     dec   r0
     brne  1b
-2:  set                     /* the rows: their ragged ends */
     rjmp  growr
+4:  sbrc  r0, 1
+    rjmp  growL             /* only left ends */
+    rjmp  growr
+
+/* the rows of a group whose left (growR) or right (growL) end is the
+ * same on every row: only the other end's piece */
+growR:
+    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    ldd   r31, Y+9
+    cp    RVL, r30
+    cpc   RVH, r31
+    brge  1f
+    movw  r30, RVL
+1:  lds   r26, r8k_trap_ab+2
+    lds   r27, r8k_trap_ab+3
+    cp    r26, r30
+    cpc   r27, r31
+    brge  8f
+    rcall span
+8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    brne  9f
+    rjmp  wrap
+9:  dec   ROWS
+    brne  growR
+    rjmp  fin
+
+growL:
+    movw  r26, LVL          /* X = max(l->val, 0) */
+    sbrc  LVH, 7
+    clr   r26
+    sbrc  LVH, 7
+    clr   r27
+    lds   r30, r8k_trap_ab
+    lds   r31, r8k_trap_ab+1
+    cp    r26, r30
+    cpc   r27, r31
+    brge  8f
+    rcall span
+8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
+    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
+    inc   K
+    andi  K, 3
+    lsl   M
+    brne  9f
+    rjmp  wrap
+9:  dec   ROWS
+    brne  growL
+    rjmp  fin
 
 fin:
     std   Y+2, M
@@ -856,9 +931,10 @@ oneg:
     .size r8k_trap, .-r8k_trap
 
 /* a group's interior [A, B) for its rows (A, B: 2 bytes each), its row
- * g - 1 (left val, err, right val, err) and n = g - 1 */
+ * g - 1 (left val, err, right val, err), n = g - 1 and the flags of
+ * the ends that are the same on every row */
     .section .bss.r8k_trap_ab,"aw",@nobits
     .type   r8k_trap_ab, @object
-    .size   r8k_trap_ab, 13
+    .size   r8k_trap_ab, 14
 r8k_trap_ab:
-    .zero   13
+    .zero   14
