@@ -156,14 +156,14 @@
     .type   r8k_trap, @function
 r8k_trap:
     tst   r19
-    breq  1f
-    rjmp  big               /* 256 rows or more: in runs of 255 */
-1:  cpi   r18, 2
+    brne  4f                /* 256 rows or more */
+    cpi   r18, 2
     brsh  2f
     tst   r18
     breq  3f                /* no rows: nothing changes */
     rjmp  one               /* one row: the state stays in memory */
 3:  ret
+4:  rjmp  big               /* in runs of 255 */
 2:  push  r2
     push  r3
     push  r4
@@ -234,8 +234,7 @@ row:
 step:
     STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
-    inc   K
-    andi  K, 3
+    inc   K                 /* (only bits 0, 1 count: masked at fin) */
     lsl   M
     breq  wrap
 next:
@@ -426,44 +425,45 @@ c3: CCLR
 /* a row of a group with an interior [A, B) (T set): its pieces [xl, A)
  * and [B, xr) (xl <= A < B <= xr) */
 growr:
-    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    lds   r30, r8k_trap_ab  /* left piece [max(l->val, 0), A): */
+    lds   r31, r8k_trap_ab+1  /* none when l->val >= A */
+    cp    LVL, r30
+    cpc   LVH, r31
+    brge  7f
+    movw  r26, LVL
+    sbrc  LVH, 7
+    clr   r26
+    sbrc  LVH, 7
+    clr   r27
+    cp    r26, r30
+    cpc   r27, r31
+    brge  7f
+    rcall span
+7:
+    lds   r26, r8k_trap_ab+2  /* right piece [B, min(r->val, w)): */
+    lds   r27, r8k_trap_ab+3  /* none when r->val <= B */
+    cp    r26, RVL
+    cpc   r27, RVH
+    brge  8f
+    ldd   r30, Y+8
     ldd   r31, Y+9
     cp    RVL, r30
     cpc   RVH, r31
     brge  1f
     movw  r30, RVL
-1:  movw  r26, LVL          /* X = max(l->val, 0) */
-    sbrc  LVH, 7
-    clr   r26
-    sbrc  LVH, 7
-    clr   r27
-    lds   r0, r8k_trap_ab
-    lds   r1, r8k_trap_ab+1
-    cp    r26, r0
-    cpc   r27, r1
-    brge  7f                /* xl = A: no left piece */
-    push  r30
-    push  r31
-    movw  r30, r0
-    rcall span
-    pop   r31
-    pop   r30
-7:  lds   r26, r8k_trap_ab+2
-    lds   r27, r8k_trap_ab+3
-    cp    r26, r30
+1:  cp    r26, r30
     cpc   r27, r31
     brge  8f
     rcall span
 8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
     inc   K
-    andi  K, 3
     lsl   M
-    brne  9f
-    rjmp  wrap
-9:  dec   ROWS
+    breq  9f
+    dec   ROWS
     brne  growr
     rjmp  fin
+9:  rjmp  wrap
 
 nogrp:
     clt                     /* the rows: whole spans */
@@ -736,7 +736,6 @@ idone:
     lds   r0, r8k_trap_ab+12
     sub   ROWS, r0
     add   K, r0
-    andi  K, 3
 1:  lsl   M
     dec   r0
     brne  1b
@@ -748,37 +747,42 @@ idone:
 /* the rows of a group whose left (growR) or right (growL) end is the
  * same on every row: only the other end's piece */
 growR:
-    ldd   r30, Y+8          /* Z = min(r->val, w) */
+    lds   r26, r8k_trap_ab+2  /* right piece [B, min(r->val, w)): */
+    lds   r27, r8k_trap_ab+3  /* none when r->val <= B */
+    cp    r26, RVL
+    cpc   r27, RVH
+    brge  8f
+    ldd   r30, Y+8
     ldd   r31, Y+9
     cp    RVL, r30
     cpc   RVH, r31
     brge  1f
     movw  r30, RVL
-1:  lds   r26, r8k_trap_ab+2
-    lds   r27, r8k_trap_ab+3
-    cp    r26, r30
+1:  cp    r26, r30
     cpc   r27, r31
     brge  8f
     rcall span
 8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
     inc   K
-    andi  K, 3
     lsl   M
-    brne  9f
-    rjmp  wrap
-9:  dec   ROWS
+    breq  9f
+    dec   ROWS
     brne  growR
     rjmp  fin
+9:  rjmp  wrap
 
 growL:
-    movw  r26, LVL          /* X = max(l->val, 0) */
+    lds   r30, r8k_trap_ab  /* left piece [max(l->val, 0), A): */
+    lds   r31, r8k_trap_ab+1  /* none when l->val >= A */
+    cp    LVL, r30
+    cpc   LVH, r31
+    brge  8f
+    movw  r26, LVL
     sbrc  LVH, 7
     clr   r26
     sbrc  LVH, 7
     clr   r27
-    lds   r30, r8k_trap_ab
-    lds   r31, r8k_trap_ab+1
     cp    r26, r30
     cpc   r27, r31
     brge  8f
@@ -786,15 +790,15 @@ growL:
 8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
     STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
     inc   K
-    andi  K, 3
     lsl   M
-    brne  9f
-    rjmp  wrap
-9:  dec   ROWS
+    breq  9f
+    dec   ROWS
     brne  growL
     rjmp  fin
+9:  rjmp  wrap
 
 fin:
+    andi  K, 3
     std   Y+2, M
     std   Y+3, K
     pop   r31               /* r */
