@@ -29,8 +29,12 @@
  * span is IMIN columns wide, the columns every row of the group covers
  * get one read-modify-write per byte for all the group's bits (a plain
  * store on a whole page byte), and each row then fills only its ragged
- * ends (grp below).  The group's interior [A, B) sits in r8k_trap_ab (4
- * bytes of .bss) while its rows run.
+ * ends (grp below).  The group's interior [A, B), both edges' state on
+ * its last row and which ends are the same on every row sit in
+ * r8k_trap_ab (14 bytes of .bss) while its rows run: with both ends the
+ * same no row but the last has a ragged piece, and the call goes
+ * straight to that row; with one the same, the rows test only the other
+ * end (growL, growR).
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
@@ -410,7 +414,8 @@ c3: CCLR
  * and the rows then fill only [xl, A) and [B, xr) (T set).  A DDA moves
  * by q or q + 1 a row, so it is monotone: A = max(first, last row's
  * left end, 0) and B = min(first, last row's right end, w), the last
- * row's in closed form (val + (g - 1) q + the carries of err).  Otherwise (T
+ * row's in closed form (val + (g - 1) q + the carries of err, and err
+ * as their remainder), for both edges.  Otherwise (T
  * clear) rows fill their whole spans as before.  Column x of the
  * interior gets bit b from pattern row (K0 + b) & 3 (K0 the phase of
  * bit 0; 8 rows are two dither periods), bit 3 - (x & 3).  GMIN and
