@@ -490,7 +490,7 @@ static void frame_tex(ray_state *st, const ray_setup *s)
     r8_s32 dx = s->dx, dz = s->dz, p;
     r8_s16 x;
     tcol *c = (tcol *)(void *)st->col;
-    r8_s16 cy32 = (r8_s16)(32 * (st->height >> 1));
+    r8_s16 cy2 = (r8_s16)(2 * (st->height >> 1) - 1);
     for (x = 0; x < st->width; x++, c++) {
         r8_u16 half;
         const r8_texture *t;
@@ -508,11 +508,13 @@ static void frame_tex(ray_state *st, const ray_setup *s)
         c->ti = ti;
         c->tu = (r8_u8)(hit.u >> (8 - t->wlog));
         c->vstep = vstep_of(hit.h16);
-        /* v at the centre of row 0: (row 0's centre - the wall's exact
-         * top) times the step; in 1/32 pixels: 16 - (32 cy - h16) */
-        p = (r8_s32)hit.h16 + 16 - cy32;
+        /* v at the centre of row 0: the wall's middle (v = 1/2) is at the
+         * screen's (the eye's height), row 0's centre cy - 1/2 rows above
+         * it; so only the step's error, times the rows from the middle,
+         * and a wall taller than the screen starts inside its texture */
+        p = cy2;
         p *= (r8_s32)c->vstep;
-        c->v0 = (r8_u16)r8_asr32(p, 5);
+        c->v0 = (r8_u16)(0x8000u - (r8_u16)(p >> 1));
     }
 }
 #endif
@@ -577,7 +579,7 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
             c = (const tcol *)(const void *)st->col;
             for (x = 0; x < w; x++, c++, p++, ph = (r8_u8)((ph + 1u) & 3u)) {
                 r8_u8 top = (r8_u8)(cy8 - c->half), bot = (r8_u8)(cy8 + c->half);
-                r8_u8 ra, rb, bit, out = 0, fm = 0;
+                r8_u8 ra, rb, bit, last, out = 0, fm = 0;
                 const r8_texture *t;
                 r8_u16 v, vs;
                 if (bot <= yt) {
@@ -597,16 +599,25 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
                 t = &tex[c->ti];
                 vs = c->vstep;
                 v = (r8_u16)(c->v0 + (r8_u16)((r8_u16)(yt + ra) * vs));
+                if (top >= yt && (v & 0x8000u))
+                    v = 0;            /* the top row: v rounded below 0 */
+                last = (r8_u8)(bot <= yb ? rb - 1u : 8u);
                 bit = (r8_u8)(R8_RDU8(&from_row[ra]) & (r8_u8)~R8_RDU8(&from_row[ra + 1u]));
                 if (t->format == R8_TEX_IDX8) {
-                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs))
+                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
+                        if (ra == last && !(v & 0x8000u))
+                            v = 0xFFFFu;      /* the bottom row: rounded past 1 */
                         out = (r8_u8)(out | (R8_RDU8(&colpat[((unsigned)texel_level(t, c, v) << 2) | ph]) & bit));
+                    }
                 } else {
                     const r8_u8 *d = t->data + (c->tu >> 3);
                     r8_u8 hs = (r8_u8)(16 - t->hlog), rs = (r8_u8)(t->wlog - 3), tb = (r8_u8)(0x80u >> (c->tu & 7u));
-                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs))
+                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
+                        if (ra == last && !(v & 0x8000u))
+                            v = 0xFFFFu;
                         if (R8_RDU8(d + ((v >> hs) << rs)) & tb)
                             out = (r8_u8)(out | bit);
+                    }
                     out = (r8_u8)(out & R8_RDU8(&colpat[((unsigned)c->lv << 2) | ph]));
                 }
                 if (fm)
@@ -621,10 +632,16 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
         r8_u16 v = (r8_u16)(c->v0 + (r8_u16)((r8_u16)y0 * c->vstep));
         for (y = y0; y < y1; y++, v = (r8_u16)(v + c->vstep)) {
             r8_u8 sh = 0;
-            if (y >= b)
+            if (y >= b) {
                 sh = FLOOR_LEVEL;
-            else if (y >= t)
-                sh = texel_level(&tex[c->ti], c, v);
+            } else if (y >= t) {
+                r8_u16 vv = v;        /* the end rows: v rounded out of 0..1 */
+                if (y == t && (vv & 0x8000u))
+                    vv = 0;
+                if (y == b - 1 && !(vv & 0x8000u))
+                    vv = 0xFFFFu;
+                sh = texel_level(&tex[c->ti], c, vv);
+            }
             r8_fb_dot(fb, x, y, sh, 0);
         }
     }
