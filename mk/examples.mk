@@ -218,7 +218,7 @@ maze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/
 maze_fw = if head -c 5 $(EXB)/$(1)/maze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/maze/ram.txt $(2); \
   else $(call maze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/maze/ram.txt)); fi
 
-MAZE_DEPS = $(MAZE_DIR)/fw_maze.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+MAZE_DEPS = $(MAZE_DIR)/fw_maze.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c src/raycast.c
 $(EXB)/%/maze/size.elf: $(MAZE_DEPS) $(EXB)/%/maze/maze.o $(EXB)/%/obj/scene_8.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
 	$(call maze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
 $(EXB)/6502/maze/size.prg: $(MAZE_DEPS) $(EXB)/6502/maze/maze.o $(EXB)/6502/obj/scene_8.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
@@ -243,8 +243,44 @@ $(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx: $(EXB)/z80/maze/ram.txt $(EXB)/maze/maz
 .SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/maze/maze.o $(EXB)/$(t)/obj/scene_8.o) \
   $(EXB)/z80/maze/maze.rel $(EXB)/z80/obj/scene_8.rel
 
+# the textured maze's walk (MAZE_TEXTURED, scenes/maze.c tmaze = scene 10):
+# the same rules under build/x/T/tmaze/, the ray caster's textures only
+TMAZE_XDEFS := $(MAZE_XDEFS) -DMAZE_TEXTURED -DR8_RAY_TEXTURE
+TMAZE_FW    := $(EXB)/avr328/tmaze/tmaze-$(MAZE_FRAMES).elf $(EXB)/avr1284/tmaze/tmaze-$(MAZE_FRAMES).elf \
+  $(EXB)/6502/tmaze/tmaze-$(MAZE_FRAMES).prg $(EXB)/z80/tmaze/tmaze-$(MAZE_FRAMES).ihx
+$(EXB)/%/tmaze/maze.o: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,$*,$@,$<,$(TMAZE_XDEFS))
+$(EXB)/z80/tmaze/maze.rel: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,z80,$@,$<,$(TMAZE_XDEFS))
+tmaze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/$(1)/tmaze/maze.$(3) \
+  $(EXB)/$(1)/obj/scene_10.$(3) -- $(TMAZE_XDEFS) $(4)
+tmaze_fw = if head -c 5 $(EXB)/$(1)/tmaze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/tmaze/ram.txt $(2); \
+  else $(call tmaze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/tmaze/ram.txt)); fi
+$(EXB)/%/tmaze/size.elf: $(MAZE_DEPS) $(EXB)/%/tmaze/maze.o $(EXB)/%/obj/scene_10.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
+	$(call tmaze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/6502/tmaze/size.prg: $(MAZE_DEPS) $(EXB)/6502/tmaze/maze.o $(EXB)/6502/obj/scene_10.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
+	$(call tmaze_link,6502,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/z80/tmaze/size.ihx: $(MAZE_DEPS) $(EXB)/z80/tmaze/maze.rel $(EXB)/z80/obj/scene_10.rel $(EXB)/z80/obj/plat_z80.rel $(EXB)/z80/rast8.lib
+	$(call tmaze_link,z80,$@,rel,-DMAZE_SIZE_ONLY)
+$(EXB)/%/tmaze/ram.txt: tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
+$(EXB)/avr328/tmaze/ram.txt: $(EXB)/avr328/tmaze/size.elf
+$(EXB)/avr1284/tmaze/ram.txt: $(EXB)/avr1284/tmaze/size.elf
+$(EXB)/6502/tmaze/ram.txt: $(EXB)/6502/tmaze/size.prg
+$(EXB)/z80/tmaze/ram.txt: $(EXB)/z80/tmaze/size.ihx
+$(EXB)/%/tmaze/tmaze-$(MAZE_FRAMES).elf: $(EXB)/%/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/%/tmaze/size.elf
+	$(call tmaze_fw,$*,$@,o)
+$(EXB)/6502/tmaze/tmaze-$(MAZE_FRAMES).prg: $(EXB)/6502/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/6502/tmaze/size.prg
+	$(call tmaze_fw,6502,$@,o)
+$(EXB)/z80/tmaze/tmaze-$(MAZE_FRAMES).ihx: $(EXB)/z80/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/z80/tmaze/size.ihx
+	$(call tmaze_fw,z80,$@,rel)
+.SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/tmaze/maze.o $(EXB)/$(t)/obj/scene_10.o) \
+  $(EXB)/z80/tmaze/maze.rel $(EXB)/z80/obj/scene_10.rel
+
 .PHONY: maze-fw test-maze
-maze-fw: $(EXH)/maze $(MAZE_FW)
+maze-fw: $(EXH)/maze $(MAZE_FW) $(TMAZE_FW)
 
 # the host build against a fixed key script, then every target's stream
 # byte for byte against it (tests/examples/maze_check.py)

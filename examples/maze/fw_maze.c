@@ -11,6 +11,9 @@
  *                frame, the firmware waiting for it (lockstep with the
  *                host's script)
  *   MAZE_SIZE_ONLY  print maze_ram() in decimal and stop
+ *   MAZE_TEXTURED  the textured maze (scenes/maze.c tmaze; with
+ *                -DR8_RAY_TEXTURE: the ray caster's textures, no mesh
+ *                texture mapping)
  * Library parts the maze never uses are left out at compile time
  * (the R8_NO_* switches, given by mk/examples.mk): render.c and scan.c
  * are compiled in here with them, so the archive's full renderer is not
@@ -30,6 +33,7 @@
 #include "fw_trim.c"   /* FW_TRIM_LZ77: the LZ77 codec left out */
 #include "render.c"
 #include "scan.c"
+#include "raycast.c"   /* with these switches: textures only if MAZE_TEXTURED */
 #endif
 
 #ifndef MAZE_FRAMES

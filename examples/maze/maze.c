@@ -3,7 +3,29 @@
 #include "r8ray.h"
 #include "plat.h"
 
-extern const r8_grid r8_grid_maze;   /* scenes/maze.c */
+/* The grid (scenes/maze.c): a firmware (MAZE_TRIM) links one, chosen at
+ * build time (MAZE_TEXTURED: the textured maze, R8_SHADE_TEXTURE); the
+ * host links both and maze_textured() chooses. */
+#if defined(MAZE_TRIM) && defined(MAZE_TEXTURED)
+extern const r8_grid r8_grid_tmaze;
+#define GRID (&r8_grid_tmaze)
+#define SHADING R8_SHADE_TEXTURE
+#elif defined(MAZE_TRIM)
+extern const r8_grid r8_grid_maze;
+#define GRID (&r8_grid_maze)
+#else
+extern const r8_grid r8_grid_maze, r8_grid_tmaze;
+static const r8_grid *grid = &r8_grid_maze;
+static r8_u8 shading = R8_SHADE_LAMBERT;
+#define GRID grid
+#define SHADING shading
+
+void maze_textured(int on)
+{
+    grid = on ? &r8_grid_tmaze : &r8_grid_maze;
+    shading = (r8_u8)(on ? R8_SHADE_TEXTURE : R8_SHADE_LAMBERT);
+}
+#endif
 
 static r8_scene scene;
 static r8_camera cam;
@@ -14,7 +36,7 @@ static r8_tx tx;
 
 void maze_start(maze_state *s)
 {
-    const r8_grid *g = &r8_grid_maze;
+    const r8_grid *g = GRID;
     s->x = (r8_s16)((r8_s16)(2 * g->sx + 1) << (g->shift - 1));
     s->z = (r8_s16)((r8_s16)(2 * g->sz + 1) << (g->shift - 1));
     s->yaw = g->syaw;
@@ -24,7 +46,7 @@ void maze_start(maze_state *s)
  * the map)?  The four corners of the walker's box. */
 static int free_at(r8_s16 x, r8_s16 z)
 {
-    const r8_grid *g = &r8_grid_maze;
+    const r8_grid *g = GRID;
     r8_s16 dx, dz;
     for (dx = -MAZE_RADIUS; dx <= MAZE_RADIUS; dx += 2 * MAZE_RADIUS)
         for (dz = -MAZE_RADIUS; dz <= MAZE_RADIUS; dz += 2 * MAZE_RADIUS) {
@@ -77,8 +99,11 @@ static void config(r8_render_cfg *rc, r8_tx_cfg *t)
     scene.nobjects = 0;
     scene.ambient = 0;
     scene.light.x = scene.light.y = scene.light.z = 0;
-    scene.grid = &r8_grid_maze;
+    scene.grid = GRID;
     r8_render_defaults(rc);
+#ifdef SHADING
+    rc->shading = SHADING;
+#endif
     rc->scene = &scene;
     rc->method = R8_VIS_RAY;
     rc->width = MAZE_WIDTH;

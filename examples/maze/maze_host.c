@@ -37,6 +37,7 @@ static void usage(FILE *f)
 "  --rx FILE|-       also read display bytes from FILE or stdin\n"
 "  --log FILE        per frame: 'frame keys x z yaw' (the keys the\n"
 "                    frame was steered by, the camera in world units)\n"
+"  --textured        the textured maze (brick and panel walls, R8_SHADE_TEXTURE)\n"
 "  --print-ram       print the arena the configuration needs and exit\n"
 "  -q                no summary on stderr\n"
 "exit status: 0 ok, 2 bad option or key script, 3 configuration refused,\n"
@@ -135,9 +136,9 @@ int main(int argc, char **argv)
     struct host h;
     maze_cfg cfg;
     const char *out = "-";
-    int i, fd = 1, pty = 0, quiet = 0, rc;
+    int i, fd = 1, pty = 0, quiet = 0, print_ram = 0, rc;
     long baud = 0;
-    unsigned need = maze_ram();
+    unsigned need;
     memset(&h, 0, sizeof h);
     h.rx[0] = h.rx[1] = -1;
     cfg.frames = 64;
@@ -174,15 +175,21 @@ int main(int argc, char **argv)
         } else if (!strcmp(a, "--log")) {
             if (!(h.log = fopen(v, "w")))
                 die(2, "cannot write the log: ", strerror(errno));
+        } else if (!strcmp(a, "--textured")) {
+            maze_textured(1);
         } else if (!strcmp(a, "--print-ram")) {
-            printf("%u bytes\n", need);
-            return need ? 0 : 3;
+            print_ram = 1;
         } else if (!strcmp(a, "-q")) {
             quiet = 1;
         } else {
             die(2, "unknown option (see --help): ", a);
         }
         i += takes;
+    }
+    need = maze_ram();
+    if (print_ram) {
+        printf("%u bytes\n", need);
+        return need ? 0 : 3;
     }
     if (!need || need > sizeof mem)
         die(3, "the library refuses the configuration", "");

@@ -13,7 +13,10 @@ build/x/T/maze/maze-F.* (examples/maze/fw_maze.c, the script compiled in
 and fed through maze_rx after each frame) runs in its simulator and its
 stream must equal the host's byte for byte.  A target the program does
 not fit is reported as skipped with the reason; the ATmega328P and the
-ATmega1284P must run.  Ends with "N passed, N failed".
+ATmega1284P must run.  The textured maze (maze --textured; firmware
+build/x/T/tmaze/tmaze-F.*, -DMAZE_TEXTURED): the same walk (the same
+log), other frames, decoding, and every target identical to the host.
+Ends with "N passed, N failed".
 """
 import argparse
 import json
@@ -68,8 +71,8 @@ def stats(data):
         return {"error": r.stderr.decode()[-200:]}
 
 
-def host_run(frames, keys, log=None):
-    args = [HOST, "-q", "--frames", str(frames), "--out", "-"]
+def host_run(frames, keys, log=None, textured=False):
+    args = [HOST, "-q", "--frames", str(frames), "--out", "-"] + (["--textured"] if textured else [])
     if keys:
         args += ["--keys", keys]
     if log:
@@ -175,7 +178,9 @@ def main():
     a = ap.parse_args()
     os.chdir(ROOT)
     fw = {t: os.path.join("build", "x", t, "maze", "maze-%d.%s" % (a.frames, EXT[t])) for t in a.targets}
-    if identity.make(["build/emu/avrsim", "build/examples/maze", "build/r8raycols"] + sorted(fw.values())):
+    tfw = {t: os.path.join("build", "x", t, "tmaze", "tmaze-%d.%s" % (a.frames, EXT[t])) for t in a.targets}
+    if identity.make(["build/emu/avrsim", "build/examples/maze", "build/r8raycols"] + sorted(fw.values()) +
+                     sorted(tfw.values())):
         print("maze_check: some builds failed (make output above)")
     masks = script(KEYS)
     # ---- the host build
@@ -212,13 +217,24 @@ def main():
           "host: without keys the camera stays put and the stream differs (%d vs %d bytes)"
           % (len(still), len(ref)))
     pty_check()
+    # ---- the textured maze: the same walk, textured frames
+    with tempfile.TemporaryDirectory() as td:
+        tlog = os.path.join(td, "log")
+        rct, tref, err = host_run(a.frames, KEYS, tlog, textured=True)
+        same_walk = os.path.exists(tlog) and [ln.split() for ln in open(tlog)] == \
+            [[str(r["n"]), "%04x" % r["keys"], str(r["x"]), str(r["z"]), str(r["yaw"])] for r in rows]
+    st = stats(tref)
+    check(rct == 0 and same_walk and tref != ref and st.get("frames") == a.frames and
+          not st.get("bad_packets"), "host: maze --textured: the same walk, other frames "
+          "(%d vs %d bytes), %s frames decode %s" % (len(tref), len(ref), st.get("frames"), err))
     # ---- every target against the host
     ran = set()
-    for t in a.targets:
-        path = os.path.join(ROOT, fw[t])
-        name = "%s maze" % t
+    jobs = [(t, fw[t], "maze", ref) for t in a.targets] + [(t, tfw[t], "tmaze", tref) for t in a.targets]
+    for t, fwp, kind, ref in jobs:
+        path = os.path.join(ROOT, fwp)
+        name = "%s %s" % (t, kind)
         if not os.path.exists(path):
-            check(False, "%s: %s not built (make output above)" % (name, fw[t]))
+            check(False, "%s: %s not built (make output above)" % (name, fwp))
             continue
         why = identity.is_skip(path)
         if why:
@@ -242,10 +258,11 @@ def main():
         if check(rc == 0 and data == ref, "%s: %d frames, %d bytes %s the host's (%s)%s"
                  % (name, a.frames, len(data), "identical to" if data == ref else
                     "DIFFER at byte %d from" % at, extra, "" if rc == 0 else "; exit %d" % rc)):
-            ran.add(t)
+            ran.add((t, kind))
     for t in ("avr328", "avr1284"):
         if t in a.targets:
-            check(t in ran, "mandatory: the %s runs the maze, identical" % identity.MCU[t])
+            for kind in ("maze", "tmaze"):
+                check((t, kind) in ran, "mandatory: the %s runs the %s, identical" % (identity.MCU[t], kind))
     print("%d targets skipped (reasons above)" % skipped)
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0
