@@ -84,7 +84,7 @@ typedef struct ray_state {
 #if RAY_TEX
 /* A textured column: v is the wall's height fraction, 0.16 (65536 =
  * the texture's height), at the centre of screen row 0 (modulo 2^16:
- * only the low bits are used) and its step per row. */
+ * only the wall's rows are read) and its step per row. */
 typedef struct tcol {
     r8_u8 half, lv, tu, ti;  /* half height, level, texel column, texture */
     r8_u16 v0, vstep;
@@ -180,8 +180,15 @@ static r8_u16 height16(r8_u16 a, r8_s16 ad, r8_s8 k)
 }
 
 /* The DDA for one ray of direction (dx, dz). */
+#if RAY_TEX
+#define CAST(g, s, dx, dz, hit, want_u) cast(g, s, dx, dz, hit, want_u)
 static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_ray_hit *hit,
                  r8_u8 want_u)
+#else
+/* (without textures: no u, and no argument for it: the 6502 pays for each) */
+#define CAST(g, s, dx, dz, hit, want_u) cast(g, s, dx, dz, hit)
+static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_ray_hit *hit)
+#endif
 {
     const r8_u8 *cells = g->cells;
     r8_u8 shift = g->shift, w = g->w, h = g->h;
@@ -193,7 +200,9 @@ static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_
     r8_u8 side = 0, v = 0;
     hit->h16 = 0;
     hit->side = 0;
+#if RAY_TEX
     hit->u = 0;
+#endif
     hit->cell = 0;
     hit->cx = hit->cz = 0;
     if (s->px < 0 || s->pz < 0)
@@ -275,9 +284,7 @@ static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_
     hit->cx = (r8_u8)cx;
     hit->cz = (r8_u8)cz;
     hit->h16 = height16(a, side ? adz : adx, s->k);
-#if !RAY_TEX
-    (void)want_u;
-#else
+#if RAY_TEX
     if (want_u) {
         /* Where on the face: the DDA's own fraction.  Crossing an x
          * boundary at "time" exh = ex - ix (in units of 1 / (adx adz)),
@@ -332,7 +339,10 @@ int r8_ray_cast(const r8_grid *g, const r8_camera *cam, r8_s16 width, r8_s16 x,
         return -1;
     setup(g, cam, width, &s);
     u = (r8_s16)(2 * x);
-    cast(g, &s, s.dx + r8_mul16(u, r8_cos(cam->yaw)), s.dz - r8_mul16(u, r8_sin(cam->yaw)), hit, 1);
+#if !RAY_TEX
+    hit->u = 0;
+#endif
+    CAST(g, &s, s.dx + r8_mul16(u, r8_cos(cam->yaw)), s.dz - r8_mul16(u, r8_sin(cam->yaw)), hit, 1);
     return 0;
 }
 
@@ -433,27 +443,10 @@ int r8_ray_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned wo
     return 0;
 }
 
-/* A column's wall level: the cell's, 3/4 across z, dimmed with
- * distance (Lambert and texture shading) */
-static r8_u8 level_of(const ray_state *st, const r8_ray_hit *hit, r8_u16 half)
-{
-    r8_u8 lv = hit->cell > 16 ? 16 : hit->cell;
-    if (hit->side)
-        lv = (r8_u8)(lv - (lv >> 2));
-    if (st->shading != R8_SHADE_FLAT && half) {
-        r8_u16 hp = (r8_u16)(hit->h16 >> 4);
-        if (hp > st->full)
-            hp = st->full;
-        lv = (r8_u8)(((r8_u16)lv * hp) >> st->hb);
-        if (lv < WALL_MIN)
-            lv = WALL_MIN;
-    }
-    return lv;
-}
-
 #if RAY_TEX
 /* v's step per screen row for a wall h16 / 16 pixels tall: 2^20 / h16
- * (0.16 of the wall), from the reciprocal table (h16 to 8 bits, rounded) */
+ * (0.16 of the wall), from the reciprocal table of the heights (h16 to
+ * 8 bits, rounded) */
 static r8_u16 vstep_of(r8_u16 h)
 {
     r8_u16 m = h, t = h;
@@ -482,41 +475,6 @@ static r8_u16 vstep_of(r8_u16 h)
     }
     return p > 0xFFFFul ? 0xFFFFu : (r8_u16)p;
 }
-
-static void frame_tex(ray_state *st, const ray_setup *s)
-{
-    const r8_grid *g = st->grid;
-    r8_ray_hit hit;
-    r8_s32 dx = s->dx, dz = s->dz, p;
-    r8_s16 x;
-    tcol *c = (tcol *)(void *)st->col;
-    r8_s16 cy2 = (r8_s16)(2 * (st->height >> 1) - 1);
-    for (x = 0; x < st->width; x++, c++) {
-        r8_u16 half;
-        const r8_texture *t;
-        r8_u8 ti;
-        cast(g, s, dx, dz, &hit, 1);
-        dx += s->stx;
-        dz += s->stz;
-        half = (r8_u16)((hit.h16 >> 5) + ((hit.h16 >> 4) & 1u));
-        if (half > st->cap)
-            half = st->cap;
-        c->half = (r8_u8)half;
-        c->lv = level_of(st, &hit, half);
-        ti = (r8_u8)(hit.cell ? (r8_u8)(hit.cell - 1u) % g->ntex : 0);
-        t = &g->tex[ti];
-        c->ti = ti;
-        c->tu = (r8_u8)(hit.u >> (8 - t->wlog));
-        c->vstep = vstep_of(hit.h16);
-        /* v at the centre of row 0: the wall's middle (v = 1/2) is at the
-         * screen's (the eye's height), row 0's centre cy - 1/2 rows above
-         * it; so only the step's error, times the rows from the middle,
-         * and a wall taller than the screen starts inside its texture */
-        p = cy2;
-        p *= (r8_s32)c->vstep;
-        c->v0 = (r8_u16)(0x8000u - (r8_u16)(p >> 1));
-    }
-}
 #endif
 
 void r8_ray_frame(r8_render *r, const r8_camera *cam)
@@ -527,42 +485,83 @@ void r8_ray_frame(r8_render *r, const r8_camera *cam)
     r8_s32 dx, dz;
     r8_s16 x;
     r8_u8 *c = st->col;
-    setup(st->grid, cam, st->width, &s);
 #if RAY_TEX
-    if (st->tex) {
-        frame_tex(st, &s);
-        return;
-    }
+    const r8_grid *g = st->grid;
+    r8_s16 cy2 = (r8_s16)(2 * (st->height >> 1) - 1);
 #endif
+    setup(st->grid, cam, st->width, &s);
     dx = s.dx;
     dz = s.dz;
-    for (x = 0; x < st->width; x++, c += 2) {
+    for (x = 0; x < st->width; x++) {
         r8_u16 half;
-        cast(st->grid, &s, dx, dz, &hit, 0);
+        r8_u8 lv;
+        CAST(st->grid, &s, dx, dz, &hit, st->tex);
         dx += s.stx;
         dz += s.stz;
         half = (r8_u16)((hit.h16 >> 5) + ((hit.h16 >> 4) & 1u));   /* h / 2, rounded */
         if (half > st->cap)
             half = st->cap;
+        lv = hit.cell > 16 ? 16 : hit.cell;
+        if (hit.side)
+            lv = (r8_u8)(lv - (lv >> 2));
+        if (st->shading != R8_SHADE_FLAT && half) {   /* Lambert, texture */
+            r8_u16 hp = (r8_u16)(hit.h16 >> 4);
+            if (hp > st->full)
+                hp = st->full;
+            lv = (r8_u8)(((r8_u16)lv * hp) >> st->hb);
+            if (lv < WALL_MIN)
+                lv = WALL_MIN;
+        }
+#if RAY_TEX
+        if (st->tex) {
+            tcol *tc = (tcol *)(void *)c;
+            const r8_texture *t;
+            r8_s32 p;
+            tc->half = (r8_u8)half;
+            tc->lv = lv;
+            tc->ti = (r8_u8)(hit.cell ? (r8_u8)(hit.cell - 1u) % g->ntex : 0);
+            t = &g->tex[tc->ti];
+            tc->tu = (r8_u8)(hit.u >> (8 - t->wlog));
+            tc->vstep = vstep_of(hit.h16);
+            /* v at the centre of row 0: the wall's middle (v = 1/2) is at
+             * the screen's (the eye's height), row 0's centre cy - 1/2
+             * rows above it; so only the step's error counts, times the
+             * rows from the middle (at most cy), and a wall taller than
+             * the screen starts inside its texture */
+            p = cy2;
+            p *= (r8_s32)tc->vstep;
+            tc->v0 = (r8_u16)(0x8000u - (r8_u16)(p >> 1));
+            c += sizeof(tcol);
+            continue;
+        }
+#endif
         c[0] = (r8_u8)half;
-        c[1] = level_of(st, &hit, half);
+        c[1] = lv;
+        c += 2;
     }
 }
 
 #if RAY_TEX
 /* The level of the texel of column c at v: the texel (0..255) times the
  * column's level, as texture.c */
-static r8_u8 texel_level(const r8_texture *t, const tcol *c, r8_u16 v)
+static r8_u8 texel_level(const r8_texture *t, const tcol *c, r8_u8 tv)
 {
-    r8_u16 tv = (r8_u16)(v >> (16 - t->hlog)), tl;
+    r8_u16 tl;
     if (t->format == R8_TEX_IDX8) {
-        tl = R8_RDU8(t->data + (tv << t->wlog) + c->tu);
+        tl = R8_RDU8(t->data + ((r8_u16)tv << t->wlog) + c->tu);
         return (r8_u8)(((tl + (tl >> 7)) * c->lv + 128u) >> 8);
     }
-    if (R8_RDU8(t->data + (tv << (t->wlog - 3)) + (c->tu >> 3)) & (0x80u >> (c->tu & 7u)))
+    if (R8_RDU8(t->data + ((r8_u16)tv << (t->wlog - 3)) + (c->tu >> 3)) & (0x80u >> (c->tu & 7u)))
         return c->lv;
     return 0;
 }
+
+/* The texel row of v (0.16 of the wall) in a texture 2^(8 - s8) rows
+ * tall: v's high byte >> s8 (an 8-bit shift); on the wall's last row
+ * (last), v rounded past the bottom (wrapped below 1/2) is the bottom
+ * row, hm.  Below 2^(8 - s8) whatever v: no read outside the texture. */
+#define TEXROW(v, s8, hm, last) ((r8_u8)((last) && !((v) & 0x8000u) ? (hm) : \
+                                         (r8_u8)((v) >> 8) >> (s8)))
 
 static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
 {
@@ -579,7 +578,7 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
             c = (const tcol *)(const void *)st->col;
             for (x = 0; x < w; x++, c++, p++, ph = (r8_u8)((ph + 1u) & 3u)) {
                 r8_u8 top = (r8_u8)(cy8 - c->half), bot = (r8_u8)(cy8 + c->half);
-                r8_u8 ra, rb, bit, last, out = 0, fm = 0;
+                r8_u8 ra, rb, bit, last, s8, hm, out = 0, fm = 0;
                 const r8_texture *t;
                 r8_u16 v, vs;
                 if (bot <= yt) {
@@ -597,6 +596,8 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
                     fm = R8_RDU8(&from_row[rb]);
                 }
                 t = &tex[c->ti];
+                s8 = (r8_u8)(8 - t->hlog);
+                hm = (r8_u8)(0xFFu >> s8);
                 vs = c->vstep;
                 v = (r8_u16)(c->v0 + (r8_u16)((r8_u16)(yt + ra) * vs));
                 if (top >= yt && (v & 0x8000u))
@@ -605,17 +606,15 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
                 bit = (r8_u8)(R8_RDU8(&from_row[ra]) & (r8_u8)~R8_RDU8(&from_row[ra + 1u]));
                 if (t->format == R8_TEX_IDX8) {
                     for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
-                        if (ra == last && !(v & 0x8000u))
-                            v = 0xFFFFu;      /* the bottom row: rounded past 1 */
-                        out = (r8_u8)(out | (R8_RDU8(&colpat[((unsigned)texel_level(t, c, v) << 2) | ph]) & bit));
+                        r8_u8 tv = TEXROW(v, s8, hm, ra == last);
+                        out = (r8_u8)(out | (R8_RDU8(&colpat[((unsigned)texel_level(t, c, tv) << 2) | ph]) & bit));
                     }
                 } else {
                     const r8_u8 *d = t->data + (c->tu >> 3);
-                    r8_u8 hs = (r8_u8)(16 - t->hlog), rs = (r8_u8)(t->wlog - 3), tb = (r8_u8)(0x80u >> (c->tu & 7u));
+                    r8_u8 rs = (r8_u8)(t->wlog - 3), tb = (r8_u8)(0x80u >> (c->tu & 7u));
                     for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
-                        if (ra == last && !(v & 0x8000u))
-                            v = 0xFFFFu;
-                        if (R8_RDU8(d + ((v >> hs) << rs)) & tb)
+                        r8_u8 tv = TEXROW(v, s8, hm, ra == last);
+                        if (R8_RDU8(d + ((unsigned)tv << rs)) & tb)
                             out = (r8_u8)(out | bit);
                     }
                     out = (r8_u8)(out & R8_RDU8(&colpat[((unsigned)c->lv << 2) | ph]));
@@ -635,12 +634,11 @@ static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
             if (y >= b) {
                 sh = FLOOR_LEVEL;
             } else if (y >= t) {
-                r8_u16 vv = v;        /* the end rows: v rounded out of 0..1 */
+                const r8_texture *tx = &tex[c->ti];
+                r8_u16 vv = v;        /* the end rows: v rounded out of the texture */
                 if (y == t && (vv & 0x8000u))
                     vv = 0;
-                if (y == b - 1 && !(vv & 0x8000u))
-                    vv = 0xFFFFu;
-                sh = texel_level(&tex[c->ti], c, vv);
+                sh = texel_level(tx, c, TEXROW(vv, (r8_u8)(8 - tx->hlog), (r8_u8)(0xFFu >> (8 - tx->hlog)), y == b - 1));
             }
             r8_fb_dot(fb, x, y, sh, 0);
         }
