@@ -38,10 +38,13 @@ FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(F
 
 ALL_TARGETS += $(EXH)/flythrough
 
-$(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/plat_host.h $(FLY_HDR) $(LIBS)
+# the keyed walks' host program (flythrough, maze): examples/common
+WALK_HOST := examples/common/walk_host.c
+WALK_DEPS := $(WALK_HOST) examples/common/walk_host.h
+$(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/plat_host.h $(FLY_HDR) $(LIBS) $(WALK_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(FLY_DIR) $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c \
-	  emu/plat_host.c $(LIBS) -o $@
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(FLY_DIR) -Iexamples/common $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c \
+	  $(WALK_HOST) emu/plat_host.c $(LIBS) -o $@
 
 # the key script as the INPUT packets a display sends (fw_fly.c FLY_KEYS)
 # (and as bytes for the UART: emu/avrsim -i, the FLY_UART firmware)
@@ -197,10 +200,10 @@ MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/ma
 
 ALL_TARGETS += $(EXH)/maze
 
-$(EXH)/maze: $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c emu/plat_host.c emu/plat_host.h $(MAZE_HDR) $(LIBS)
+$(EXH)/maze: $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c emu/plat_host.c emu/plat_host.h $(MAZE_HDR) $(LIBS) $(WALK_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(MAZE_DIR) $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c \
-	  emu/plat_host.c $(LIBS) -o $@
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(MAZE_DIR) -Iexamples/common $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c \
+	  $(WALK_HOST) emu/plat_host.c $(LIBS) -o $@
 
 $(EXB)/maze/maze_keys.h: $(MAZE_KEYS) $(FLY_DIR)/keys2c.py $(SETUP)
 	@mkdir -p $(dir $@)
