@@ -30,7 +30,7 @@ FLY_TARGETS := avr328 avr1284 6502 z80
 # meshes with their normals; it keeps the clipper
 # the parts no mesh example firmware uses (each costs flash when linked)
 EX_NEW_OFF := -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL -DR8_NO_RAY
-FLY_XDEFS  := -Isrc -I$(FLY_DIR) -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+FLY_XDEFS  := -Isrc -I$(FLY_DIR) -Iexamples/common -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
   -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_TEXTURE \
   $(EX_NEW_OFF)
 FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(FLY_FRAMES).elf \
@@ -66,7 +66,7 @@ fly_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(FLY_DIR)/fw_fly.c $(EXB)/$(1
 fly_fw = if head -c 5 $(EXB)/$(1)/fly/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/fly/ram.txt $(2); \
   else $(call fly_link,$(1),$(2),$(3),-DFLY_KEYS -DFLY_FRAMES=$(FLY_FRAMES) -DFLY_RAM=$$(cat $(EXB)/$(1)/fly/ram.txt)); fi
 
-FLY_DEPS = $(FLY_DIR)/fw_fly.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+FLY_DEPS = $(FLY_DIR)/fw_fly.c examples/common/fw_walk.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
 $(EXB)/%/fly/size.elf: $(FLY_DEPS) $(EXB)/%/fly/fly.o $(EXB)/%/obj/scene_3.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
 	$(call fly_link,$*,$@,o,-DFLY_SIZE_ONLY)
 $(EXB)/6502/fly/size.prg: $(FLY_DEPS) $(EXB)/6502/fly/fly.o $(EXB)/6502/obj/scene_3.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
@@ -192,7 +192,7 @@ MAZE_FRAMES := 56
 MAZE_TARGETS := avr328 avr1284 6502 z80
 # the walk is the ray caster only: every mesh method, Gouraud, the
 # clipper and run-time normals left out (render.c and scan.c compiled in)
-MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -Iexamples/common -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
   -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP \
   -DR8_NO_TEXTURE -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL
 MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/maze-$(MAZE_FRAMES).elf \
@@ -221,7 +221,7 @@ maze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/
 maze_fw = if head -c 5 $(EXB)/$(1)/maze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/maze/ram.txt $(2); \
   else $(call maze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/maze/ram.txt)); fi
 
-MAZE_DEPS = $(MAZE_DIR)/fw_maze.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c src/raycast.c
+MAZE_DEPS = $(MAZE_DIR)/fw_maze.c examples/common/fw_walk.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c src/raycast.c
 $(EXB)/%/maze/size.elf: $(MAZE_DEPS) $(EXB)/%/maze/maze.o $(EXB)/%/obj/scene_8.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
 	$(call maze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
 $(EXB)/6502/maze/size.prg: $(MAZE_DEPS) $(EXB)/6502/maze/maze.o $(EXB)/6502/obj/scene_8.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
