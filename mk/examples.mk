@@ -21,7 +21,7 @@ ex_cc = $(if $(filter avr%,$(1)),avr-gcc -mmcu=$(if $(filter avr328,$(1)),atmega
 
 # ---- flythrough
 FLY_DIR    := examples/flythrough
-FLY_HDR    := $(FLY_DIR)/fly.h $(EX_HDRS)
+FLY_HDR    := $(FLY_DIR)/fly.h examples/common/walk_loop.c $(EX_HDRS)
 FLY_KEYS   := tests/examples/fly.keys
 FLY_FRAMES := 24
 FLY_TARGETS := avr328 avr1284 6502 z80
@@ -186,7 +186,7 @@ TEST_STEPS += test-two-objects test-examples-c89
 #   build/x/T/maze/maze-F.*       its firmware for target T (F frames, the
 #                                 test key script compiled in)
 MAZE_DIR    := examples/maze
-MAZE_HDR    := $(MAZE_DIR)/maze.h $(EX_HDRS)
+MAZE_HDR    := $(MAZE_DIR)/maze.h examples/common/walk_loop.c $(EX_HDRS)
 MAZE_KEYS   := tests/examples/maze.keys
 MAZE_FRAMES := 56
 MAZE_TARGETS := avr328 avr1284 6502 z80

@@ -3,10 +3,10 @@
  * examples/maze/fw_maze.c after their library trims: the application's
  * loop over a static arena, streaming through the port's plat.h.  The
  * including file names its application and maps its switches:
- *   WALK_CFG, WALK_RUN, WALK_RAM_FN, WALK_RX   its cfg type, run, ram and
- *                rx functions (fly.h, maze.h)
+ *   WALK_FN(x)   its names, fly_##x: fly_cfg, fly_run, fly_ram, fly_rx
+ *                (fly.h, maze.h)
  *   WALK_FRAMES  frames to stream (default 24)
- *   WALK_RAM     the arena: WALK_RAM_FN() measured on this target (the
+ *   WALK_RAM     the arena: WALK_FN(ram)() measured on this target (the
  *                build runs the firmware with WALK_SIZE_ONLY first,
  *                mk/examples.mk)
  *   WALK_KEYS    include WALK_KEYS_H: a key script compiled in (below;
@@ -16,12 +16,12 @@
  *                (plat_getc; emu/avrsim -i feeds them), one after each
  *                frame, the firmware waiting for it (lockstep with the
  *                host's script)
- *   WALK_SIZE_ONLY  print WALK_RAM_FN() in decimal and stop
+ *   WALK_SIZE_ONLY  print WALK_FN(ram)() in decimal and stop
  *
- * Input: a real board's UART receive interrupt calls WALK_RX(c) for
+ * Input: a real board's UART receive interrupt calls WALK_FN(rx)(c) for
  * every byte from the display.  The simulators here have no receive
  * path, so a test firmware compiles the key script in: after frame N it
- * feeds script line N's INPUT packet, byte by byte, to WALK_RX - the
+ * feeds script line N's INPUT packet, byte by byte, to WALK_FN(rx) - the
  * bytes a display sends, through the receive parser (r8_tx_rx) a UART
  * interrupt would call.  The host build (examples/common/walk_host.c)
  * reads the same script at run time and builds the packets with the C
@@ -35,7 +35,7 @@ int main(void)
 {
     char d[6];
     int n = 0;
-    unsigned v = WALK_RAM_FN();
+    unsigned v = WALK_FN(ram)();
     plat_init();
     do {
         d[n++] = (char)('0' + v % 10u);
@@ -70,9 +70,9 @@ static int feed(void *ctx, r8_u16 frame)
         int c;
         while ((c = plat_getc()) < 0)
             ;                  /* the packet's next byte from the display */
-        WALK_RX((r8_u8)c);
+        WALK_FN(rx)((r8_u8)c);
 #else
-        WALK_RX(R8_RDU8(&fly_key_bytes[i]));
+        WALK_FN(rx)(R8_RDU8(&fly_key_bytes[i]));
 #endif
     }
     return 0;
@@ -81,7 +81,7 @@ static int feed(void *ctx, r8_u16 frame)
 
 int main(void)
 {
-    WALK_CFG cfg;
+    WALK_FN(cfg) cfg;
     plat_init();
     cfg.frames = WALK_FRAMES;
     cfg.on_frame = 0;
@@ -89,7 +89,7 @@ int main(void)
 #ifdef WALK_KEYS
     cfg.on_frame = feed;
 #endif
-    plat_exit(WALK_RUN(&cfg, mem, sizeof mem));
+    plat_exit(WALK_FN(run)(&cfg, mem, sizeof mem));
     return 0;
 }
 #endif

@@ -26,10 +26,7 @@
 #endif
 
 /* the walk's main (examples/common/fw_walk.c) for the flythrough */
-#define WALK_CFG fly_cfg
-#define WALK_RUN fly_run
-#define WALK_RAM_FN fly_ram
-#define WALK_RX fly_rx
+#define WALK_FN(x) fly_##x
 #define WALK_KEYS_H "fly_keys.h"
 #ifdef FLY_FRAMES
 #define WALK_FRAMES FLY_FRAMES

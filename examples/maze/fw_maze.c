@@ -32,10 +32,7 @@
 #endif
 
 /* the walk's main (examples/common/fw_walk.c) for the maze */
-#define WALK_CFG maze_cfg
-#define WALK_RUN maze_run
-#define WALK_RAM_FN maze_ram
-#define WALK_RX maze_rx
+#define WALK_FN(x) maze_##x
 #define WALK_KEYS_H "maze_keys.h"
 #ifdef MAZE_FRAMES
 #define WALK_FRAMES MAZE_FRAMES

@@ -28,11 +28,6 @@ void maze_textured(int on)
 #endif
 
 static r8_scene scene;
-static r8_camera cam;
-static maze_state st;
-static r8_render ren;
-static r8_fb band;
-static r8_tx tx;
 
 void maze_start(maze_state *s)
 {
@@ -93,7 +88,8 @@ void maze_camera(const maze_state *s, r8_camera *c)
     c->yaw = s->yaw;
 }
 
-static void config(r8_render_cfg *rc, r8_tx_cfg *t)
+/* the scene and the renderer's configuration (walk_loop.c: the rest) */
+static int scene_config(r8_render_cfg *rc)
 {
     scene.objects = 0;
     scene.nobjects = 0;
@@ -109,92 +105,9 @@ static void config(r8_render_cfg *rc, r8_tx_cfg *t)
     rc->width = MAZE_WIDTH;
     rc->height = MAZE_HEIGHT;
     rc->band = MAZE_BAND;
-    t->format = rc->format;
-    t->width = MAZE_WIDTH;
-    t->height = MAZE_HEIGHT;
-    t->band = MAZE_BAND;
-    t->codec = R8_CODEC_RLE;
-    t->full_period = 32;
-    t->dirty = 1;
-    t->palette = 0;
-    t->npal = 0;
+    return 1;
 }
 
-static unsigned plan(r8_render_cfg *rc, r8_tx_cfg *t, unsigned *work, unsigned *fb)
-{
-    unsigned s;
-    config(rc, t);
-    *work = r8_render_ram(rc);
-    *fb = r8_fb_bytes(t->format, t->width, t->band);
-    s = r8_tx_scratch(t);
-    if (!*work || !*fb || !s || *work > 0xFFFFu - *fb - s)
-        return 0;
-    return *work + *fb + s;
-}
-
-unsigned maze_ram(void)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned w, b;
-    return plan(&rc, &t, &w, &b);
-}
-
-static void put(void *ctx, const r8_u8 *p, unsigned n)
-{
-    (void)ctx;
-    plat_write(p, n);
-}
-
-int maze_run(const maze_cfg *cfg, r8_u8 *mem, unsigned mem_size)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned work, fb, total = plan(&rc, &t, &work, &fb);
-    r8_u16 i;
-    r8_s16 y;
-    if (!total)
-        return MAZE_E_CFG;
-    if (mem_size < total)
-        return MAZE_E_RAM;
-    if (r8_render_init(&ren, &rc, mem, work) ||
-        r8_fb_init(&band, mem + work, t.format, t.width, t.height, 0, t.band) ||
-        r8_tx_init(&tx, &t, mem + work + fb, total - work - fb, put, 0))
-        return MAZE_E_CFG;
-    maze_start(&st);
-    plat_mark(PLAT_MARK_START);
-    r8_tx_sync(&tx);
-    for (i = 0; !cfg->frames || i < cfg->frames; i++) {
-        plat_mark(PLAT_MARK_FRAME_BEGIN);
-        maze_steer(&st, tx.keys);        /* the keys received so far */
-        maze_camera(&st, &cam);
-        r8_render_frame(&ren, &cam);
-        r8_tx_frame_begin(&tx, i);
-        for (y = 0; y < MAZE_HEIGHT; y = (r8_s16)(y + MAZE_BAND)) {
-            r8_fb_set_band(&band, y);
-            r8_render_band(&ren, &band);
-            r8_tx_band(&tx, &band);
-        }
-        r8_tx_frame_end(&tx);
-        plat_mark(PLAT_MARK_FRAME_END);
-        if (cfg->on_frame && cfg->on_frame(cfg->ctx, i))
-            break;
-    }
-    plat_mark(PLAT_MARK_DONE);
-    return MAZE_OK;
-}
-
-void maze_rx(r8_u8 c)
-{
-    r8_tx_rx(&tx, c);
-}
-
-r8_u16 maze_keys(void)
-{
-    return tx.keys;
-}
-
-const maze_state *maze_where(void)
-{
-    return &st;
-}
+#define WALK_FN(x) maze_##x
+#define WALK_UC(x) MAZE_##x
+#include "walk_loop.c"   /* the arena, the frame loop, rx (examples/common) */
