@@ -67,30 +67,10 @@ def main():
     extra = ["build/x/avr1284/fly/fly-uart-%d.elf" % a.frames] if "avr1284" in a.targets else []
     if identity.make(["build/emu/avrsim", "build/examples/flythrough"] + sorted(fw.values()) + extra):
         print("fly_check: some builds failed (make output above)")
-    masks = W.script(KEYS)
     # ---- the host build
-    with tempfile.TemporaryDirectory() as td:
-        log = os.path.join(td, "log")
-        rc, ref, err = host_run(a.frames, KEYS, log)
-        rows = []
-        if os.path.exists(log):
-            for line in open(log):
-                f = line.split()
-                rows.append({"n": int(f[0]), "keys": int(f[1], 16), "x": int(f[2]), "y": int(f[3]),
-                             "z": int(f[4]), "yaw": int(f[5]), "pitch": int(f[6]), "faces": int(f[7]),
-                             "clipped": int(f[8]), "dropped": int(f[9])})
-    if not check(rc == 0 and ref, "host: flythrough --keys %s --frames %d: exit %d, %d bytes %s"
-                 % (os.path.relpath(KEYS, ROOT), a.frames, rc, len(ref), err)):
+    ref, rows, masks = W.host_keyed(HOST, "flythrough", KEYS, a.frames, ["n", "keys", "x", "y", "z", "yaw", "pitch", "faces", "clipped", "dropped"])
+    if ref is None:
         return W.summary()
-    st = W.stats(ref)
-    check(st.get("frames") == a.frames and not st.get("bad_packets") and not st.get("incomplete"),
-          "host: the stream decodes (rast8 stats): %s frames, %s bad packets, %s incomplete"
-          % (st.get("frames"), st.get("bad_packets"), st.get("incomplete")))
-    want = [0] + masks[:a.frames - 1]
-    want += [want[-1]] * (a.frames - len(want))
-    got = [r["keys"] for r in rows]
-    check(got == want, "host: frame N steered by script line N-1 (frame 0 by none): %s"
-          % ("yes" if got == want else "log %s, script %s" % (got, want)))
     bad = steering(rows, masks)
     check(not bad and len(rows) == a.frames,
           "host: the camera follows the keys over %d frames (turn %d, tilt %d, moves)%s"

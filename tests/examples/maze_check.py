@@ -97,29 +97,10 @@ def main():
     if identity.make(["build/emu/avrsim", "build/examples/maze", "build/r8raycols"] + sorted(fw.values()) +
                      sorted(tfw.values())):
         print("maze_check: some builds failed (make output above)")
-    masks = W.script(KEYS)
     # ---- the host build
-    with tempfile.TemporaryDirectory() as td:
-        log = os.path.join(td, "log")
-        rc, ref, err = host_run(a.frames, KEYS, log)
-        rows = []
-        if os.path.exists(log):
-            for line in open(log):
-                f = line.split()
-                rows.append({"n": int(f[0]), "keys": int(f[1], 16), "x": int(f[2]), "z": int(f[3]),
-                             "yaw": int(f[4])})
-    if not check(rc == 0 and ref, "host: maze --keys %s --frames %d: exit %d, %d bytes %s"
-                 % (os.path.relpath(KEYS, ROOT), a.frames, rc, len(ref), err)):
+    ref, rows, masks = W.host_keyed(HOST, "maze", KEYS, a.frames, ["n", "keys", "x", "z", "yaw"])
+    if ref is None:
         return W.summary()
-    st = W.stats(ref)
-    check(st.get("frames") == a.frames and not st.get("bad_packets") and not st.get("incomplete"),
-          "host: the stream decodes (rast8 stats): %s frames, %s bad packets, %s incomplete"
-          % (st.get("frames"), st.get("bad_packets"), st.get("incomplete")))
-    want = [0] + masks[:a.frames - 1]
-    want += [want[-1]] * (a.frames - len(want))
-    got = [r["keys"] for r in rows]
-    check(got == want, "host: frame N steered by script line N-1 (frame 0 by none): %s"
-          % ("yes" if got == want else "log %s, script %s" % (got, want)))
     bad = steering(rows, masks)
     check(not bad and len(rows) == a.frames,
           "host: the camera follows the keys over %d frames (turn %d, step %d, %d from walls)%s"

@@ -66,6 +66,36 @@ def host_run(host, frames, keys, log=None, extra=()):
     return r.returncode, r.stdout, r.stderr.decode("latin-1").strip()
 
 
+def host_keyed(host, name, keys, frames, fields, extra=()):
+    """The host build over the key script `keys` with --log: it ran, its
+    stream decodes to `frames` good frames, and frame N was steered by
+    script line N-1 (the log's key column).  Returns (the stream or None,
+    the log's rows as dicts of `fields`, the script's masks)."""
+    import tempfile
+    masks = script(keys)
+    with tempfile.TemporaryDirectory() as td:
+        log = os.path.join(td, "log")
+        rc, ref, err = host_run(host, frames, keys, log, extra)
+        rows = []
+        if os.path.exists(log):
+            for line in open(log):
+                f = line.split()
+                rows.append({k: int(v, 16 if k == "keys" else 10) for k, v in zip(fields, f)})
+    if not check(rc == 0 and ref, "host: %s --keys %s --frames %d: exit %d, %d bytes %s"
+                 % (name, os.path.relpath(keys, ROOT), frames, rc, len(ref), err)):
+        return None, rows, masks
+    st = stats(ref)
+    check(st.get("frames") == frames and not st.get("bad_packets") and not st.get("incomplete"),
+          "host: the stream decodes (rast8 stats): %s frames, %s bad packets, %s incomplete"
+          % (st.get("frames"), st.get("bad_packets"), st.get("incomplete")))
+    want = [0] + masks[:frames - 1]
+    want += [want[-1]] * (frames - len(want))
+    got = [r["keys"] for r in rows]
+    check(got == want, "host: frame N steered by script line N-1 (frame 0 by none): %s"
+          % ("yes" if got == want else "log %s, script %s" % (got, want)))
+    return ref, rows, masks
+
+
 def pty_check(host, name, keys, label):
     """The live path: `name` --pty, a reader on the pty sends INPUT
     packets as `rast8 view` does; the frames stand still until the key
