@@ -617,6 +617,13 @@ def scene_md(recs):
             fmt(r["ram_static_bytes"]), fmt(r["stack_peak_bytes"]), fmt(r["flash_bytes"]),
             r["wire_bytes_per_frame"] if r["wire_bytes_per_frame"] is not None else "-",
             r["skipped"] or fmt(r["identical_to_host"])))
+    for r in [r for r in recs if "texel_wrong_rate" in r][:1]:
+        out.append("")
+        out.append("Textured maze (tmaze) against the float ray caster sampling its textures at "
+                   "each wall pixel's centre (rast8.raycast_ref --scene tmaze, 200 cameras): wrong "
+                   "pixels per frame mean %.1f, max %d (%.2f %% of wall pixels); level error mean "
+                   "%.4f." % (r["texel_wrong_pixels_per_frame_mean"], r["texel_wrong_pixels_per_frame_max"],
+                              100 * r["texel_wrong_rate"], r["texel_level_error_mean"]))
     for r in recs[:1]:
         if "wall_height_error_max_px" in r:
             out.append("")
@@ -633,14 +640,15 @@ def git_rev():
     return r.stdout.decode().strip() or "?"
 
 
-def ray_figures():
+def ray_figures(scene="maze"):
     """The ray caster's wall-height error per column against the float
-    caster (host/rast8/raycast_ref.py over 200 cameras in the maze)."""
+    caster (host/rast8/raycast_ref.py over 200 cameras in the maze); the
+    textured maze's also its texel error ("tex")."""
     if idt.make(["build/r8raycols"]):
         return None
     sys.path.insert(0, os.path.join(ROOT, "host"))
     from rast8 import raycast_ref  # noqa: E402
-    return raycast_ref.run(os.path.join(ROOT, "build", "r8raycols"), 200)
+    return raycast_ref.run(os.path.join(ROOT, "build", "r8raycols"), 200, scene=scene)
 
 
 PORTAL_SCENE = 9                 # rooms (scenes/demo.h R8_DEMO_ROOMS)
@@ -828,7 +836,14 @@ def main():
                              SHADINGS.index(r["shading"])))
     if any(r["method"] == "ray" for r in recs):
         fig = ray_figures()
+        tfig = ray_figures("tmaze") if any(r["scene"] == "tmaze" for r in recs) else None
         for r in recs:
+            if r["scene"] == "tmaze" and tfig and "tex" in tfig:
+                t = tfig["tex"]
+                r["texel_wrong_pixels_per_frame_mean"] = round(t["wrong_mean"], 1)
+                r["texel_wrong_pixels_per_frame_max"] = t["wrong_max"]
+                r["texel_wrong_rate"] = round(t["wrong_rate"], 5)
+                r["texel_level_error_mean"] = round(t["level_mean"], 4)
             if r["method"] == "ray" and fig:
                 r["wall_height_error_max_px"] = round(fig["max_px"], 3)
                 r["wall_height_error_mean_px"] = round(fig["mean_px"], 4)

@@ -17,13 +17,24 @@
  *
  * Shading: R8_SHADE_FLAT draws a wall cell at its own level (1..16),
  * walls across z (hit from the z side) at 3/4 of it; R8_SHADE_LAMBERT
- * (the default) also dims it with distance.  Ceiling black, floor
+ * (the default) also dims it with distance.  R8_SHADE_TEXTURE with a
+ * grid that has textures (r8_grid.tex) draws each wall's texture, its
+ * texels (0..255) times the distance-shaded level; a grid without
+ * textures is then drawn as with Lambert.  Ceiling black, floor
  * level 2, all through the 4x4 ordered dither of r8fb.h.  Gouraud is
  * rejected.  Every format is drawn; R8_FMT_PAGE1 (SSD1306 pages) a
  * column byte at a time.
  *
+ * Textures: u from the exact hit position along the wall face (the
+ * DDA's own fraction, r8_ray_hit.u), mirrored so a face reads left to
+ * right seen from outside, whichever side; v stepped down the column,
+ * one step per column from the reciprocal table of the heights, the
+ * start offset from the exact (unclipped) wall top, so walls taller
+ * than the screen show their middle.  No division per pixel or row.
+ *
  * Memory: r8_ray_ram(cfg) = a small state + 2 bytes per screen column
- * (half height and level of each column's wall), made by r8_ray_frame
+ * (half height and level of each column's wall; 8 bytes textured: also
+ * texture, texel column, v at row 0 and v step), made by r8_ray_frame
  * and drawn band by band by r8_ray_band.  Height at most 255 rows (rows
  * are bytes in the band loop).
  *
@@ -44,6 +55,11 @@ typedef struct r8_grid {
                               w << shift and h << shift at most 32767 */
     r8_u8 sx, sz, syaw;    /* where a walk starts: cell (sx, sz), looking
                               at yaw syaw (for applications and demos) */
+    const r8_texture *tex; /* 0: untextured; else ntex textures (in RAM,
+                              like r8_mesh.tex; their data R8_FLASH): a
+                              wall of cell value v gets tex[(v - 1) % ntex]
+                              (R8_SHADE_TEXTURE only) */
+    r8_u8 ntex;            /* 1..16 with tex */
 } r8_grid;
 
 /* One ray's result. */
@@ -53,6 +69,9 @@ typedef struct r8_ray_hit {
     r8_u8 cx, cz;          /* the cell hit */
     r8_u8 side;            /* 0: crossed an x boundary, 1: a z boundary */
     r8_u8 cell;            /* its value (16 on the map's edge) */
+    r8_u8 u;               /* where on the face, 0..255 = left to right
+                              seen from outside (256 x the fraction,
+                              floored; the texture's u) */
 } r8_ray_hit;
 
 /* Cast the ray of screen column x (0..width-1) of a width-pixel screen

@@ -21,7 +21,7 @@ ex_cc = $(if $(filter avr%,$(1)),avr-gcc -mmcu=$(if $(filter avr328,$(1)),atmega
 
 # ---- flythrough
 FLY_DIR    := examples/flythrough
-FLY_HDR    := $(FLY_DIR)/fly.h $(EX_HDRS)
+FLY_HDR    := $(FLY_DIR)/fly.h examples/common/walk_loop.c $(EX_HDRS)
 FLY_KEYS   := tests/examples/fly.keys
 FLY_FRAMES := 24
 FLY_TARGETS := avr328 avr1284 6502 z80
@@ -30,7 +30,7 @@ FLY_TARGETS := avr328 avr1284 6502 z80
 # meshes with their normals; it keeps the clipper
 # the parts no mesh example firmware uses (each costs flash when linked)
 EX_NEW_OFF := -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL -DR8_NO_RAY
-FLY_XDEFS  := -Isrc -I$(FLY_DIR) -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+FLY_XDEFS  := -Isrc -I$(FLY_DIR) -Iexamples/common -I$(EXB)/fly -DFLY_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
   -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_TEXTURE \
   $(EX_NEW_OFF)
 FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(FLY_FRAMES).elf \
@@ -38,10 +38,13 @@ FLY_FW     := $(EXB)/avr328/fly/fly-$(FLY_FRAMES).elf $(EXB)/avr1284/fly/fly-$(F
 
 ALL_TARGETS += $(EXH)/flythrough
 
-$(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/plat_host.h $(FLY_HDR) $(LIBS)
+# the keyed walks' host program (flythrough, maze): examples/common
+WALK_HOST := examples/common/walk_host.c
+WALK_DEPS := $(WALK_HOST) examples/common/walk_host.h
+$(EXH)/flythrough: $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c emu/plat_host.c emu/plat_host.h $(FLY_HDR) $(LIBS) $(WALK_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(FLY_DIR) $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c \
-	  emu/plat_host.c $(LIBS) -o $@
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(FLY_DIR) -Iexamples/common $(FLY_DIR)/fly_host.c $(FLY_DIR)/fly.c \
+	  $(WALK_HOST) emu/plat_host.c $(LIBS) -o $@
 
 # the key script as the INPUT packets a display sends (fw_fly.c FLY_KEYS)
 # (and as bytes for the UART: emu/avrsim -i, the FLY_UART firmware)
@@ -63,7 +66,7 @@ fly_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(FLY_DIR)/fw_fly.c $(EXB)/$(1
 fly_fw = if head -c 5 $(EXB)/$(1)/fly/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/fly/ram.txt $(2); \
   else $(call fly_link,$(1),$(2),$(3),-DFLY_KEYS -DFLY_FRAMES=$(FLY_FRAMES) -DFLY_RAM=$$(cat $(EXB)/$(1)/fly/ram.txt)); fi
 
-FLY_DEPS = $(FLY_DIR)/fw_fly.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+FLY_DEPS = $(FLY_DIR)/fw_fly.c examples/common/fw_walk.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
 $(EXB)/%/fly/size.elf: $(FLY_DEPS) $(EXB)/%/fly/fly.o $(EXB)/%/obj/scene_3.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
 	$(call fly_link,$*,$@,o,-DFLY_SIZE_ONLY)
 $(EXB)/6502/fly/size.prg: $(FLY_DEPS) $(EXB)/6502/fly/fly.o $(EXB)/6502/obj/scene_3.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
@@ -183,13 +186,13 @@ TEST_STEPS += test-two-objects test-examples-c89
 #   build/x/T/maze/maze-F.*       its firmware for target T (F frames, the
 #                                 test key script compiled in)
 MAZE_DIR    := examples/maze
-MAZE_HDR    := $(MAZE_DIR)/maze.h $(EX_HDRS)
+MAZE_HDR    := $(MAZE_DIR)/maze.h examples/common/walk_loop.c $(EX_HDRS)
 MAZE_KEYS   := tests/examples/maze.keys
 MAZE_FRAMES := 56
 MAZE_TARGETS := avr328 avr1284 6502 z80
 # the walk is the ray caster only: every mesh method, Gouraud, the
 # clipper and run-time normals left out (render.c and scan.c compiled in)
-MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
+MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -Iexamples/common -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
   -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP \
   -DR8_NO_TEXTURE -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL
 MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/maze-$(MAZE_FRAMES).elf \
@@ -197,10 +200,10 @@ MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/ma
 
 ALL_TARGETS += $(EXH)/maze
 
-$(EXH)/maze: $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c emu/plat_host.c emu/plat_host.h $(MAZE_HDR) $(LIBS)
+$(EXH)/maze: $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c emu/plat_host.c emu/plat_host.h $(MAZE_HDR) $(LIBS) $(WALK_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(MAZE_DIR) $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c \
-	  emu/plat_host.c $(LIBS) -o $@
+	$(CC) $(EX_HOST_CFLAGS) $(INC) -Iemu -Iports -I$(MAZE_DIR) -Iexamples/common $(MAZE_DIR)/maze_host.c $(MAZE_DIR)/maze.c \
+	  $(WALK_HOST) emu/plat_host.c $(LIBS) -o $@
 
 $(EXB)/maze/maze_keys.h: $(MAZE_KEYS) $(FLY_DIR)/keys2c.py $(SETUP)
 	@mkdir -p $(dir $@)
@@ -218,7 +221,7 @@ maze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/
 maze_fw = if head -c 5 $(EXB)/$(1)/maze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/maze/ram.txt $(2); \
   else $(call maze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/maze/ram.txt)); fi
 
-MAZE_DEPS = $(MAZE_DIR)/fw_maze.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c
+MAZE_DEPS = $(MAZE_DIR)/fw_maze.c examples/common/fw_walk.c ports/fw_trim.c ports/xbuild.sh src/render.c src/scan.c src/raycast.c
 $(EXB)/%/maze/size.elf: $(MAZE_DEPS) $(EXB)/%/maze/maze.o $(EXB)/%/obj/scene_8.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
 	$(call maze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
 $(EXB)/6502/maze/size.prg: $(MAZE_DEPS) $(EXB)/6502/maze/maze.o $(EXB)/6502/obj/scene_8.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
@@ -243,8 +246,44 @@ $(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx: $(EXB)/z80/maze/ram.txt $(EXB)/maze/maz
 .SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/maze/maze.o $(EXB)/$(t)/obj/scene_8.o) \
   $(EXB)/z80/maze/maze.rel $(EXB)/z80/obj/scene_8.rel
 
+# the textured maze's walk (MAZE_TEXTURED, scenes/maze.c tmaze = scene 10):
+# the same rules under build/x/T/tmaze/, the ray caster's textures only
+TMAZE_XDEFS := $(MAZE_XDEFS) -DMAZE_TEXTURED -DR8_RAY_TEXTURE
+TMAZE_FW    := $(EXB)/avr328/tmaze/tmaze-$(MAZE_FRAMES).elf $(EXB)/avr1284/tmaze/tmaze-$(MAZE_FRAMES).elf \
+  $(EXB)/6502/tmaze/tmaze-$(MAZE_FRAMES).prg $(EXB)/z80/tmaze/tmaze-$(MAZE_FRAMES).ihx
+$(EXB)/%/tmaze/maze.o: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,$*,$@,$<,$(TMAZE_XDEFS))
+$(EXB)/z80/tmaze/maze.rel: $(MAZE_DIR)/maze.c $(MAZE_HDR)
+	@mkdir -p $(dir $@)
+	$(call ex_cc,z80,$@,$<,$(TMAZE_XDEFS))
+tmaze_link = $(XENV) bash ports/xbuild.sh $(1) $(2) $(MAZE_DIR)/fw_maze.c $(EXB)/$(1)/tmaze/maze.$(3) \
+  $(EXB)/$(1)/obj/scene_10.$(3) -- $(TMAZE_XDEFS) $(4)
+tmaze_fw = if head -c 5 $(EXB)/$(1)/tmaze/ram.txt | grep -q '^SKIP:'; then cp $(EXB)/$(1)/tmaze/ram.txt $(2); \
+  else $(call tmaze_link,$(1),$(2),$(3),-DMAZE_KEYS -DMAZE_FRAMES=$(MAZE_FRAMES) -DMAZE_RAM=$$(cat $(EXB)/$(1)/tmaze/ram.txt)); fi
+$(EXB)/%/tmaze/size.elf: $(MAZE_DEPS) $(EXB)/%/tmaze/maze.o $(EXB)/%/obj/scene_10.o $(EXB)/%/obj/plat_avr.o $(EXB)/%/librast8.a
+	$(call tmaze_link,$*,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/6502/tmaze/size.prg: $(MAZE_DEPS) $(EXB)/6502/tmaze/maze.o $(EXB)/6502/obj/scene_10.o $(EXB)/6502/obj/plat_sim65.o $(EXB)/6502/rast8.lib
+	$(call tmaze_link,6502,$@,o,-DMAZE_SIZE_ONLY)
+$(EXB)/z80/tmaze/size.ihx: $(MAZE_DEPS) $(EXB)/z80/tmaze/maze.rel $(EXB)/z80/obj/scene_10.rel $(EXB)/z80/obj/plat_z80.rel $(EXB)/z80/rast8.lib
+	$(call tmaze_link,z80,$@,rel,-DMAZE_SIZE_ONLY)
+$(EXB)/%/tmaze/ram.txt: tests/examples/size_run.sh $(BUILD)/emu/avrsim
+	bash tests/examples/size_run.sh $* $(filter %/size.elf %/size.prg %/size.ihx,$^) $@
+$(EXB)/avr328/tmaze/ram.txt: $(EXB)/avr328/tmaze/size.elf
+$(EXB)/avr1284/tmaze/ram.txt: $(EXB)/avr1284/tmaze/size.elf
+$(EXB)/6502/tmaze/ram.txt: $(EXB)/6502/tmaze/size.prg
+$(EXB)/z80/tmaze/ram.txt: $(EXB)/z80/tmaze/size.ihx
+$(EXB)/%/tmaze/tmaze-$(MAZE_FRAMES).elf: $(EXB)/%/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/%/tmaze/size.elf
+	$(call tmaze_fw,$*,$@,o)
+$(EXB)/6502/tmaze/tmaze-$(MAZE_FRAMES).prg: $(EXB)/6502/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/6502/tmaze/size.prg
+	$(call tmaze_fw,6502,$@,o)
+$(EXB)/z80/tmaze/tmaze-$(MAZE_FRAMES).ihx: $(EXB)/z80/tmaze/ram.txt $(EXB)/maze/maze_keys.h $(EXB)/z80/tmaze/size.ihx
+	$(call tmaze_fw,z80,$@,rel)
+.SECONDARY: $(foreach t,avr328 avr1284 6502,$(EXB)/$(t)/tmaze/maze.o $(EXB)/$(t)/obj/scene_10.o) \
+  $(EXB)/z80/tmaze/maze.rel $(EXB)/z80/obj/scene_10.rel
+
 .PHONY: maze-fw test-maze
-maze-fw: $(EXH)/maze $(MAZE_FW)
+maze-fw: $(EXH)/maze $(MAZE_FW) $(TMAZE_FW)
 
 # the host build against a fixed key script, then every target's stream
 # byte for byte against it (tests/examples/maze_check.py)

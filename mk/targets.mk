@@ -38,7 +38,7 @@ Z80SIM   := $(BUILD)/emu/z80sim
 FWHOST   := $(BUILD)/emu/fw-host
 XTARGETS := avr328 avr1284 6502 z80
 XHDRS    := $(wildcard include/*.h src/*.h scenes/*.h) ports/plat.h $(wildcard examples/spin/app.h)
-XSCENES  := 0 1 2 3 4 5 6 7 8 9
+XSCENES  := 0 1 2 3 4 5 6 7 8 9 10
 
 # The library as the targets see it: src/*.c plus examples/spin/app.c.
 # The firmware main is examples/spin/fw_app.c (app_run over a static

@@ -47,4 +47,7 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
+#ifndef R8_NO_RAY
+#include "raycast.c" /* the maze's: its texture code only where textured */
+#endif
 #endif

@@ -38,6 +38,7 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # the crate (R8_DEMO_CRATE) is drawn textured (fw_app.c); no other
 # firmware carries texture mapping
 [ "$s" != 7 ] && trim="$trim -DR8_NO_TEXTURE"
+[ "$s" = 10 ] && trim="$trim -DR8_RAY_TEXTURE"   # the textured maze: the ray caster's textures only
 [ "$m" != 17 ] && trim="$trim -DR8_NO_RAY"   # the ray caster: the maze's firmware only
 # the portal renderer (16): left out of every other firmware; its own
 # firmware keeps the clipper (the floor and ceiling round the camera)

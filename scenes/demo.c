@@ -4,10 +4,11 @@
 
 extern const r8_demo r8_demo_cube, r8_demo_torus, r8_demo_teapot, r8_demo_terrain,
     r8_demo_wall, r8_demo_cross, r8_demo_separate, r8_demo_crate, r8_demo_maze,
-    r8_demo_rooms;
+    r8_demo_rooms, r8_demo_tmaze;
 
 static const char *const names[R8_DEMO_COUNT] = {
-    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms"
+    "cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms",
+    "tmaze"
 };
 
 #ifdef R8_DEMO_ONLY
@@ -30,6 +31,8 @@ static const char *const names[R8_DEMO_COUNT] = {
 #define R8_DEMO_THE_ r8_demo_maze
 #elif R8_DEMO_ONLY == 9
 #define R8_DEMO_THE_ r8_demo_rooms
+#elif R8_DEMO_ONLY == 10
+#define R8_DEMO_THE_ r8_demo_tmaze
 #else
 #define R8_DEMO_THE_ r8_demo_separate
 #endif
@@ -43,7 +46,7 @@ const r8_demo *r8_demo_get(r8_u8 id)
     static const r8_demo *const all[R8_DEMO_COUNT] = {
         &r8_demo_cube, &r8_demo_torus, &r8_demo_teapot, &r8_demo_terrain,
         &r8_demo_wall, &r8_demo_cross, &r8_demo_separate, &r8_demo_crate, &r8_demo_maze,
-        &r8_demo_rooms
+        &r8_demo_rooms, &r8_demo_tmaze
     };
     return id < R8_DEMO_COUNT ? all[id] : 0;
 }
@@ -73,16 +76,23 @@ int r8_demo_by_name(const char *name)
 }
 
 /* The grid map of a grid scene (the generated r8_demo tables carry no
- * grid: the maze's is named here). */
+ * grid: the maze's are named here). */
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
 extern const r8_grid r8_grid_maze;
 #endif
-#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 10
+extern const r8_grid r8_grid_tmaze;
+#endif
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
 static const r8_grid *grid_of(const r8_demo *d)
 {
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     if (d == &r8_demo_maze)
         return &r8_grid_maze;
+#endif
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 10
+    if (d == &r8_demo_tmaze)
+        return &r8_grid_tmaze;
 #endif
     (void)d;
     return 0;
@@ -120,7 +130,7 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     run->scene.light.x = R8_RDS16(&d->light.x);
     run->scene.light.y = R8_RDS16(&d->light.y);
     run->scene.light.z = R8_RDS16(&d->light.z);
-#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
     run->scene.grid = grid_of(d);   /* (a mesh scene's firmware: 0, static) */
 #endif
 #ifndef R8_NO_PORTAL
@@ -128,7 +138,7 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
 #endif   /* (else never read: the analyser and renderer ignore it) */
     r8_camera_defaults(&run->cam, width);
     run->cam.focal = (r8_s16)(r8_mul16(width, R8_RDS16(&d->focal_num)) >> 6);
-#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
     if (run->scene.grid) {
         /* a walk's start: the middle of the start cell */
         const r8_grid *g = run->scene.grid;
@@ -140,7 +150,7 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     /* the depth range the objects can occupy: all the depth methods'
      * precision goes there (nothing lies nearer, so the near plane may
      * move up to it) */
-#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
     if (!nobj)
         zn = R8_RDS16(&d->znear);   /* a grid scene: no objects */
 #endif
@@ -168,7 +178,7 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
     const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
     r8_u8 i, n = R8_RDU8(&d->nobjects);
-#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
+#if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
     if (run->scene.grid)
         run->cam.yaw = (r8_u8)(run->scene.grid->syaw + 2u * (r8_u8)f);
 #endif

@@ -67,7 +67,8 @@ typedef struct r8_demo {
                                  the spin turns the camera in place */
 #define R8_DEMO_ROOMS 9       /* nine rooms joined by doors: the portal
                                  renderer's world; the camera walks a path */
-#define R8_DEMO_COUNT 10
+#define R8_DEMO_TMAZE 10       /* the maze with textured walls (R8_SHADE_TEXTURE) */
+#define R8_DEMO_COUNT 11
 #ifndef R8_DEMO_MAXOBJ
 #define R8_DEMO_MAXOBJ 4      /* objects a run holds (a firmware of one
                                  scene may set its own count) */

@@ -25,6 +25,15 @@
 
 #ifndef R8_NO_RAY
 
+/* Textured walls: left out with R8_NO_TEXTURE, unless R8_RAY_TEXTURE
+ * asks for them alone (the textured maze's firmware: no mesh texture
+ * mapping, ports/fwdefs.sh). */
+#if !defined(R8_NO_TEXTURE) || defined(R8_RAY_TEXTURE)
+#define RAY_TEX 1
+#else
+#define RAY_TEX 0
+#endif
+
 #define FLOOR_LEVEL 2
 #define WALL_MIN 3       /* distance shading stops here: above the floor */
 #define EDGE_LEVEL 16    /* the map's edge */
@@ -69,7 +78,21 @@ typedef struct ray_state {
     r8_u8 shading, hb;   /* hb: full brightness from full = 1 << hb rows up */
     r8_u16 full;
     r8_u8 cap;           /* half heights stop here */
+    r8_u8 tex;           /* textured: column records are tcol */
 } ray_state;
+
+#if RAY_TEX
+/* A textured column: v is the wall's height fraction, 0.16 (65536 =
+ * the texture's height), at the centre of screen row 0 (modulo 2^16:
+ * only the wall's rows are read) and its step per row. */
+typedef struct tcol {
+    r8_u8 half, lv, tu, ti;  /* half height, level, texel column, texture */
+    r8_u16 v0, vstep;
+} tcol;
+#define COL_BYTES(st) ((st)->tex ? (unsigned)sizeof(tcol) : 2u)
+#else
+#define COL_BYTES(st) 2u
+#endif
 
 /* One frame's rays: D of column 0 and its step, the scale, the camera. */
 typedef struct ray_setup {
@@ -157,7 +180,15 @@ static r8_u16 height16(r8_u16 a, r8_s16 ad, r8_s8 k)
 }
 
 /* The DDA for one ray of direction (dx, dz). */
+#if RAY_TEX
+#define CAST(g, s, dx, dz, hit, want_u) cast(g, s, dx, dz, hit, want_u)
+static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_ray_hit *hit,
+                 r8_u8 want_u)
+#else
+/* (without textures: no u, and no argument for it: the 6502 pays for each) */
+#define CAST(g, s, dx, dz, hit, want_u) cast(g, s, dx, dz, hit)
 static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_ray_hit *hit)
+#endif
 {
     const r8_u8 *cells = g->cells;
     r8_u8 shift = g->shift, w = g->w, h = g->h;
@@ -169,6 +200,9 @@ static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_
     r8_u8 side = 0, v = 0;
     hit->h16 = 0;
     hit->side = 0;
+#if RAY_TEX
+    hit->u = 0;
+#endif
     hit->cell = 0;
     hit->cx = hit->cz = 0;
     if (s->px < 0 || s->pz < 0)
@@ -250,6 +284,49 @@ static void cast(const r8_grid *g, const ray_setup *s, r8_s32 dx, r8_s32 dz, r8_
     hit->cx = (r8_u8)cx;
     hit->cz = (r8_u8)cz;
     hit->h16 = height16(a, side ? adz : adx, s->k);
+#if RAY_TEX
+    if (want_u) {
+        /* Where on the face: the DDA's own fraction.  Crossing an x
+         * boundary at "time" exh = ex - ix (in units of 1 / (adx adz)),
+         * the z distance left to the next z boundary is (ez - exh) / adx
+         * world units, i.e. (ez - exh) / iz of a cell (likewise for z);
+         * an axis the ray does not move along: its start distance over
+         * the cell.  8 bits of it by shift and subtract, then mirrored
+         * so the face reads left to right from outside. */
+        r8_s32 num, den;
+        r8_u8 q = 0, i, flip;
+        if (side == 0) {
+            num = ez - (ex - ix);
+            den = iz;
+            if (!adz) {
+                num = az;
+                den = cell;
+            }
+            flip = (r8_u8)((sx > 0) != (sz > 0));
+        } else {
+            num = ex - (ez - iz);
+            den = ix;
+            if (!adx) {
+                num = ax;
+                den = cell;
+            }
+            flip = (r8_u8)((sx > 0) == (sz > 0));
+        }
+        if (num >= den) {
+            q = 255;
+        } else {
+            for (i = 0; i < 8; i++) {
+                num += num;
+                q = (r8_u8)(q + q);
+                if (num >= den) {
+                    num -= den;
+                    q++;
+                }
+            }
+        }
+        hit->u = flip ? (r8_u8)(255u - q) : q;
+    }
+#endif
 }
 
 int r8_ray_cast(const r8_grid *g, const r8_camera *cam, r8_s16 width, r8_s16 x,
@@ -262,8 +339,35 @@ int r8_ray_cast(const r8_grid *g, const r8_camera *cam, r8_s16 width, r8_s16 x,
         return -1;
     setup(g, cam, width, &s);
     u = (r8_s16)(2 * x);
-    cast(g, &s, s.dx + r8_mul16(u, r8_cos(cam->yaw)), s.dz - r8_mul16(u, r8_sin(cam->yaw)), hit);
+#if !RAY_TEX
+    hit->u = 0;
+#endif
+    CAST(g, &s, s.dx + r8_mul16(u, r8_cos(cam->yaw)), s.dz - r8_mul16(u, r8_sin(cam->yaw)), hit, 1);
     return 0;
+}
+
+/* Does cfg draw textures (R8_SHADE_TEXTURE and a grid with them)?  1, 0,
+ * or -1 for bad textures. */
+static int textured(const r8_render_cfg *cfg)
+{
+#if RAY_TEX
+    const r8_grid *g = cfg->scene->grid;
+    r8_u8 i;
+    if (cfg->shading != R8_SHADE_TEXTURE || !g->tex)
+        return 0;
+    if (g->ntex < 1 || g->ntex > 16)
+        return -1;
+    for (i = 0; i < g->ntex; i++) {
+        const r8_texture *t = &g->tex[i];
+        if (!t->data || t->wlog < 3 || t->wlog > 6 || t->hlog < 3 || t->hlog > 6 ||
+            t->format > R8_TEX_IDX8)
+            return -1;
+    }
+    return 1;
+#else
+    (void)cfg;
+    return 0;
+#endif
 }
 
 static int cfg_ok(const r8_render_cfg *cfg)
@@ -271,7 +375,15 @@ static int cfg_ok(const r8_render_cfg *cfg)
     const r8_scene *sc = cfg->scene;
     if (!sc || !r8_grid_valid(sc->grid) || cfg->method != R8_VIS_RAY)
         return 0;
-    if (cfg->shading > R8_SHADE_LAMBERT || cfg->format > R8_FMT_IDX8)
+#if RAY_TEX
+    if (cfg->shading == R8_SHADE_TEXTURE) {
+        if (textured(cfg) < 0)
+            return 0;
+    } else
+#endif
+    if (cfg->shading > R8_SHADE_LAMBERT)
+        return 0;
+    if (cfg->format > R8_FMT_IDX8)
         return 0;
     if (cfg->width < 8 || cfg->width > 1024 || cfg->height < 8 || cfg->height > 255)
         return 0;
@@ -288,6 +400,10 @@ unsigned r8_ray_ram(const r8_render_cfg *cfg)
 {
     if (!cfg_ok(cfg))
         return 0;
+#if RAY_TEX
+    if (textured(cfg))
+        return (unsigned)(STATE_BYTES + 8u + sizeof(tcol) * (unsigned)cfg->width);
+#endif
     return (unsigned)(STATE_BYTES + 8u + 2u * (unsigned)cfg->width);
 }
 
@@ -318,10 +434,48 @@ int r8_ray_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work, unsigned wo
         st->full = (r8_u16)(st->full + st->full);
     }
     st->cap = (r8_u8)(cfg->height >> 1);   /* top = height / 2 - half >= 0 */
-    for (hh = 0; hh < 2 * cfg->width; hh++)
-        st->col[hh] = 0;
+    st->tex = (r8_u8)textured(cfg);
+    {
+        unsigned n = COL_BYTES(st) * (unsigned)cfg->width, i;
+        for (i = 0; i < n; i++)
+            st->col[i] = 0;
+    }
     return 0;
 }
+
+#if RAY_TEX
+/* v's step per screen row for a wall h16 / 16 pixels tall: 2^20 / h16
+ * (0.16 of the wall), from the reciprocal table of the heights (h16 to
+ * 8 bits, rounded) */
+static r8_u16 vstep_of(r8_u16 h)
+{
+    r8_u16 m = h, t = h;
+    r8_u32 p;
+    int e = 0;
+    if (h <= 16u)
+        return 0xFFFFu;
+    while (t >= 256u) {
+        t >>= 1;
+        e++;
+    }
+    if (e > 0) {
+        m = (r8_u16)(((h >> (e - 1)) + 1u) >> 1);
+    } else {
+        while (m < 128u) {
+            m <<= 1;
+            e--;
+        }
+    }
+    p = R8_RDU16(&recip[m - 128u]);     /* 2^21 / m; the result p 2^-(1 + e) */
+    if (e >= 0) {
+        p = ((p >> e) + 1u) >> 1;
+    } else {
+        for (; e < -1; e++)
+            p <<= 1;
+    }
+    return p > 0xFFFFul ? 0xFFFFu : (r8_u16)p;
+}
+#endif
 
 void r8_ray_frame(r8_render *r, const r8_camera *cam)
 {
@@ -331,13 +485,17 @@ void r8_ray_frame(r8_render *r, const r8_camera *cam)
     r8_s32 dx, dz;
     r8_s16 x;
     r8_u8 *c = st->col;
+#if RAY_TEX
+    const r8_grid *g = st->grid;
+    r8_s16 cy2 = (r8_s16)(2 * (st->height >> 1) - 1);
+#endif
     setup(st->grid, cam, st->width, &s);
     dx = s.dx;
     dz = s.dz;
-    for (x = 0; x < st->width; x++, c += 2) {
+    for (x = 0; x < st->width; x++) {
         r8_u16 half;
         r8_u8 lv;
-        cast(st->grid, &s, dx, dz, &hit);
+        CAST(st->grid, &s, dx, dz, &hit, st->tex);
         dx += s.stx;
         dz += s.stz;
         half = (r8_u16)((hit.h16 >> 5) + ((hit.h16 >> 4) & 1u));   /* h / 2, rounded */
@@ -346,7 +504,7 @@ void r8_ray_frame(r8_render *r, const r8_camera *cam)
         lv = hit.cell > 16 ? 16 : hit.cell;
         if (hit.side)
             lv = (r8_u8)(lv - (lv >> 2));
-        if (st->shading == R8_SHADE_LAMBERT && half) {
+        if (st->shading != R8_SHADE_FLAT && half) {   /* Lambert, texture */
             r8_u16 hp = (r8_u16)(hit.h16 >> 4);
             if (hp > st->full)
                 hp = st->full;
@@ -354,10 +512,139 @@ void r8_ray_frame(r8_render *r, const r8_camera *cam)
             if (lv < WALL_MIN)
                 lv = WALL_MIN;
         }
+#if RAY_TEX
+        if (st->tex) {
+            tcol *tc = (tcol *)(void *)c;
+            const r8_texture *t;
+            r8_s32 p;
+            tc->half = (r8_u8)half;
+            tc->lv = lv;
+            tc->ti = (r8_u8)(hit.cell ? (r8_u8)(hit.cell - 1u) % g->ntex : 0);
+            t = &g->tex[tc->ti];
+            tc->tu = (r8_u8)(hit.u >> (8 - t->wlog));
+            tc->vstep = vstep_of(hit.h16);
+            /* v at the centre of row 0: the wall's middle (v = 1/2) is at
+             * the screen's (the eye's height), row 0's centre cy - 1/2
+             * rows above it; so only the step's error counts, times the
+             * rows from the middle (at most cy), and a wall taller than
+             * the screen starts inside its texture */
+            p = cy2;
+            p *= (r8_s32)tc->vstep;
+            tc->v0 = (r8_u16)(0x8000u - (r8_u16)(p >> 1));
+            c += sizeof(tcol);
+            continue;
+        }
+#endif
         c[0] = (r8_u8)half;
         c[1] = lv;
+        c += 2;
     }
 }
+
+#if RAY_TEX
+/* The level of the texel of column c at v: the texel (0..255) times the
+ * column's level, as texture.c */
+static r8_u8 texel_level(const r8_texture *t, const tcol *c, r8_u8 tv)
+{
+    r8_u16 tl;
+    if (t->format == R8_TEX_IDX8) {
+        tl = R8_RDU8(t->data + ((r8_u16)tv << t->wlog) + c->tu);
+        return (r8_u8)(((tl + (tl >> 7)) * c->lv + 128u) >> 8);
+    }
+    if (R8_RDU8(t->data + ((r8_u16)tv << (t->wlog - 3)) + (c->tu >> 3)) & (0x80u >> (c->tu & 7u)))
+        return c->lv;
+    return 0;
+}
+
+/* The texel row of v (0.16 of the wall) in a texture 2^(8 - s8) rows
+ * tall: v's high byte >> s8 (an 8-bit shift); on the wall's last row
+ * (last), v rounded past the bottom (wrapped below 1/2) is the bottom
+ * row, hm.  Below 2^(8 - s8) whatever v: no read outside the texture. */
+#define TEXROW(v, s8, hm, last) ((r8_u8)((last) && !((v) & 0x8000u) ? (hm) : \
+                                         (r8_u8)((v) >> 8) >> (s8)))
+
+static void band_tex(ray_state *st, r8_fb *fb, r8_s16 y0, r8_s16 y1)
+{
+    const r8_texture *tex = st->grid->tex;
+    r8_s16 x, y, w = st->width, cy = (r8_s16)(st->height >> 1);
+    const tcol *c = (const tcol *)(const void *)st->col;
+    if (fb->format == R8_FMT_PAGE1) {
+        /* as the flat band below, the wall's part of each byte texel by
+         * texel: a 1 bpp texture gives the mask of its lit texels over
+         * the column's dither pattern, an IDX8 one a level per pixel */
+        r8_u8 *row = fb->buf, cy8 = (r8_u8)cy;
+        for (y = y0; y < y1; y = (r8_s16)(y + 8), row += w) {
+            r8_u8 *p = row, yt = (r8_u8)y, yb = (r8_u8)(y + 8), ph = 0;
+            c = (const tcol *)(const void *)st->col;
+            for (x = 0; x < w; x++, c++, p++, ph = (r8_u8)((ph + 1u) & 3u)) {
+                r8_u8 top = (r8_u8)(cy8 - c->half), bot = (r8_u8)(cy8 + c->half);
+                r8_u8 ra, rb, bit, last, s8, hm, out = 0, fm = 0;
+                const r8_texture *t;
+                r8_u16 v, vs;
+                if (bot <= yt) {
+                    *p = R8_RDU8(&colpat[(FLOOR_LEVEL << 2) | ph]);
+                    continue;
+                }
+                if (top >= yb) {
+                    *p = 0;                   /* ceiling */
+                    continue;
+                }
+                ra = top > yt ? (r8_u8)(top - yt) : 0;
+                rb = 8;
+                if (bot < yb) {
+                    rb = (r8_u8)(bot - yt);
+                    fm = R8_RDU8(&from_row[rb]);
+                }
+                t = &tex[c->ti];
+                s8 = (r8_u8)(8 - t->hlog);
+                hm = (r8_u8)(0xFFu >> s8);
+                vs = c->vstep;
+                v = (r8_u16)(c->v0 + (r8_u16)((r8_u16)(yt + ra) * vs));
+                if (top >= yt && (v & 0x8000u))
+                    v = 0;            /* the top row: v rounded below 0 */
+                last = (r8_u8)(bot <= yb ? rb - 1u : 8u);
+                bit = (r8_u8)(R8_RDU8(&from_row[ra]) & (r8_u8)~R8_RDU8(&from_row[ra + 1u]));
+                if (t->format == R8_TEX_IDX8) {
+                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
+                        r8_u8 tv = TEXROW(v, s8, hm, ra == last);
+                        out = (r8_u8)(out | (R8_RDU8(&colpat[((unsigned)texel_level(t, c, tv) << 2) | ph]) & bit));
+                    }
+                } else {
+                    const r8_u8 *d = t->data + (c->tu >> 3);
+                    r8_u8 rs = (r8_u8)(t->wlog - 3), tb = (r8_u8)(0x80u >> (c->tu & 7u));
+                    for (; ra < rb; ra++, bit = (r8_u8)(bit << 1), v = (r8_u16)(v + vs)) {
+                        r8_u8 tv = TEXROW(v, s8, hm, ra == last);
+                        if (R8_RDU8(d + ((unsigned)tv << rs)) & tb)
+                            out = (r8_u8)(out | bit);
+                    }
+                    out = (r8_u8)(out & R8_RDU8(&colpat[((unsigned)c->lv << 2) | ph]));
+                }
+                if (fm)
+                    out = (r8_u8)(out | (R8_RDU8(&colpat[(FLOOR_LEVEL << 2) | ph]) & fm));
+                *p = out;
+            }
+        }
+        return;
+    }
+    for (x = 0; x < w; x++, c++) {
+        r8_s16 t = (r8_s16)(cy - c->half), b = (r8_s16)(cy + c->half);
+        r8_u16 v = (r8_u16)(c->v0 + (r8_u16)((r8_u16)y0 * c->vstep));
+        for (y = y0; y < y1; y++, v = (r8_u16)(v + c->vstep)) {
+            r8_u8 sh = 0;
+            if (y >= b) {
+                sh = FLOOR_LEVEL;
+            } else if (y >= t) {
+                const r8_texture *tx = &tex[c->ti];
+                r8_u16 vv = v;        /* the end rows: v rounded out of the texture */
+                if (y == t && (vv & 0x8000u))
+                    vv = 0;
+                sh = texel_level(tx, c, TEXROW(vv, (r8_u8)(8 - tx->hlog), (r8_u8)(0xFFu >> (8 - tx->hlog)), y == b - 1));
+            }
+            r8_fb_dot(fb, x, y, sh, 0);
+        }
+    }
+}
+#endif
 
 void r8_ray_band(r8_render *r, r8_fb *fb)
 {
@@ -367,6 +654,12 @@ void r8_ray_band(r8_render *r, r8_fb *fb)
     const r8_u8 *c;
     if (y1 > fb->height)
         y1 = fb->height;
+#if RAY_TEX
+    if (st->tex) {
+        band_tex(st, fb, y0, y1);
+        return;
+    }
+#endif
     if (fb->format == R8_FMT_PAGE1) {
         /* rows are bytes here (height <= 255): each column's page byte is
          * ceiling, wall or floor whole (the common case), or masks of two

@@ -12,11 +12,6 @@
 
 static r8_object terrain;
 static r8_scene scene;
-static r8_camera cam;
-static fly_state st;
-static r8_render ren;
-static r8_fb band;
-static r8_tx tx;
 
 #define STEP 80      /* a move: 5 world units (1/16 units) */
 #define TURN 4       /* a turn: 4/256 of a circle */
@@ -89,7 +84,8 @@ void fly_camera(const fly_state *s, r8_camera *c)
     c->zfar = 400;          /* the farthest corner seen from the box */
 }
 
-static void config(r8_render_cfg *rc, r8_tx_cfg *t)
+/* the scene and the renderer's configuration (walk_loop.c: the rest) */
+static int scene_config(r8_render_cfg *rc)
 {
     const r8_demo *d = r8_demo_get(R8_DEMO_TERRAIN);
     /* the demo tables are R8_FLASH data (demo.h): read through R8_RDPTR */
@@ -107,98 +103,12 @@ static void config(r8_render_cfg *rc, r8_tx_cfg *t)
     rc->height = FLY_HEIGHT;
     rc->band = FLY_BAND;
     rc->clip = FLY_CLIP;
-    t->format = rc->format;
-    t->width = FLY_WIDTH;
-    t->height = FLY_HEIGHT;
-    t->band = FLY_BAND;
-    t->codec = R8_CODEC_RLE;
-    t->full_period = 32;
-    t->dirty = 1;
-    t->palette = 0;
-    t->npal = 0;
+    return terrain.mesh != 0;
 }
 
-/* The arena: render work, then one band, then the encoder scratch. */
-static unsigned plan(r8_render_cfg *rc, r8_tx_cfg *t, unsigned *work, unsigned *fb)
-{
-    unsigned s;
-    config(rc, t);
-    if (!terrain.mesh)
-        return 0;
-    *work = r8_render_ram(rc);
-    *fb = r8_fb_bytes(t->format, t->width, t->band);
-    s = r8_tx_scratch(t);
-    if (!*work || !*fb || !s || *work > 0xFFFFu - *fb - s)
-        return 0;
-    return *work + *fb + s;
-}
-
-unsigned fly_ram(void)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned w, b;
-    return plan(&rc, &t, &w, &b);
-}
-
-static void put(void *ctx, const r8_u8 *p, unsigned n)
-{
-    (void)ctx;
-    plat_write(p, n);
-}
-
-int fly_run(const fly_cfg *cfg, r8_u8 *mem, unsigned mem_size)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned work, fb, total = plan(&rc, &t, &work, &fb);
-    r8_u16 i;
-    r8_s16 y;
-    if (!total)
-        return FLY_E_CFG;
-    if (mem_size < total)
-        return FLY_E_RAM;
-    if (r8_render_init(&ren, &rc, mem, work) ||
-        r8_fb_init(&band, mem + work, t.format, t.width, t.height, 0, t.band) ||
-        r8_tx_init(&tx, &t, mem + work + fb, total - work - fb, put, 0))
-        return FLY_E_CFG;
-    fly_start(&st);
-    plat_mark(PLAT_MARK_START);
-    r8_tx_sync(&tx);
-    for (i = 0; !cfg->frames || i < cfg->frames; i++) {
-        plat_mark(PLAT_MARK_FRAME_BEGIN);
-        fly_steer(&st, tx.keys);        /* the keys received so far */
-        fly_camera(&st, &cam);
-        r8_render_frame(&ren, &cam);
-        r8_tx_frame_begin(&tx, i);
-        for (y = 0; y < FLY_HEIGHT; y = (r8_s16)(y + FLY_BAND)) {
-            r8_fb_set_band(&band, y);
-            r8_render_band(&ren, &band);
-            r8_tx_band(&tx, &band);
-        }
-        r8_tx_frame_end(&tx);
-        plat_mark(PLAT_MARK_FRAME_END);
-        if (cfg->on_frame && cfg->on_frame(cfg->ctx, i))
-            break;
-    }
-    plat_mark(PLAT_MARK_DONE);
-    return FLY_OK;
-}
-
-void fly_rx(r8_u8 c)
-{
-    r8_tx_rx(&tx, c);
-}
-
-r8_u16 fly_keys(void)
-{
-    return tx.keys;
-}
-
-const fly_state *fly_where(void)
-{
-    return &st;
-}
+#define WALK_FN(x) fly_##x
+#define WALK_UC(x) FLY_##x
+#include "walk_loop.c"   /* the arena, the frame loop, rx (examples/common) */
 
 void fly_stats(r8_render_stats *s)
 {

@@ -15,13 +15,8 @@
  * linked (the 6502 and Z80 images must stay under 64 KB).
  *
  * Input: a real board's UART receive interrupt calls fly_rx(c) for every
- * byte from the display.  The simulators here have no receive path, so
- * a test firmware compiles the key script in (fly_keys.h, written by
- * keys2c.py): after frame N it feeds script line N's INPUT packet, byte
- * by byte, to fly_rx - the bytes a display sends, through the receive
- * parser (r8_tx_rx) a UART interrupt would call.  The host build reads
- * the same script at run time and builds the packets with the C
- * decoder's r8_dec_input, so both sides of the packet format meet. */
+ * byte from the display; a test firmware has the key script compiled in
+ * (fly_keys.h, written by keys2c.py; examples/common/fw_walk.c). */
 #include "plat.h"
 #include "fly.h"
 #ifdef FLY_TRIM
@@ -30,70 +25,22 @@
 #include "scan.c"
 #endif
 
-#ifndef FLY_FRAMES
-#define FLY_FRAMES 24
+/* the walk's main (examples/common/fw_walk.c) for the flythrough */
+#define WALK_FN(x) fly_##x
+#define WALK_KEYS_H "fly_keys.h"
+#ifdef FLY_FRAMES
+#define WALK_FRAMES FLY_FRAMES
 #endif
-
-#ifdef FLY_SIZE_ONLY
-int main(void)
-{
-    char d[6];
-    int n = 0;
-    unsigned v = fly_ram();
-    plat_init();
-    do {
-        d[n++] = (char)('0' + v % 10u);
-        v /= 10u;
-    } while (v);
-    while (n)
-        plat_putc((r8_u8)d[--n]);
-    plat_putc('\n');
-    plat_exit(0);
-    return 0;
-}
-#else
-
-#ifndef FLY_RAM
-#define FLY_RAM 1
+#ifdef FLY_RAM
+#define WALK_RAM FLY_RAM
 #endif
-static r8_u8 mem[FLY_RAM];
-
 #ifdef FLY_KEYS
-#include "fly_keys.h"  /* FLY_KEY_LINES, fly_key_bytes[], fly_key_end[] */
-
-static int feed(void *ctx, r8_u16 frame)
-{
-    unsigned i, end;
-    (void)ctx;
-    if (frame >= FLY_KEY_LINES)
-        return 0;
-    i = frame ? R8_RDU16(&fly_key_end[frame - 1]) : 0;
-    end = R8_RDU16(&fly_key_end[frame]);
-    for (; i < end; i++) {
+#define WALK_KEYS
+#endif
 #ifdef FLY_UART
-        int c;
-        while ((c = plat_getc()) < 0)
-            ;                  /* the packet's next byte from the display */
-        fly_rx((r8_u8)c);
-#else
-        fly_rx(R8_RDU8(&fly_key_bytes[i]));
+#define WALK_UART
 #endif
-    }
-    return 0;
-}
+#ifdef FLY_SIZE_ONLY
+#define WALK_SIZE_ONLY
 #endif
-
-int main(void)
-{
-    fly_cfg cfg;
-    plat_init();
-    cfg.frames = FLY_FRAMES;
-    cfg.on_frame = 0;
-    cfg.ctx = 0;
-#ifdef FLY_KEYS
-    cfg.on_frame = feed;
-#endif
-    plat_exit(fly_run(&cfg, mem, sizeof mem));
-    return 0;
-}
-#endif
+#include "fw_walk.c"

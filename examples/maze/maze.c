@@ -3,18 +3,35 @@
 #include "r8ray.h"
 #include "plat.h"
 
-extern const r8_grid r8_grid_maze;   /* scenes/maze.c */
+/* The grid (scenes/maze.c): a firmware (MAZE_TRIM) links one, chosen at
+ * build time (MAZE_TEXTURED: the textured maze, R8_SHADE_TEXTURE); the
+ * host links both and maze_textured() chooses. */
+#if defined(MAZE_TRIM) && defined(MAZE_TEXTURED)
+extern const r8_grid r8_grid_tmaze;
+#define GRID (&r8_grid_tmaze)
+#define SHADING R8_SHADE_TEXTURE
+#elif defined(MAZE_TRIM)
+extern const r8_grid r8_grid_maze;
+#define GRID (&r8_grid_maze)
+#else
+extern const r8_grid r8_grid_maze, r8_grid_tmaze;
+static const r8_grid *grid = &r8_grid_maze;
+static r8_u8 shading = R8_SHADE_LAMBERT;
+#define GRID grid
+#define SHADING shading
+
+void maze_textured(int on)
+{
+    grid = on ? &r8_grid_tmaze : &r8_grid_maze;
+    shading = (r8_u8)(on ? R8_SHADE_TEXTURE : R8_SHADE_LAMBERT);
+}
+#endif
 
 static r8_scene scene;
-static r8_camera cam;
-static maze_state st;
-static r8_render ren;
-static r8_fb band;
-static r8_tx tx;
 
 void maze_start(maze_state *s)
 {
-    const r8_grid *g = &r8_grid_maze;
+    const r8_grid *g = GRID;
     s->x = (r8_s16)((r8_s16)(2 * g->sx + 1) << (g->shift - 1));
     s->z = (r8_s16)((r8_s16)(2 * g->sz + 1) << (g->shift - 1));
     s->yaw = g->syaw;
@@ -24,7 +41,7 @@ void maze_start(maze_state *s)
  * the map)?  The four corners of the walker's box. */
 static int free_at(r8_s16 x, r8_s16 z)
 {
-    const r8_grid *g = &r8_grid_maze;
+    const r8_grid *g = GRID;
     r8_s16 dx, dz;
     for (dx = -MAZE_RADIUS; dx <= MAZE_RADIUS; dx += 2 * MAZE_RADIUS)
         for (dz = -MAZE_RADIUS; dz <= MAZE_RADIUS; dz += 2 * MAZE_RADIUS) {
@@ -71,105 +88,26 @@ void maze_camera(const maze_state *s, r8_camera *c)
     c->yaw = s->yaw;
 }
 
-static void config(r8_render_cfg *rc, r8_tx_cfg *t)
+/* the scene and the renderer's configuration (walk_loop.c: the rest) */
+static int scene_config(r8_render_cfg *rc)
 {
     scene.objects = 0;
     scene.nobjects = 0;
     scene.ambient = 0;
     scene.light.x = scene.light.y = scene.light.z = 0;
-    scene.grid = &r8_grid_maze;
+    scene.grid = GRID;
     r8_render_defaults(rc);
+#ifdef SHADING
+    rc->shading = SHADING;
+#endif
     rc->scene = &scene;
     rc->method = R8_VIS_RAY;
     rc->width = MAZE_WIDTH;
     rc->height = MAZE_HEIGHT;
     rc->band = MAZE_BAND;
-    t->format = rc->format;
-    t->width = MAZE_WIDTH;
-    t->height = MAZE_HEIGHT;
-    t->band = MAZE_BAND;
-    t->codec = R8_CODEC_RLE;
-    t->full_period = 32;
-    t->dirty = 1;
-    t->palette = 0;
-    t->npal = 0;
+    return 1;
 }
 
-static unsigned plan(r8_render_cfg *rc, r8_tx_cfg *t, unsigned *work, unsigned *fb)
-{
-    unsigned s;
-    config(rc, t);
-    *work = r8_render_ram(rc);
-    *fb = r8_fb_bytes(t->format, t->width, t->band);
-    s = r8_tx_scratch(t);
-    if (!*work || !*fb || !s || *work > 0xFFFFu - *fb - s)
-        return 0;
-    return *work + *fb + s;
-}
-
-unsigned maze_ram(void)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned w, b;
-    return plan(&rc, &t, &w, &b);
-}
-
-static void put(void *ctx, const r8_u8 *p, unsigned n)
-{
-    (void)ctx;
-    plat_write(p, n);
-}
-
-int maze_run(const maze_cfg *cfg, r8_u8 *mem, unsigned mem_size)
-{
-    r8_render_cfg rc;
-    r8_tx_cfg t;
-    unsigned work, fb, total = plan(&rc, &t, &work, &fb);
-    r8_u16 i;
-    r8_s16 y;
-    if (!total)
-        return MAZE_E_CFG;
-    if (mem_size < total)
-        return MAZE_E_RAM;
-    if (r8_render_init(&ren, &rc, mem, work) ||
-        r8_fb_init(&band, mem + work, t.format, t.width, t.height, 0, t.band) ||
-        r8_tx_init(&tx, &t, mem + work + fb, total - work - fb, put, 0))
-        return MAZE_E_CFG;
-    maze_start(&st);
-    plat_mark(PLAT_MARK_START);
-    r8_tx_sync(&tx);
-    for (i = 0; !cfg->frames || i < cfg->frames; i++) {
-        plat_mark(PLAT_MARK_FRAME_BEGIN);
-        maze_steer(&st, tx.keys);        /* the keys received so far */
-        maze_camera(&st, &cam);
-        r8_render_frame(&ren, &cam);
-        r8_tx_frame_begin(&tx, i);
-        for (y = 0; y < MAZE_HEIGHT; y = (r8_s16)(y + MAZE_BAND)) {
-            r8_fb_set_band(&band, y);
-            r8_render_band(&ren, &band);
-            r8_tx_band(&tx, &band);
-        }
-        r8_tx_frame_end(&tx);
-        plat_mark(PLAT_MARK_FRAME_END);
-        if (cfg->on_frame && cfg->on_frame(cfg->ctx, i))
-            break;
-    }
-    plat_mark(PLAT_MARK_DONE);
-    return MAZE_OK;
-}
-
-void maze_rx(r8_u8 c)
-{
-    r8_tx_rx(&tx, c);
-}
-
-r8_u16 maze_keys(void)
-{
-    return tx.keys;
-}
-
-const maze_state *maze_where(void)
-{
-    return &st;
-}
+#define WALK_FN(x) maze_##x
+#define WALK_UC(x) MAZE_##x
+#include "walk_loop.c"   /* the arena, the frame loop, rx (examples/common) */

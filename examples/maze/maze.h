@@ -54,6 +54,12 @@ typedef struct maze_cfg {
 #define MAZE_E_CFG 1         /* the library refuses the configuration */
 #define MAZE_E_RAM 2         /* arena smaller than maze_ram() */
 
+/* The host build: walk the textured maze (scenes/maze.c, "tmaze", drawn
+ * with R8_SHADE_TEXTURE) instead, or back; call before maze_ram() and
+ * maze_run().  A firmware links one grid, chosen when it is built
+ * (-DMAZE_TEXTURED: the textured one), and has no maze_textured. */
+void maze_textured(int on);
+
 unsigned maze_ram(void);
 int maze_run(const maze_cfg *cfg, r8_u8 *mem, unsigned mem_size);
 void maze_rx(r8_u8 c);

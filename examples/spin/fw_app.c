@@ -25,8 +25,8 @@
 #define FW_FRAMES 4
 #endif
 #ifndef FW_SHADING
-#if FW_SCENE == 7
-#define FW_SHADING R8_SHADE_TEXTURE   /* the crate (R8_DEMO_CRATE) is textured */
+#if FW_SCENE == 7 || FW_SCENE == 10
+#define FW_SHADING R8_SHADE_TEXTURE   /* the crate and tmaze are textured */
 #else
 #define FW_SHADING R8_SHADE_LAMBERT
 #endif

@@ -1,7 +1,9 @@
 /* test_raycast.c - the ray caster (r8ray.h, R8_VIS_RAY): wall heights
  * against the exact figure, no fisheye, no corner skipped, the map's
  * edges and extremes, frames equal across formats and bands, memory
- * bounds, bad configurations. */
+ * bounds, bad configurations; textured walls: u along each face (left
+ * to right from outside, every side), texels against the untextured
+ * frame's levels, tall walls, IDX8 and 1 bpp textures alike. */
 #include "unity.h"
 #include "r8ray.h"
 #include "r8render.h"
@@ -30,7 +32,7 @@ static r8_grid hall;
 #define W 64
 #define H 32
 #define GUARD 0xA5
-static r8_u8 work[8 + 256 + 8];
+static r8_u8 work[8 + 8 * W + 64 + 8];   /* textured: 8 bytes a column */
 static r8_u8 band1[8 + W * H + 8], band2[8 + W * H + 8];
 static r8_scene scene;
 static r8_camera cam;
@@ -47,6 +49,8 @@ void setUp(void)
     hall.h = 1;
     hall.shift = 7;
     hall.sx = hall.sz = hall.syaw = 0;
+    room.tex = hall.tex = 0;
+    room.ntex = hall.ntex = 0;
     scene.objects = 0;
     scene.nobjects = 0;
     scene.grid = &room;
@@ -350,6 +354,196 @@ static void test_bad_configs(void)
     TEST_ASSERT_EQUAL_INT(0, r8_grid_valid(&hall));
 }
 
+/* Textures: 8 x 8, lit where (tu >= 4) != (tv >= 4) (quadrants), as
+ * 1 bpp and as IDX8 (255 / 0): both must draw the same frame. */
+static const r8_u8 quad1_d[8] R8_FLASH = {
+    0x0F, 0x0F, 0x0F, 0x0F, 0xF0, 0xF0, 0xF0, 0xF0
+};
+static const r8_u8 quad8_d[64] R8_FLASH = {
+    0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255,
+    0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255,
+    255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0,
+    255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0
+};
+static r8_texture quad[2];
+
+static void set_tex(r8_u8 fmt)
+{
+    quad[0].data = fmt == R8_TEX_1BPP ? quad1_d : quad8_d;
+    quad[0].wlog = quad[0].hlog = 3;
+    quad[0].format = fmt;
+    quad[1] = quad[0];
+    room.tex = quad;
+    room.ntex = 2;
+}
+
+/* u: where on the face, left to right seen from outside.  Straight at
+ * the corner block's near face (z = 256, x 192..255) from (224, 96):
+ * column x sees x_hit = 224 + 160 (2x + 1 - W) / (2 f); u = 4 (x_hit -
+ * 192).  From behind it (z = 400, looking -z) the same face's far side
+ * (z = 320) reads the other way.  And every face of every frame: u does
+ * not fall from one column to the next along one face. */
+static void test_tex_u(void)
+{
+    r8_ray_hit hit, prev;
+    r8_s16 x, n = 0;
+    r8_u8 k;
+    cam.x = 224;
+    cam.z = 96;
+    cam.yaw = 0;
+    cam.focal = W;
+    for (x = 0; x < W; x++) {
+        r8_s32 xh16 = 224L * 16 + (160L * 16 * (2 * x + 1 - W)) / (2 * W);   /* x_hit, 1/16 */
+        r8_ray_cast(&room, &cam, W, x, &hit);
+        if (hit.cx == 3 && hit.cz == 4 && hit.side == 1) {
+            r8_s32 want = (xh16 - 192L * 16) * 4 / 16;
+            TEST_ASSERT_TRUE(absdiff(hit.u, want) <= 1);
+            n++;
+        }
+    }
+    TEST_ASSERT_TRUE(n > 10);
+    cam.z = 400;
+    cam.yaw = 128;
+    n = 0;
+    for (x = 0; x < W; x++) {
+        r8_s32 xh16 = 224L * 16 - (80L * 16 * (2 * x + 1 - W)) / (2 * W);
+        r8_ray_cast(&room, &cam, W, x, &hit);
+        if (hit.cx == 3 && hit.cz == 4 && hit.side == 1) {
+            r8_s32 want = (256L * 16 - xh16) * 4 / 16;
+            TEST_ASSERT_TRUE(absdiff(hit.u, want) <= 1);
+            n++;
+        }
+    }
+    TEST_ASSERT_TRUE(n > 5);
+    for (k = 0; k < 64; k++) {
+        cam.x = (r8_s16)(80 + (k & 7) * 40);
+        cam.z = (r8_s16)(80 + (k >> 3) * 40);
+        if (cam.x >= 448)
+            cam.x = 440;
+        if (cam.z >= 448)
+            cam.z = 440;
+        cam.yaw = (r8_u8)(k * 37);
+        r8_ray_cast(&room, &cam, W, 0, &prev);
+        for (x = 1; x < W; x++) {
+            r8_ray_cast(&room, &cam, W, x, &hit);
+            /* (a camera in a face's plane, a = 0: u is its own place) */
+            if (hit.cell && hit.cx == prev.cx && hit.cz == prev.cz && hit.side == prev.side &&
+                hit.h16 != 0xFFFFu)
+                TEST_ASSERT_TRUE(hit.u >= prev.u);
+            prev = hit;
+        }
+    }
+}
+
+/* A textured frame (IDX8 output: levels) is the untextured (Lambert)
+ * frame where the texel is lit and black where it is not: the texel's
+ * column from hit.u, its row from the row's place in the wall (above
+ * the screen's middle: the texture's top half).  Walls up to touching
+ * distance (taller than the screen: v starts inside the texture).  The
+ * pages (1 bpp, 8-row bands) equal the pixel path, and a 1 bpp texture
+ * draws what its IDX8 twin draws. */
+static void test_tex_frame(void)
+{
+    static r8_u8 flat[8 + W * H + 8];
+    r8_fb a, b;
+    r8_ray_hit hit;
+    r8_s16 x, y;
+    r8_u8 k, fmt, seen_tall = 0;
+    unsigned lit = 0, dark = 0, i, n = r8_fb_bytes(R8_FMT_PAGE1, W, H);
+    for (k = 0; k < 12; k++) {
+        cam.focal = W;
+        cam.yaw = (r8_u8)(k * 21 + 3);
+        cam.x = (r8_s16)(70 + k * 31);
+        cam.z = (r8_s16)(66 + k * 13);
+        if (k >= 9) {                       /* at the border wall: 1..3 units */
+            cam.x = (r8_s16)(64 + k - 8);
+            cam.z = 200;
+            cam.yaw = (r8_u8)(190 + k);
+        }
+        room.tex = 0;
+        draw(R8_FMT_IDX8, H, R8_SHADE_LAMBERT, flat);
+        for (fmt = 0; fmt < 2; fmt++) {
+            set_tex(fmt);
+            draw(R8_FMT_IDX8, H, R8_SHADE_TEXTURE, band1);
+            r8_fb_init(&a, band1 + 8, R8_FMT_IDX8, W, H, 0, H);
+            r8_fb_init(&b, flat + 8, R8_FMT_IDX8, W, H, 0, H);
+            for (x = 0; x < W; x++) {
+                r8_s16 half, top;
+                r8_ray_cast(&room, &cam, W, x, &hit);
+                half = (r8_s16)((hit.h16 >> 5) + ((hit.h16 >> 4) & 1u));   /* no 16-bit overflow */
+                if (half > H / 2) {
+                    half = H / 2;
+                    seen_tall = 1;
+                }
+                top = (r8_s16)(H / 2 - half);
+                for (y = 0; y < H; y++) {
+                    r8_u8 want = (r8_u8)r8_fb_get(&b, x, y);
+                    if (y >= top && y < H / 2 + half) {
+                        r8_u8 on = (r8_u8)((hit.u >= 128) != (y >= H / 2));
+                        if (!on)
+                            want = 0;
+                        if (on)
+                            lit++;
+                        else
+                            dark++;
+                    }
+                    TEST_ASSERT_EQUAL_UINT(want, r8_fb_get(&a, x, y));
+                }
+            }
+            /* pages in bands of 8 = one band = the row layout */
+            for (i = 0; i < sizeof band1; i++)
+                band1[i] = band2[i] = GUARD;
+            draw(R8_FMT_PAGE1, 8, R8_SHADE_TEXTURE, band1);
+            draw(R8_FMT_PAGE1, H, R8_SHADE_TEXTURE, band2);
+            for (i = 0; i < n + 16; i++)
+                TEST_ASSERT_EQUAL_HEX8(band1[i], band2[i]);
+            for (i = 8 + n; i < sizeof band1; i++)
+                TEST_ASSERT_EQUAL_HEX8(GUARD, band1[i]);
+            draw(R8_FMT_ROW1, 8, R8_SHADE_TEXTURE, band2);
+            r8_fb_init(&a, band1 + 8, R8_FMT_PAGE1, W, H, 0, H);
+            r8_fb_init(&b, band2 + 8, R8_FMT_ROW1, W, H, 0, H);
+            for (y = 0; y < H; y++)
+                for (x = 0; x < W; x++)
+                    TEST_ASSERT_EQUAL_UINT(r8_fb_get(&b, x, y), r8_fb_get(&a, x, y));
+        }
+    }
+    room.tex = 0;
+    room.ntex = 0;
+    TEST_ASSERT_TRUE(seen_tall);
+    TEST_ASSERT_TRUE(lit > 1000 && dark > 1000);
+}
+
+static void test_tex_configs(void)
+{
+    r8_render_cfg c;
+    unsigned plain, tex;
+    cfg_for(&c, R8_FMT_PAGE1, 8);
+    plain = r8_ray_ram(&c);
+    c.shading = R8_SHADE_TEXTURE;
+    TEST_ASSERT_EQUAL_UINT(plain, r8_ray_ram(&c));   /* no textures: as Lambert */
+    set_tex(R8_TEX_1BPP);
+    tex = r8_ray_ram(&c);
+    TEST_ASSERT_TRUE(tex >= plain + 6u * W && tex <= plain + 6u * W + 16u);
+    c.shading = R8_SHADE_LAMBERT;                    /* textures unused */
+    TEST_ASSERT_EQUAL_UINT(plain, r8_ray_ram(&c));
+    c.shading = R8_SHADE_TEXTURE;
+    room.ntex = 0;
+    TEST_ASSERT_EQUAL_UINT(0, r8_ray_ram(&c));
+    room.ntex = 17;
+    TEST_ASSERT_EQUAL_UINT(0, r8_ray_ram(&c));
+    room.ntex = 2;
+    quad[1].wlog = 7;
+    TEST_ASSERT_EQUAL_UINT(0, r8_ray_ram(&c));
+    quad[1].wlog = 3;
+    quad[1].format = 2;
+    TEST_ASSERT_EQUAL_UINT(0, r8_ray_ram(&c));
+    quad[1].format = R8_TEX_1BPP;
+    quad[0].data = 0;
+    TEST_ASSERT_EQUAL_UINT(0, r8_ray_ram(&c));
+    room.tex = 0;
+    room.ntex = 0;
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -361,6 +555,9 @@ int main(void)
     RUN_TEST(test_frame_formats_and_bands);
     RUN_TEST(test_column_rows);
     RUN_TEST(test_bad_configs);
+    RUN_TEST(test_tex_u);
+    RUN_TEST(test_tex_frame);
+    RUN_TEST(test_tex_configs);
     return UNITY_END();
 }
 

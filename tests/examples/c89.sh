@@ -5,7 +5,7 @@
 # clang, and through avr-gcc, cc65 and sdcc.  Prints "N passed, N failed".
 cd "$(dirname "$0")/../.."
 STRICT="-std=c89 -pedantic -Wall -Wextra -Werror"
-INC="-Iinclude -Iscenes -Iports -Iexamples/flythrough -Iexamples/maze -Iexamples/ssd1306 -Iexamples/two-objects"
+INC="-Iinclude -Iscenes -Iports -Iexamples/common -Iexamples/flythrough -Iexamples/maze -Iexamples/ssd1306 -Iexamples/two-objects"
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 p=0; f=0
 ok() { if "$@" > "$t/log" 2>&1; then p=$((p+1)); else f=$((f+1)); echo "FAIL: $*"; cat "$t/log"; fi; }

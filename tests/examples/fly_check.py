@@ -17,64 +17,23 @@ must run, and also with the keys over its UART (FLY_UART: the AVR
 port's plat_getc, fed by emu/avrsim -i).  Ends with "N passed, N failed".
 """
 import argparse
-import json
 import os
 import subprocess
 import sys
 import tempfile
-import time
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "targets"))
-import identity  # noqa: E402  (make, run_target, is_skip)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import walkcheck as W  # noqa: E402  (check, script, stats, host_run, pty, targets)
+from walkcheck import KEY, ROOT, check, identity  # noqa: E402
 
 HOST = os.path.join(ROOT, "build", "examples", "flythrough")
 KEYS = os.path.join(ROOT, "tests", "examples", "fly.keys")
-RAST8 = os.path.join(ROOT, ".venv", "bin", "rast8")
 EXT = identity.EXT
-KEY = {"UP": 0x01, "DOWN": 0x02, "LEFT": 0x04, "RIGHT": 0x08, "A": 0x10, "B": 0x20,
-       "X": 0x100, "Y": 0x200}
 TURN, TILT, PITCH_MIN, PITCH_MAX = 4, 2, -48, 16    # examples/flythrough/fly.c, fly.h
-
-passed = failed = skipped = 0
-
-
-def check(ok, msg):
-    global passed, failed
-    print("%s %s" % ("PASS" if ok else "FAIL", msg))
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-    return ok
-
-
-def script(path):
-    masks = []
-    for line in open(path):
-        s = line.split("#", 1)[0].strip()
-        if s:
-            masks.append(int(s, 0))
-    return masks
-
-
-def stats(data):
-    r = subprocess.run([RAST8, "stats", "--json", "-"], input=data, stdout=subprocess.PIPE,
-                       stderr=subprocess.PIPE, timeout=120)
-    try:
-        return json.loads(r.stdout.decode())
-    except ValueError:
-        return {"error": r.stderr.decode()[-200:]}
 
 
 def host_run(frames, keys, log=None):
-    args = [HOST, "-q", "--frames", str(frames), "--out", "-"]
-    if keys:
-        args += ["--keys", keys]
-    if log:
-        args += ["--log", log]
-    r = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=120)
-    return r.returncode, r.stdout, r.stderr.decode("latin-1").strip()
+    return W.host_run(HOST, frames, keys, log)
 
 
 def steering(rows, masks):
@@ -98,51 +57,7 @@ def steering(rows, masks):
     return bad
 
 
-def pty_check():
-    """The live path: flythrough --pty, a reader on the pty sends INPUT
-    packets as `rast8 view` does; the frames stand still until a key is
-    held, then change."""
-    try:
-        import serial
-        sys.path.insert(0, os.path.join(ROOT, "host"))
-        from rast8.protocol import StreamDecoder, input_packet
-    except ImportError as e:
-        return check(False, "pty: %s (run scripts/setup.sh)" % e)
-    p = subprocess.Popen([HOST, "--pty", "--frames", "0", "--baud", "20000", "-q"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    before, after, sent, why = [], [], False, ""
-    try:
-        dev = p.stdout.readline().decode().strip()
-        port = serial.Serial(dev, timeout=0.05)
-        port.write(input_packet(0))            # the reader is there (opens the gate)
-        dec, t0 = StreamDecoder(), time.time()
-        while time.time() - t0 < 30 and len(after) < 6:
-            try:
-                data = port.read(4096)
-            except serial.SerialException as e:
-                why = str(e)
-                break
-            for f in dec.feed(data):
-                (after if sent else before).append(f.pixels)
-            if not sent and len(before) >= 4:
-                port.write(input_packet(KEY["A"] | KEY["RIGHT"]))   # fly forward, turn right
-                sent = True
-        port.close()
-    except (OSError, serial.SerialException) as e:
-        why = str(e)
-    finally:
-        p.terminate()
-        p.wait(timeout=10)
-    still = len(before) >= 4 and len(set(before)) == 1
-    moved = len(after) >= 6 and len(set(after[2:])) > 1 and after[-1] != before[0]
-    return check(still and moved, "pty (%s): %d frames stand still with no key, then A+RIGHT "
-                 "held over INPUT packets: %d frames, %d different%s"
-                 % ("live, 20000 baud", len(before), len(after), len(set(after)),
-                    "; " + why if why else ""))
-
-
 def main():
-    global skipped
     ap = argparse.ArgumentParser()
     ap.add_argument("--frames", type=int, default=24)
     ap.add_argument("targets", nargs="*", default=["avr328", "avr1284", "6502", "z80"])
@@ -152,31 +67,10 @@ def main():
     extra = ["build/x/avr1284/fly/fly-uart-%d.elf" % a.frames] if "avr1284" in a.targets else []
     if identity.make(["build/emu/avrsim", "build/examples/flythrough"] + sorted(fw.values()) + extra):
         print("fly_check: some builds failed (make output above)")
-    masks = script(KEYS)
     # ---- the host build
-    with tempfile.TemporaryDirectory() as td:
-        log = os.path.join(td, "log")
-        rc, ref, err = host_run(a.frames, KEYS, log)
-        rows = []
-        if os.path.exists(log):
-            for line in open(log):
-                f = line.split()
-                rows.append({"n": int(f[0]), "keys": int(f[1], 16), "x": int(f[2]), "y": int(f[3]),
-                             "z": int(f[4]), "yaw": int(f[5]), "pitch": int(f[6]), "faces": int(f[7]),
-                             "clipped": int(f[8]), "dropped": int(f[9])})
-    if not check(rc == 0 and ref, "host: flythrough --keys %s --frames %d: exit %d, %d bytes %s"
-                 % (os.path.relpath(KEYS, ROOT), a.frames, rc, len(ref), err)):
-        print("%d passed, %d failed" % (passed, failed))
-        return 1
-    st = stats(ref)
-    check(st.get("frames") == a.frames and not st.get("bad_packets") and not st.get("incomplete"),
-          "host: the stream decodes (rast8 stats): %s frames, %s bad packets, %s incomplete"
-          % (st.get("frames"), st.get("bad_packets"), st.get("incomplete")))
-    want = [0] + masks[:a.frames - 1]
-    want += [want[-1]] * (a.frames - len(want))
-    got = [r["keys"] for r in rows]
-    check(got == want, "host: frame N steered by script line N-1 (frame 0 by none): %s"
-          % ("yes" if got == want else "log %s, script %s" % (got, want)))
+    ref, rows, masks = W.host_keyed(HOST, "flythrough", KEYS, a.frames, ["n", "keys", "x", "y", "z", "yaw", "pitch", "faces", "clipped", "dropped"])
+    if ref is None:
+        return W.summary()
     bad = steering(rows, masks)
     check(not bad and len(rows) == a.frames,
           "host: the camera follows the keys over %d frames (turn %d, tilt %d, moves)%s"
@@ -187,40 +81,14 @@ def main():
           "host: the dive sends faces through the clipper: %d clipped, %d dropped (budget 8 a frame)"
           % (clipped, dropped))
     rc0, still, _ = host_run(a.frames, None)
-    check(rc0 == 0 and still != ref and stats(still).get("frames") == a.frames,
+    check(rc0 == 0 and still != ref and W.stats(still).get("frames") == a.frames,
           "host: without keys the camera stays put and the stream differs (%d vs %d bytes)"
           % (len(still), len(ref)))
-    pty_check()
+    W.pty_check(HOST, "flythrough", KEY["A"] | KEY["RIGHT"], "A+RIGHT")   # fly forward, turn right
     # ---- every target against the host
     ran = set()
     for t in a.targets:
-        path = os.path.join(ROOT, fw[t])
-        name = "%s flythrough" % t
-        if not os.path.exists(path):
-            check(False, "%s: %s not built (make output above)" % (name, fw[t]))
-            continue
-        why = identity.is_skip(path)
-        if why:
-            ram = os.path.join(os.path.dirname(path), "ram.txt")
-            if os.path.exists(ram) and open(ram).read().strip().isdigit():
-                why += " (its arena alone, fly_ram(), is %s B)" % open(ram).read().strip()
-            print("SKIP %s: %s" % (name, why))
-            skipped += 1
-            continue
-        size = {}
-        if os.path.exists(path + ".size"):
-            size = dict(kv.split("=") for kv in open(path + ".size").read().split())
-        data, rc, d = identity.run_target(t, path, timeout=600)
-        extra = "flash %s B, static RAM %s B (arena %s B)" % (
-            size.get("flash", "?"), size.get("ram_static", "?"),
-            open(os.path.join(os.path.dirname(path), "ram.txt")).read().strip())
-        if t.startswith("avr") and "stack_peak" in d:
-            extra += ", stack %d B" % d["stack_peak"]
-        at = next((i for i in range(min(len(data), len(ref))) if data[i] != ref[i]),
-                  min(len(data), len(ref)))
-        if check(rc == 0 and data == ref, "%s: %d frames, %d bytes %s the host's (%s)%s"
-                 % (name, a.frames, len(data), "identical to" if data == ref else
-                    "DIFFER at byte %d from" % at, extra, "" if rc == 0 else "; exit %d" % rc)):
+        if W.target_check(t, fw[t], "%s flythrough" % t, ref, a.frames, "fly_ram()"):
             ran.add(t)
     if "avr1284" in a.targets:
         check("avr1284" in ran, "mandatory: the ATmega1284P runs the flythrough")
@@ -239,9 +107,7 @@ def main():
                   "avr1284 flythrough, keys over the UART (avrsim -i %s, %d bytes): %d bytes %s the host's"
                   % (os.path.relpath(pk, ROOT), os.path.getsize(pk), len(data),
                      "identical to" if data == ref else "DIFFER from"))
-    print("%d targets skipped (reasons above)" % skipped)
-    print("%d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return W.summary()
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ from rast8.protocol import StreamDecoder, read_dump
 
 EXPECT = {"cube": "cull", "torus": "zbuf16", "teapot": "zbuf16", "terrain": "zbuf16",
           "wall": "zbuf16", "cross": "bsp", "separate": "painter",
-          "crate": "cull", "maze": "ray",
+          "crate": "cull", "maze": "ray", "tmaze": "ray",
           "rooms": "portal"}
 
 

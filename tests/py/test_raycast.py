@@ -1,6 +1,7 @@
 """The ray caster (issue 14): the float reference (rast8.raycast_ref) on
 hand-computed cases, the integer columns (build/r8raycols) against it per
-column, and the maze through rast8-emu and the decoder."""
+column, the textured maze's pixels against its texels, and the mazes
+through rast8-emu and the decoder."""
 import json
 import math
 import os
@@ -45,6 +46,52 @@ def test_reference_side_and_off_map():
     assert RR.cast(ROOM, 4, 4, 5, 200, 48, 0, 64, 64, 3)[4] == 0
 
 
+def test_reference_u_reads_left_to_right_from_outside():
+    # the far wall (z = 96) seen from inside the room looking +z: u grows
+    # with the column and is the hit x's place in its 32-unit cell
+    last = -1.0
+    for col in range(20, 44):
+        h, cx, cz, side, v, u = RR.cast_u(ROOM, 4, 4, 5, 64, 40, 0, 64, 64, col)
+        assert (cz, side) == (3, 1)
+        xh = 64 + (col + 0.5 - 32) * 56 / 64.0
+        assert u == pytest.approx(xh / 32 - math.floor(xh / 32))
+        if cx == 2:
+            assert u > last
+            last = u
+    # looking -z at the near wall (z = 32): screen right is -x, u = 1 - f
+    h, cx, cz, side, v, u = RR.cast_u(ROOM, 4, 4, 5, 40, 48, 128, 64, 64, 40)
+    xh = 40 - (40 + 0.5 - 32) * 16 / 64.0
+    assert (cz, side) == (0, 1) and u == pytest.approx(1 - (xh / 32 - math.floor(xh / 32)))
+    # an x face (looking +x at x = 96): screen right is -z
+    h, cx, cz, side, v, u = RR.cast_u(ROOM, 4, 4, 5, 50, 48, 64, 64, 64, 40)
+    zh = 48 - (40 + 0.5 - 32) * 46 / 64.0
+    assert (cx, side) == (3, 0) and u == pytest.approx(1 - (zh / 32 - math.floor(zh / 32)))
+
+
+def test_textured_frames_match_the_float_texels():
+    """The textured maze over 200 cameras: the C frame's wall pixels
+    against the float caster's texel at each pixel centre (times the
+    column's level).  Texel boundaries may fall on the other side of a
+    pixel centre (u to 1/256 of a face, v's step from an 8-bit
+    reciprocal), so a few pixels per frame differ; a mirrored u (the
+    control) is wrong on about a quarter of them."""
+    res = RR.run(_need(TOOL), 200, scene="tmaze")
+    t = res["tex"]
+    assert t["frames"] == 200 and t["wall_pixels"] > 200 * 4000, t
+    assert t["wrong_rate"] <= 0.01, t
+    assert t["wrong_mean"] <= 60 and t["wrong_max"] <= 300, t
+    assert t["level_mean"] <= 0.1, t
+    head = subprocess.run([TOOL, "--scene", "tmaze"], input="".join(
+        "%d %d %d %d %d\n" % p for p in RR.poses(RR.read_tool(subprocess.run(
+            [TOOL, "--scene", "tmaze"], input="", stdout=subprocess.PIPE, text=True,
+            check=True).stdout)[0], 30)), stdout=subprocess.PIPE, text=True, check=True)
+    grid, frames = RR.read_tool(head.stdout)
+    bad = RR.compare_tex(grid, frames, flip=True)
+    assert bad["wrong_rate"] > 0.1, bad
+    # the untextured maze has no texture figures
+    assert "tex" not in RR.run(TOOL, 3)
+
+
 def test_integer_columns_match_the_float_caster():
     res = RR.run(_need(TOOL), 150)
     assert res["columns"] == 150 * 128
@@ -83,6 +130,28 @@ def test_cli_figures_and_bad_input(tmp_path):
     r = subprocess.run([TOOL, "--scene", "cube"], input="", stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE, text=True)
     assert r.returncode == 2 and "not a grid scene" in r.stderr
+
+
+def test_emu_tmaze_textured_differs_from_lambert(tmp_path):
+    _need(EMU)
+    outs = {}
+    for sh in ("texture", "lambert"):
+        out = tmp_path / ("t-%s.r8" % sh)
+        r = subprocess.run([EMU, "--scene", "tmaze", "--shading", sh, "--frames", "4", "--out",
+                            str(out)], stderr=subprocess.PIPE, text=True)
+        assert r.returncode == 0, r.stderr
+        outs[sh] = out.read_bytes()
+    plain = tmp_path / "m.r8"
+    subprocess.run([EMU, "--scene", "maze", "--frames", "4", "--out", str(plain)], check=True,
+                   stderr=subprocess.DEVNULL)
+    # Lambert ignores the textures: the maze's frames exactly
+    assert outs["lambert"] == plain.read_bytes()
+    assert outs["texture"] != outs["lambert"]
+    rast8 = os.path.join(ROOT, ".venv", "bin", "rast8")
+    st = subprocess.run([rast8, "stats", "--json", str(tmp_path / "t-texture.r8")],
+                        stdout=subprocess.PIPE, text=True)
+    st = json.loads(st.stdout)
+    assert st["frames"] == 4 and not st["errors"] and not st["bad_packets"]
 
 
 def test_emu_maze_streams_and_the_analyser_names_the_grid(tmp_path):

@@ -5,6 +5,9 @@
  * BYTES is app_ram(cfg) for app_defaults + scene + method (FW_HAVE_APP),
  * else r8_render_ram(cfg) for the defaults.  The firmware builds size
  * their static arena from these lines. */
+#if defined(FW_SCENE) && FW_SCENE == 10
+#define R8_RAY_TEXTURE  /* the textured maze: the ray caster's textures only */
+#endif
 #if defined(FW_SCENE) && FW_SCENE != 7 && !defined(R8_NO_TEXTURE)
 #define R8_NO_TEXTURE   /* as the firmware of that scene (ports/fwdefs.sh) */
 #endif
@@ -60,7 +63,7 @@ int main(void)
                     continue;
             } else
 #endif
-            if (s == R8_DEMO_MAZE) {
+            if (s == R8_DEMO_MAZE || s == R8_DEMO_TMAZE) {
                 if (m != R8_VIS_RAY)
                     continue;
             } else if (m >= R8_VIS_COUNT)
@@ -78,7 +81,7 @@ int main(void)
 #ifdef FW_SHADING
             acfg.render.shading = FW_SHADING;
 #else
-            if (s == 7)      /* the crate: textured (fw_app.c) */
+            if (s == 7 || s == 10)   /* the crate, tmaze: textured (fw_app.c) */
                 acfg.render.shading = R8_SHADE_TEXTURE;
 #endif
             acfg.scene = s;

@@ -31,15 +31,15 @@ EXT = {"avr328": "elf", "avr1284": "elf", "6502": "prg", "z80": "ihx"}
 SIZES = {"avr328": "avr328", "avr1284": "avr1284", "6502": "6502", "z80": "z80"}
 RAM = {"avr328": 2048, "avr1284": 16384}
 MCU = {"avr328": "atmega328p", "avr1284": "atmega1284p"}
-SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms"]
+SCENES = ["cube", "torus", "teapot", "terrain", "wall", "cross", "separate", "crate", "maze", "rooms", "tmaze"]
 # scenes drawn with another shading than Lambert (R8_SHADE_*), checked
 # with their own method only (issue 13: the crate, textured, cull)
-SHADING = {"crate": 3}
+SHADING = {"crate": 3, "tmaze": 3}
 OWN_METHOD = {"crate": 0}
 METHODS = ["cull", "painter", "zbuf8", "zbuf16", "block", "blockmask", "sbuf", "bsp"]
 BSP_SCENES = ("wall", "cross")   # BSP runs on its own scenes only (CI time)
 # world renderers (outside the mesh methods): their id, name and scenes
-WORLD = {16: ("portal", [9]), 17: ("ray", [8])}
+WORLD = {16: ("portal", [9]), 17: ("ray", [8, 10])}
 
 
 def mname(m):

@@ -1,7 +1,10 @@
 /* r8raycols.c - the ray caster's columns (r8_ray_cast) for the float
- * reference (host/rast8/raycast_ref.py): the maze's grid, then, for
- * every camera line "X Z YAW FOCAL WIDTH" read from stdin, one line per
- * column: "COL H16 CX CZ SIDE CELL".
+ * reference (host/rast8/raycast_ref.py): the grid (and its textures),
+ * then, for every camera line "X Z YAW FOCAL WIDTH" read from stdin, one
+ * line per column: "COL H16 CX CZ SIDE CELL U".  A grid with textures
+ * (the tmaze) also gets the frame the renderer draws textured
+ * (R8_SHADE_TEXTURE, IDX8: levels 0..16, 64 rows): "r Y" and one
+ * character per pixel, 0-9 a-g.
  *
  *     r8raycols [--scene NAME] < cameras.txt
  */
@@ -9,6 +12,39 @@
 #include <string.h>
 #include "demo.h"
 #include "r8ray.h"
+
+#define ROWS 64
+#define MAXW 256
+
+static r8_u8 work[16384], pix[MAXW * ROWS];
+
+static int frame(r8_scene *sc, const r8_camera *cam, r8_s16 width)
+{
+    r8_render_cfg cfg;
+    r8_render r;
+    r8_fb fb;
+    int x, y;
+    r8_render_defaults(&cfg);
+    cfg.scene = sc;
+    cfg.method = R8_VIS_RAY;
+    cfg.shading = R8_SHADE_TEXTURE;
+    cfg.format = R8_FMT_IDX8;
+    cfg.width = width;
+    cfg.height = ROWS;
+    cfg.band = ROWS;
+    if (width > MAXW || r8_render_init(&r, &cfg, work, sizeof work) ||
+        r8_fb_init(&fb, pix, R8_FMT_IDX8, width, ROWS, 0, ROWS))
+        return -1;
+    r8_render_frame(&r, cam);
+    r8_render_band(&r, &fb);
+    for (y = 0; y < ROWS; y++) {
+        printf("r %d ", y);
+        for (x = 0; x < width; x++)
+            putchar("0123456789abcdefg"[r8_fb_get(&fb, (r8_s16)x, (r8_s16)y) & 31]);
+        putchar('\n');
+    }
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -23,8 +59,10 @@ int main(int argc, char **argv)
         } else if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
             printf("usage: r8raycols [--scene NAME] < cameras\n"
                    "  stdin: lines 'X Z YAW FOCAL WIDTH'; stdout: the grid ('grid W H SHIFT'\n"
-                   "  and H rows of cells), then per camera 'cam ...' and one line\n"
-                   "  'COL H16 CX CZ SIDE CELL' per column (r8_ray_cast)\n");
+                   "  and H rows of cells; 'tex N', then per texture 'W H FORMAT' and its\n"
+                   "  texels 0..255), then per camera 'cam ...' and one line\n"
+                   "  'COL H16 CX CZ SIDE CELL U' per column (r8_ray_cast); with textures\n"
+                   "  also the textured frame, 64 lines 'r Y LEVELS' (0-9a-g)\n");
             return 0;
         } else {
             fprintf(stderr, "r8raycols: unknown argument '%s' (see --help)\n", argv[i]);
@@ -43,6 +81,23 @@ int main(int argc, char **argv)
             printf("%s%d", i ? " " : "", g->cells[j * g->w + i]);
         printf("\n");
     }
+    if (g->tex) {
+        printf("tex %d\n", g->ntex);
+        for (i = 0; i < g->ntex; i++) {
+            const r8_texture *t = &g->tex[i];
+            int tw = 1 << t->wlog, th = 1 << t->hlog, k;
+            printf("%d %d %d\n", tw, th, t->format);
+            for (k = 0; k < tw * th; k++) {
+                int v;
+                if (t->format == R8_TEX_IDX8)
+                    v = t->data[k];
+                else
+                    v = (t->data[k >> 3] & (0x80 >> (k & 7))) ? 255 : 0;
+                printf("%s%d", k ? " " : "", v);
+            }
+            printf("\n");
+        }
+    }
     while (scanf("%ld %ld %ld %ld %ld", &x, &z, &yaw, &focal, &width) == 5) {
         r8_camera cam;
         r8_ray_hit hit;
@@ -57,7 +112,11 @@ int main(int argc, char **argv)
                 fprintf(stderr, "r8raycols: bad camera '%ld %ld %ld %ld %ld'\n", x, z, yaw, focal, width);
                 return 2;
             }
-            printf("%d %u %d %d %d %d\n", i, hit.h16, hit.cx, hit.cz, hit.side, hit.cell);
+            printf("%d %u %d %d %d %d %d\n", i, hit.h16, hit.cx, hit.cz, hit.side, hit.cell, hit.u);
+        }
+        if (g->tex && frame(&run.scene, &cam, (r8_s16)width)) {
+            fprintf(stderr, "r8raycols: cannot draw a %ld-pixel frame\n", width);
+            return 2;
         }
     }
     return 0;
