@@ -74,6 +74,11 @@ typedef struct r8_portal_stats {
     r8_u16 portals;     /* portals passed through */
     r8_u16 dropped;     /* visits, rows or draws that did not fit */
     r8_u32 pixels;      /* pixels written so far in this frame's bands */
+    /* movable objects (the scene's objects after the world's own walls) */
+    r8_u8 objects;      /* objects set up: in a sector seen this frame */
+    r8_u8 unseen;       /* objects in sectors not seen: not transformed */
+    r8_u16 opolys;      /* object polygons set up to draw */
+    r8_u16 overts;      /* object vertices transformed */
 } r8_portal_stats;
 
 /* The sector holding world point (x, y, z): the one it lies deepest
