@@ -44,7 +44,7 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # (the rooms, scene 9, a world: every method of it keeps both)
 [ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
-case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
+case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"
 echo "-DFW_SCENE=$s -DFW_METHOD=$m -DFW_FRAMES=$f -DFW_RAM=$ram $trim"
