@@ -98,6 +98,11 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
         return -1;
     nobj = R8_RDU8(&d->nobjects);
     objs = (const r8_demo_obj *)R8_RDPTR(&d->objects);
+#ifndef R8_NO_PORTAL
+    if (nobj > R8_DEMO_MAXOBJ && R8_RDPTR(&d->world) && R8_DEMO_MAXOBJ >= 1)
+        nobj = R8_DEMO_MAXOBJ;  /* a world: its walls first, the movable
+                                   objects that fit (1: the walls alone) */
+#endif
     if (nobj > R8_DEMO_MAXOBJ)
         return -1;
     run->demo = d;
@@ -179,7 +184,11 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
     const r8_demo *d = run->demo;
     const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
+#ifndef R8_NO_PORTAL
+    r8_u8 i, n = run->scene.nobjects;   /* (a world's may be fewer) */
+#else
     r8_u8 i, n = R8_RDU8(&d->nobjects);
+#endif
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8
     if (run->scene.grid)
         run->cam.yaw = (r8_u8)(run->scene.grid->syaw + 2u * (r8_u8)f);
