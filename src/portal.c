@@ -452,8 +452,9 @@ static void objects_visit(pstate *ps, r8_u8 k, r8_u8 no)
             continue;
         /* insertion sort of this object's draws, far (large z) first */
         for (a = 1; a < (r8_u16)(ps->ndraw - d0); a++) {
-            pdraw t = ps->draw[d0 + a];
+            pdraw t;
             r8_s16 key = ps->okey[a];
+            t = ps->draw[d0 + a];
             for (b = a; b > 0 && ps->okey[b - 1] < key; b--) {
                 ps->draw[d0 + b] = ps->draw[d0 + b - 1];
                 ps->okey[b] = ps->okey[b - 1];
