@@ -186,8 +186,8 @@ def measure(t, s, m, need, host_streams, sh=1, wire=0, objs=1):
                 ptext = open(prof).read() if os.path.exists(prof) else ""
             if ptext:
                 split_profile(rec, prof65_rows(ptext))
-    wire = (len(ref4) - len(ref2)) / float(N)
-    rec["wire_bytes_per_frame"] = round(wire, 1)
+    wire = (len(ref4) - len(ref2)) / float(N) if ref4 is not None and ref2 is not None else 0
+    rec["wire_bytes_per_frame"] = round(wire, 1) if wire else None
     if wire > 0:
         rec["fps_115200"] = round(11520.0 / wire, 2)
         rec["fps_1m"] = round(100000.0 / wire, 2)

@@ -45,8 +45,8 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 [ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
 case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
-# O = 0: a world's walls alone, without its movable objects (make bench-portal)
-[ "${o:-1}" = 0 ] && nobj=1
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
+# O = 0: a world's walls alone, without its movable objects (make bench-portal)
+[ "${o:-1}" = 0 ] && trim="$trim -DFW_WALLS_ALONE"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"
 echo "-DFW_SCENE=$s -DFW_METHOD=$m -DFW_FRAMES=$f -DFW_RAM=$ram $trim"

@@ -98,11 +98,6 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
         return -1;
     nobj = R8_RDU8(&d->nobjects);
     objs = (const r8_demo_obj *)R8_RDPTR(&d->objects);
-#ifndef R8_NO_PORTAL
-    if (nobj > R8_DEMO_MAXOBJ && R8_RDPTR(&d->world) && R8_DEMO_MAXOBJ >= 1)
-        nobj = R8_DEMO_MAXOBJ;  /* a world: its walls first, the movable
-                                   objects that fit (1: the walls alone) */
-#endif
     if (nobj > R8_DEMO_MAXOBJ)
         return -1;
     run->demo = d;
