@@ -93,7 +93,7 @@ def frames_from(info, key="compute"):
     return sel
 
 
-def measure(t, s, m, need, host_streams, sh=1, wire=0):
+def measure(t, s, m, need, host_streams, sh=1, wire=0, objs=1):
     rec = {"target": t, "cpu": CPU[t], "scene": idt.SCENES[s], "method": idt.mname(m),
            "shading": SHADINGS[idt.SHADING.get(idt.SCENES[s], sh) if sh == 1 else sh],
            "width": W, "height": H, "format": FMT, "clock_hz": CLOCK[t], "arena_bytes": need,
@@ -101,7 +101,7 @@ def measure(t, s, m, need, host_streams, sh=1, wire=0):
            "ram_static_bytes": None, "stack_peak_bytes": None, "flash_bytes": None,
            "wire_bytes_per_frame": None, "fps_115200": None, "fps_1m": None,
            "fps_compute": None, "identical_to_host": None, "skipped": None}
-    path = idt.fw_path(t, s, m, FRAMES, sh, wire)
+    path = idt.fw_path(t, s, m, FRAMES, sh, wire, objs)
     rec["wire"] = wire
     if not os.path.exists(path):
         rec["skipped"] = "not built"
@@ -146,7 +146,7 @@ def measure(t, s, m, need, host_streams, sh=1, wire=0):
         mm = re.search(r"stack_peak=(\d+)", text)
         if mm:
             rec["stack_peak_bytes"] = int(mm.group(1))
-        rec["identical_to_host"] = (r.returncode == 0 and data == ref4)
+        rec["identical_to_host"] = (r.returncode == 0 and data == ref4) if ref4 is not None else None
         if t in idt.RAM and rec["stack_peak_bytes"] is not None and rec["ram_static_bytes"]:
             tot = rec["stack_peak_bytes"] + rec["ram_static_bytes"]
             rec["ram_total_bytes"] = tot
@@ -186,8 +186,8 @@ def measure(t, s, m, need, host_streams, sh=1, wire=0):
                 ptext = open(prof).read() if os.path.exists(prof) else ""
             if ptext:
                 split_profile(rec, prof65_rows(ptext))
-    wire = (len(ref4) - len(ref2)) / float(N)
-    rec["wire_bytes_per_frame"] = round(wire, 1)
+    wire = (len(ref4) - len(ref2)) / float(N) if ref4 is not None and ref2 is not None else 0
+    rec["wire_bytes_per_frame"] = round(wire, 1) if wire else None
     if wire > 0:
         rec["fps_115200"] = round(11520.0 / wire, 2)
         rec["fps_1m"] = round(100000.0 / wire, 2)
@@ -654,6 +654,7 @@ def ray_figures(scene="maze"):
 PORTAL_SCENE = 9                 # rooms (scenes/demo.h R8_DEMO_ROOMS)
 PORTAL_METHODS = [16, 3, 1]      # portal, zbuf16, painter's
 PORTAL_TARGETS = ["avr1284", "6502", "z80"]
+PORTAL_WALLS = "avr1284"         # where the walls alone (no movable objects) are timed too
 
 
 def portal_main():
@@ -678,6 +679,8 @@ def portal_main():
             files.append(os.path.relpath(idt.fw_path(t, PORTAL_SCENE, m, FRAMES), ROOT))
             if t == "6502":
                 files.append(os.path.relpath(idt.fw_path(t, PORTAL_SCENE, m, N), ROOT))
+    # the portal firmware without the movable objects (the walls alone)
+    files.append(os.path.relpath(idt.fw_path(PORTAL_WALLS, PORTAL_SCENE, 16, FRAMES, objs=0), ROOT))
     print("bench: building %d firmware images" % len(files))
     idt.make(files)
     jobs = []
@@ -685,10 +688,19 @@ def portal_main():
         sizes, _ = idt.read_sizes(t)
         for m in PORTAL_METHODS:
             st = (idt.host_ref(PORTAL_SCENE, m, N), idt.host_ref(PORTAL_SCENE, m, FRAMES))
-            jobs.append((t, m, sizes.get((PORTAL_SCENE, m), 0), st))
+            jobs.append((t, m, sizes.get((PORTAL_SCENE, m), 0), st, 1))
+    # (no host stream of the walls alone: fw-host draws the scene as built;
+    # its arena is the one with the objects: app_ram() of the walls alone
+    # is less)
+    jobs.append((PORTAL_WALLS, 16, idt.read_sizes(PORTAL_WALLS)[0].get((PORTAL_SCENE, 16), 0),
+                 (None, None), 0))
     print("bench: running %d simulations" % len(jobs))
     with cf.ThreadPoolExecutor(2) as ex:
-        recs = list(ex.map(lambda j: measure(j[0], PORTAL_SCENE, j[1], j[2], j[3]), jobs))
+        recs = list(ex.map(lambda j: measure(j[0], PORTAL_SCENE, j[1], j[2], j[3], objs=j[4]), jobs))
+    for rec, j in zip(recs, jobs):
+        if not j[4]:
+            rec["method"] += " (walls alone)"
+            rec["identical_to_host"] = rec["identical_to_host"] or "not compared"
     out = {"scene": "rooms", "host_walk": host, "targets": recs}
     os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
     with open(os.path.join(ROOT, "build", "bench", "portal.json"), "w") as f:
@@ -696,16 +708,19 @@ def portal_main():
     L = ["## Portal renderer (rooms, 128x64)", "",
          "Host walk: all %d frames of the camera path (8 bpp, Lambert, band 8, clip 24)." %
          host[0]["frames"], "",
-         "| method | overdraw mean | max | polygons mean | max | vertices transformed (of %d) |"
-         " sectors visited (of %d) | faces tested | pixels != zbuf16 (max) | work RAM, band 8 |" % (
+         "| method | objects | overdraw mean | max | polygons mean | max | vertices transformed (walls: of %d) |"
+         " sectors visited (of %d) | faces tested | objects set up / not seen (mean) |"
+         " pixels != zbuf16 (max) | work RAM, band 8 |" % (
              host[0]["vertices"], host[0].get("sectors", 0)),
-         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for h in host:
-        L.append("| %s | %.3f | %.3f | %.1f | %d | %.1f | %s | %s | %.1f (%d) | %d |" % (
-            h["method"], h["overdraw_mean"], h["overdraw_max"], h["polygons_mean"], h["polygons_max"],
-            h["vertices_transformed_mean"],
+        L.append("| %s | %d | %.3f | %.3f | %.1f | %d | %.1f | %s | %s | %s | %.1f (%d) | %d |" % (
+            h["method"], h.get("objects", 0), h["overdraw_mean"], h["overdraw_max"], h["polygons_mean"],
+            h["polygons_max"], h["vertices_transformed_mean"],
             "%.2f" % h["sectors_visited_mean"] if "sectors_visited_mean" in h else "all",
             "%.1f" % h["faces_tested_mean"] if "faces_tested_mean" in h else "all",
+            "%.2f / %.2f" % (h["objects_set_up_mean"], h["objects_unseen_mean"])
+            if "objects_set_up_mean" in h else "all",
             h["pixels_differing_from_zbuf16_mean"], h["pixels_differing_from_zbuf16_max"],
             h["work_bytes_band8"]))
     L += ["", "Firmware (frames %d..%d of the walk; PAGE1, Lambert):" % (N, 2 * N - 1), "",

@@ -20,10 +20,23 @@
  * "Portal renderer", gives the details and where this differs from the
  * seed's pseudo-code.
  *
+ * Movable objects: the scene's objects after the leading ones whose mesh
+ * has the world mesh's vertex array (the world's walls, for the other
+ * methods).  Each belongs, per frame, to the sector holding its pose's
+ * origin (r8_portal_locate); one in a sector not visited is not
+ * transformed at all.  The others are drawn in every visit of their
+ * sector, clipped to its region: back faces culled, objects far to near,
+ * the faces of a mesh that is not convex far to near.  Bands draw the
+ * deepest visits first, each one's walls then its objects, so an object
+ * covers what is seen through its sector's portals.  An object that
+ * straddles a portal is cut to its own sector's region (docs/
+ * visibility.md, "Movable objects", lists the limits).
+ *
  * Memory: the caller's work (r8_render_ram) holds the usual vertex
  * arrays for the world mesh plus R8_PORTAL_VISITS sector visits, their
  * span rows (R8_PORTAL_ROWS frame heights in all) and R8_PORTAL_DRAWS
- * wall draws; what does not fit is dropped and counted.
+ * draws (walls and object faces), and with movable objects an ordinary
+ * renderer's arrays for them; what does not fit is dropped and counted.
  */
 #ifndef R8PORTAL_H
 #define R8PORTAL_H
@@ -42,7 +55,7 @@
                                 ceiling round the camera need the clipper) */
 #endif
 #ifndef R8_PORTAL_DRAWS
-#define R8_PORTAL_DRAWS 128  /* walls drawn per frame */
+#define R8_PORTAL_DRAWS 128  /* walls and object faces drawn per frame */
 #endif
 
 /* One sector: faces [wall0, wall0 + nwalls) of the world mesh are its
@@ -74,6 +87,11 @@ typedef struct r8_portal_stats {
     r8_u16 portals;     /* portals passed through */
     r8_u16 dropped;     /* visits, rows or draws that did not fit */
     r8_u32 pixels;      /* pixels written so far in this frame's bands */
+    /* movable objects (the scene's objects after the world's own walls) */
+    r8_u8 objects;      /* objects set up: in a sector seen this frame */
+    r8_u8 unseen;       /* objects in sectors not seen: not transformed */
+    r8_u16 opolys;      /* object polygons set up to draw */
+    r8_u16 overts;      /* object vertices transformed */
 } r8_portal_stats;
 
 /* The sector holding world point (x, y, z): the one it lies deepest

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# fwdefs.sh S-M-F[-SH[-W]] SIZES [TARGET]  ->  the -D flags of one firmware
+# fwdefs.sh S-M-F[-SH[-W[-O]]] SIZES [TARGET]  ->  the -D flags of one firmware
 # build: scene S, method M, F frames, W = 1 the wireframe (cfg.wire;
 # else R8_NO_WIRE leaves wireframe, Wu and circles out), FW_RAM = the bytes sizes.txt (measured on
 # the target by fw_sizes.c) gives for S and M (1 when unknown or 0: the
@@ -15,7 +15,7 @@
 # measures the same (XSIZES_avr328 in mk/targets.mk).
 SMALL328="-DFW_POOL=0 -DR8_NO_POOL -DR8_SMALL_SCENE"
 [ "$1" = --small328 ] && { echo "$SMALL328"; exit 0; }
-IFS=- read -r s m f sh w <<< "$1"
+IFS=- read -r s m f sh w o <<< "$1"
 sizes=$2
 [ "${sh:-1}" = 2 ] && sizes=${2%.txt}-sh2.txt
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$sizes")
@@ -45,7 +45,9 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # (the rooms, scene 9, a world: every method of it keeps both)
 [ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
-case "$s" in 4|5) nobj=2 ;; 6) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
+case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
+# O = 0: a world's walls alone, without its movable objects (make bench-portal)
+[ "${o:-1}" = 0 ] && trim="$trim -DFW_WALLS_ALONE"
 [ "${3:-}" = avr328 ] && trim="$trim $SMALL328"
 echo "-DFW_SCENE=$s -DFW_METHOD=$m -DFW_FRAMES=$f -DFW_RAM=$ram $trim"

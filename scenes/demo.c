@@ -172,12 +172,28 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     return 0;
 }
 
+#ifndef R8_NO_PORTAL
+/* x, y, z (out[0..2]) at step t of R8_PATH_STEPS from point a to b
+ * (R8_FLASH) */
+static void path_at(const r8_s16 *a, const r8_s16 *b, r8_s16 t, r8_s16 *out)
+{
+    r8_u8 k;
+    for (k = 0; k < 3; k++)
+        out[k] = (r8_s16)(R8_RDS16(a + k) +
+                          R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b + k) - R8_RDS16(a + k)), t), 4));
+}
+#endif
+
 void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
 {
     const r8_demo *d = run->demo;
     const r8_demo_obj *o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
     int f = (int)(frame & 0xFF);
+#ifndef R8_NO_PORTAL
+    r8_u8 i, n = run->scene.nobjects;   /* (a world's may be fewer) */
+#else
     r8_u8 i, n = R8_RDU8(&d->nobjects);
+#endif
 #if !defined(R8_DEMO_ONLY) || R8_DEMO_ONLY == 8 || R8_DEMO_ONLY == 10
     if (run->scene.grid)
         run->cam.yaw = (r8_u8)(run->scene.grid->syaw + 2u * (r8_u8)f);
@@ -198,11 +214,22 @@ void r8_demo_pose(r8_demo_run *run, r8_u16 frame)
         r8_s16 t = (r8_s16)(frame % R8_PATH_STEPS), dy;
         const r8_s16 *a = pa + 4u * seg, *b = pa + 4u * (seg + 1u < n ? seg + 1u : 0u);
         r8_camera *c = &run->cam;
-        c->x = (r8_s16)(R8_RDS16(a) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b) - R8_RDS16(a)), t), 4));
-        c->y = (r8_s16)(R8_RDS16(a + 1) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b + 1) - R8_RDS16(a + 1)), t), 4));
-        c->z = (r8_s16)(R8_RDS16(a + 2) + R8_ASR32C(r8_mul16((r8_s16)(R8_RDS16(b + 2) - R8_RDS16(a + 2)), t), 4));
+        path_at(a, b, t, &c->x);
         dy = (r8_s16)(((R8_RDS16(b + 3) - R8_RDS16(a + 3) + 128) & 255) - 128);
         c->yaw = (r8_u8)(R8_RDS16(a + 3) + R8_ASR32C(r8_mul16(dy, t), 4));
+    }
+    n = R8_RDU8(&d->nmoves);
+    if (n) {
+        /* moving objects: the same walk along their own points */
+        const r8_s16 *m = (const r8_s16 *)R8_RDPTR(&d->moves);
+        for (i = 0; i < n; i++) {
+            r8_u8 oi = (r8_u8)R8_RDS16(m), np = (r8_u8)R8_RDS16(m + 1);
+            r8_u16 seg = (r8_u16)((frame / R8_PATH_STEPS) % np);
+            const r8_s16 *a = m + 2 + 3u * seg, *b = m + 2 + 3u * (seg + 1u < np ? seg + 1u : 0u);
+            if (oi < run->scene.nobjects)
+                path_at(a, b, (r8_s16)(frame % R8_PATH_STEPS), &run->obj[oi].pose.x);
+            m += 2 + 3u * np;
+        }
     }
 #endif
 }

@@ -41,6 +41,11 @@ typedef struct r8_demo {
     const r8_s16 *path;        /* R8_FLASH: camera x, y, z, yaw per point */
     r8_u8 npath;               /* the camera walks the path, R8_PATH_STEPS
                                   frames from each point to the next */
+    const r8_s16 *moves;       /* R8_FLASH: objects that move (0: none):
+                                  per object its index, its point count n,
+                                  then x, y, z per point; it goes round
+                                  its points as the camera does */
+    r8_u8 nmoves;              /* objects in moves */
 #endif
 } r8_demo;
 /* (A grid scene, R8_DEMO_MAZE, has no objects: r8_demo_setup puts its
@@ -49,9 +54,11 @@ typedef struct r8_demo {
 /* The world fields of a scene's initialiser (generated scenes/\*.c): left
  * out with the portal renderer, so no other firmware's flash grows. */
 #ifndef R8_NO_PORTAL
-#define R8_DEMO_WORLD(w, p, n) , w, p, n
+#define R8_DEMO_WORLD(w, p, n) , w, p, n, 0, 0
+#define R8_DEMO_WORLDM(w, p, n, m, nm) , w, p, n, m, nm   /* with moving objects */
 #else
 #define R8_DEMO_WORLD(w, p, n)
+#define R8_DEMO_WORLDM(w, p, n, m, nm)
 #endif
 
 /* The built-in scenes, in this order. */
@@ -96,7 +103,8 @@ typedef struct r8_demo_run {
 int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width);
 /* Poses of frame `frame`: angle = start + turn * (frame & 255); a grid
  * scene turns the camera instead, 2 steps a frame from the grid's
- * start yaw. */
+ * start yaw; a world's camera walks its path and its moving objects go
+ * round theirs (R8_PATH_STEPS frames from point to point). */
 void r8_demo_pose(r8_demo_run *run, r8_u16 frame);
 
 #endif

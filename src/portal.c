@@ -22,6 +22,7 @@
  * vertices of a sector are transformed once, not per polygon; the camera's
  * sector is found by the renderer (deepest inside), not given. */
 #include <stddef.h>
+#include <string.h>
 #include "r8int.h"
 #include "r8portal.h"
 #include "portal_int.h"
@@ -38,10 +39,10 @@ static pstate *pstate_of(const r8_render *r)
 int r8_portal_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
                    unsigned work_size)
 {
-    r8_render_cfg ic;
+    r8_render_cfg ic, oc;
     pstate *ps;
     r8_u8 *p;
-    unsigned need = r8_portal_ram(cfg), inner;
+    unsigned need = r8_portal_ram(cfg), n;
     if (!need)
         return -1;
     if (work_size < need)
@@ -54,6 +55,10 @@ int r8_portal_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         return -1;
     ic.scene = &ps->scene;
     ps->world = cfg->scene->world;
+    ps->skip = r8_portal_skip(cfg);
+    ps->nmov = 0;
+    if (r8_portal_objcfg(cfg, &oc, &ps->oscene))
+        ps->nmov = ps->oscene.nobjects;
     p = (r8_u8 *)(void *)ps + R8_PALIGN(sizeof(pstate));
     ps->visit = (pvisit *)(void *)p;
     p += R8_PALIGN(sizeof(pvisit) * R8_PORTAL_VISITS);
@@ -63,15 +68,27 @@ int r8_portal_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     ps->draw = (pdraw *)(void *)p;
     ps->maxdraw = R8_PORTAL_DRAWS;
     p += R8_PALIGN(sizeof(pdraw) * R8_PORTAL_DRAWS);
-    inner = work_size - (unsigned)(p - work);
-    if (r8_render_init(&ps->inner, &ic, p, inner) != 0)
+    if (ps->nmov) {
+        ps->osec = p;
+        ps->oorder = p + ps->nmov;
+        p += R8_PALIGN(2u * ps->nmov);
+        ps->okey = (r8_s16 *)(void *)p;
+        p += R8_PALIGN(2u * r8_portal_okeys(&ps->oscene));
+    }
+    n = r8_render_ram(&ic);
+    if (r8_render_init(&ps->inner, &ic, p, n) != 0)
         return -2;
+    p += R8_PALIGN(n);
+    if (ps->nmov) {
+        oc.scene = &ps->oscene;
+        if (r8_render_init(&ps->oinner, &oc, p, (unsigned)(work_size - (unsigned)(p - work))) != 0)
+            return -2;
+    }
     r->state = ps->inner.state;     /* r8_render_stats_get works as usual */
     ps->nvisit = 0;
     ps->ndraw = 0;
+    memset(&ps->stats, 0, sizeof ps->stats);
     ps->stats.sector = 255;
-    ps->stats.visits = 0;
-    ps->stats.pixels = 0;
     return 0;
 }
 
@@ -96,8 +113,13 @@ r8_u8 r8_portal_locate(const r8_world *w, r8_s16 x, r8_s16 y, r8_s16 z)
                 r8_s32 d = r8_mul16(R8_RDS16(n), (r8_s16)(x - R8_RDS16(v)));
                 d += r8_mul16(R8_RDS16(n + 1), (r8_s16)(y - R8_RDS16(v + 1)));
                 d += r8_mul16(R8_RDS16(n + 2), (r8_s16)(z - R8_RDS16(v + 2)));
-                if (d < worst)
+                if (d < worst) {
                     worst = d;
+                    if (s && worst <= best) {
+                        part = 2;       /* cannot win: the next sector */
+                        break;
+                    }
+                }
             }
         if (s == 0 || worst > best) {
             best = worst;
@@ -126,19 +148,28 @@ static int poly_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n,
     return *top < *bot;
 }
 
+/* Face id g of renderer state st (the world's, or the objects'):
+ * its vertex pointers into vp; returns the vertex count. */
 static r8_u8 set_vp(const r8_state *st, r8_u16 g, const r8_s16 **vp)
 {
-    const r8_mesh *me = st->scene->objects[0].mesh;
-    r8_u8 n, j, vsh = R8_VSH(st);
+    const r8_scene *sc = st->scene;
+    const r8_mesh *me;
+    const r8_s16 *base;
+    r8_u8 n, j, i = 0, vsh = R8_VSH(st);
     if (g >= st->nfaces) {
         const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
         for (j = 0; j < cp->n; j++)
             vp[j] = st->sv + ((unsigned)cp->idx[j] << vsh);
         return cp->n;
     }
+    while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
+        i++;
+    me = sc->objects[i].mesh;
+    g = (r8_u16)(g - st->obj[i].fbase);
+    base = st->sv + ((unsigned)st->obj[i].vbase << vsh);
     n = R8_RDU8(&me->faces[g].n);
     for (j = 0; j < n; j++)
-        vp[j] = st->sv + ((unsigned)R8_RDU8(&me->faces[g].v[j]) << vsh);
+        vp[j] = base + ((unsigned)R8_RDU8(&me->faces[g].v[j]) << vsh);
     return n;
 }
 
@@ -224,15 +255,14 @@ static int add_visit(pstate *ps, r8_state *st, r8_u8 sec, r8_u8 from,
     return 1;
 }
 
-/* Face f of visit k: cull, vertex pointers (transforming vertices on
- * first use), clip.  Returns the polygon's id and its vertex count in
- * *n, or R8_FID_END when nothing of it is in front. */
-static r8_u16 face_in(pstate *ps, r8_state *st, r8_u16 f, const r8_s16 **vp, r8_u8 *n,
-                      int portal)
+/* Face f of object ob (its transform o in renderer state st): cull,
+ * vertex pointers (transforming vertices on first use), clip.  Returns
+ * the polygon's id and its vertex count in *n, or R8_FID_END when
+ * nothing of it is in front. */
+static r8_u16 face_in(pstate *ps, r8_state *st, const r8_objx *o, const r8_object *ob,
+                      r8_u16 f, const r8_s16 **vp, r8_u8 *n, int portal)
 {
-    const r8_object *ob = &ps->obj;
     const r8_mesh *me = ob->mesh;
-    const r8_objx *o = &st->obj[0];
     const r8_face *fc = &me->faces[f];
     r8_u8 vi[R8_MAX_FACE_VERTS], j, clip = 0, vsh = R8_VSH(st);
     r8_s32 zsum;
@@ -243,15 +273,20 @@ static r8_u16 face_in(pstate *ps, r8_state *st, r8_u16 f, const r8_s16 **vp, r8_
     if (!r8_cull_front(o, me->verts + 3u * vi[0], f))
         return (r8_u16)R8_FID_END;
     for (j = 0; j < *n; j++) {
+        r8_u16 g;
         vi[j] = R8_RDU8(&fc->v[j]);
-        vp[j] = st->sv + ((unsigned)vi[j] << vsh);
-        if (vp[j][0] == R8_VX_TODO)
-            r8_tf_vertex(st, o, me->verts + 3u * vi[j], vi[j]);
+        g = (r8_u16)(o->vbase + vi[j]);
+        vp[j] = st->sv + ((unsigned)g << vsh);
+        if (vp[j][0] == R8_VX_TODO) {
+            r8_tf_vertex(st, o, me->verts + 3u * vi[j], g);
+            if (st != (r8_state *)ps->inner.state)
+                ps->stats.overts++;
+        }
         if (vp[j][0] == R8_VX_CLIP)
             clip = 1;
     }
     if (!clip)
-        return f;
+        return (r8_u16)(o->fbase + f);
 #ifdef R8_NO_CLIP
     st->dropped++;
     return (r8_u16)R8_FID_END;
@@ -286,14 +321,158 @@ static r8_u16 face_in(pstate *ps, r8_state *st, r8_u16 f, const r8_s16 **vp, r8_
 #endif
 }
 
+/* Camera-space depth (units) of face f of object o: the mean z of its
+ * corners, for painter's order inside a mesh that is not convex. */
+static r8_s16 face_key(const r8_objx *o, const r8_mesh *me, r8_u16 f)
+{
+    const r8_face *fc = &me->faces[f];
+    r8_u8 j, n = R8_RDU8(&fc->n);
+    r8_s32 z = 0;
+    for (j = 0; j < n; j++) {
+        const r8_s16 *v = me->verts + 3u * R8_RDU8(&fc->v[j]);
+        z += R8_ASR32C(r8_mul16(o->m.m[6], R8_RDS16(v)) + r8_mul16(o->m.m[7], R8_RDS16(v + 1)) +
+                       r8_mul16(o->m.m[8], R8_RDS16(v + 2)), 14);
+    }
+    z = z / (r8_s32)n + R8_ASR32C(o->t.z, R8_CFRAC);
+    if (z > 32767)
+        z = 32767;
+    if (z < -32767)
+        z = -32767;
+    return (r8_s16)z;
+}
+
+/* Is sector sec visited this frame? */
+static int seen(const pstate *ps, r8_u8 sec)
+{
+    r8_u8 k;
+    for (k = 0; k < ps->nvisit; k++)
+        if (ps->visit[k].sector == sec)
+            return 1;
+    return 0;
+}
+
+/* The movable objects (after the portal walk): each one's sector from
+ * its origin; those in sectors seen are transformed (the ordinary
+ * frame set-up on a one-object view of the objects' scene), their
+ * vertices marked to transform on first use, and put in oorder, far
+ * to near by the depth of their origin.  Returns how many. */
+static r8_u8 objects_frame(pstate *ps, const r8_camera *cam)
+{
+    r8_state *os = (r8_state *)ps->oinner.state;
+    r8_object *objs = ps->oscene.objects;
+    r8_objx *ox = os->obj;
+    r8_u8 i, k, no = 0, vsh = R8_VSH(os);
+    os->npoly = 0;
+    os->sv_used = os->nverts;
+    os->nclipped = 0;
+    os->dropped = 0;
+    os->pool_used = 0;
+    for (i = 0; i < ps->nmov; i++) {
+        const r8_pose *pp = &objs[i].pose;
+        r8_u8 sec = 255;
+        ps->osec[i] = 255;
+        if (pp->flags & R8_POSE_HIDDEN)
+            continue;
+        if (pp->x >= -16383 && pp->x <= 16383 && pp->y >= -16383 && pp->y <= 16383 &&
+            pp->z >= -16383 && pp->z <= 16383)
+            sec = r8_portal_locate(ps->world, pp->x, pp->y, pp->z);
+        if (sec == 255 || !seen(ps, sec)) {
+            ps->stats.unseen++;       /* not transformed */
+            continue;
+        }
+        ps->oscene.objects = objs + i;
+        ps->oscene.nobjects = 1;
+        os->obj = ox + i;
+        r8_tf_frame(os, cam);
+        os->obj = ox;
+        ps->oscene.objects = objs;
+        ps->oscene.nobjects = ps->nmov;
+        {
+            r8_s16 *sv = os->sv + ((unsigned)ox[i].vbase << vsh);
+            r8_u16 v, nv = objs[i].mesh->nverts;
+            for (v = 0; v < nv; v++, sv += 1u << vsh)
+                *sv = R8_VX_TODO;
+        }
+        ps->osec[i] = sec;
+        /* far to near (ties: scene order) */
+        for (k = no; k > 0 && ox[ps->oorder[k - 1]].t.z < ox[i].t.z; k--)
+            ps->oorder[k] = ps->oorder[k - 1];
+        ps->oorder[k] = i;
+        no++;
+    }
+    ps->stats.objects = no;
+    return no;
+}
+
+/* Visit k's objects: their front faces (clipped to the visit's region
+ * when drawn), object after object far to near; painter's order of the
+ * faces inside a mesh that is not convex. */
+static void objects_visit(pstate *ps, r8_u8 k, r8_u8 no)
+{
+    r8_state *os = (r8_state *)ps->oinner.state;
+    const r8_object *objs = ps->oscene.objects;
+    pvisit *v = &ps->visit[k];
+    const r8_s16 *vp[R8_SCAN_MAXV];
+    r8_u8 j, n;
+    v->o0 = ps->ndraw;
+    for (j = 0; j < no; j++) {
+        r8_u8 i = ps->oorder[j];
+        const r8_object *ob = &objs[i];
+        const r8_mesh *me = ob->mesh;
+        const r8_objx *o = &os->obj[i];
+        r8_u16 f, d0 = ps->ndraw, a, b;
+        if (ps->osec[i] != v->sector)
+            continue;
+        for (f = 0; f < me->nfaces; f++) {
+            r8_u16 g = face_in(ps, os, o, ob, f, vp, &n, 0);
+            r8_s16 top, bot;
+            pdraw *d;
+            if (g == (r8_u16)R8_FID_END || !poly_rows(os, vp, n, &top, &bot) ||
+                top >= v->ybot || bot <= v->ytop)
+                continue;
+            if (ps->ndraw >= ps->maxdraw) {
+                ps->stats.dropped++;
+                continue;
+            }
+            d = &ps->draw[ps->ndraw];
+            d->g = g;
+            d->visit = (r8_u8)(k | PD_OBJ);
+            if (g >= os->nfaces)
+                d->level = os->cpoly[g - os->nfaces].level;
+            else
+                d->level = r8_face_level(os, o, ob, f);
+            if (!me->convex)
+                ps->okey[ps->ndraw - d0] = face_key(o, me, f);
+            ps->ndraw++;
+            ps->stats.opolys++;
+            if (g < os->nfaces)
+                os->npoly++;
+        }
+        if (me->convex)
+            continue;
+        /* insertion sort of this object's draws, far (large z) first */
+        for (a = 1; a < (r8_u16)(ps->ndraw - d0); a++) {
+            pdraw t;
+            r8_s16 key = ps->okey[a];
+            t = ps->draw[d0 + a];
+            for (b = a; b > 0 && ps->okey[b - 1] < key; b--) {
+                ps->draw[d0 + b] = ps->draw[d0 + b - 1];
+                ps->okey[b] = ps->okey[b - 1];
+            }
+            ps->draw[d0 + b] = t;
+            ps->okey[b] = key;
+        }
+    }
+    v->no = (r8_u16)(ps->ndraw - v->o0);
+}
+
 void r8_portal_frame(r8_render *r, const r8_camera *cam)
 {
     pstate *ps = pstate_of(r);
     r8_state *st = (r8_state *)ps->inner.state;
     const r8_world *w = ps->world;
-    const r8_mesh *me = w->mesh;
     const r8_s16 *vp[R8_SCAN_MAXV];
-    r8_u8 k, n;
+    r8_u8 k, n, no;
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -302,12 +481,7 @@ void r8_portal_frame(r8_render *r, const r8_camera *cam)
     ps->nvisit = 0;
     ps->rows_used = 0;
     ps->ndraw = 0;
-    ps->stats.visits = 0;
-    ps->stats.faces = 0;
-    ps->stats.walls = 0;
-    ps->stats.portals = 0;
-    ps->stats.dropped = 0;
-    ps->stats.pixels = 0;
+    memset(&ps->stats, 0, sizeof ps->stats);
     ps->stats.sector = 255;
     r8_tf_frame(st, cam);
     r8_tf_vertices(st, 1);
@@ -320,8 +494,9 @@ void r8_portal_frame(r8_render *r, const r8_camera *cam)
     for (k = 0; k < ps->nvisit; k++) {
         const r8_sector *sec = &w->sectors[ps->visit[k].sector];
         r8_u16 f, f0 = R8_RDU16(&sec->wall0), f1 = (r8_u16)(f0 + R8_RDU8(&sec->nwalls));
+        ps->visit[k].w0 = ps->ndraw;
         for (f = f0; f < f1; f++) {
-            r8_u16 g = face_in(ps, st, f, vp, &n, 0);
+            r8_u16 g = face_in(ps, st, &st->obj[0], &ps->obj, f, vp, &n, 0);
             r8_s16 top, bot;
             ps->stats.faces++;
             if (g == (r8_u16)R8_FID_END || !poly_rows(st, vp, n, &top, &bot) ||
@@ -341,10 +516,14 @@ void r8_portal_frame(r8_render *r, const r8_camera *cam)
             if (g < st->nfaces)
                 st->npoly++;
         }
+        ps->visit[k].nw = (r8_u16)(ps->ndraw - ps->visit[k].w0);
+        ps->visit[k].o0 = ps->ndraw;
+        ps->visit[k].no = 0;
         f0 = R8_RDU16(&sec->portal0);
         f1 = (r8_u16)(f0 + R8_RDU8(&sec->nportals));
         for (f = f0; f < f1; f++) {
-            r8_u16 sv_used = st->sv_used, g = face_in(ps, st, f, vp, &n, 1);
+            r8_u16 sv_used = st->sv_used;
+            r8_u16 g = face_in(ps, st, &st->obj[0], &ps->obj, f, vp, &n, 1);
             ps->stats.faces++;
             if (g == (r8_u16)R8_FID_END)
                 continue;
@@ -359,24 +538,28 @@ void r8_portal_frame(r8_render *r, const r8_camera *cam)
     }
     ps->stats.visits = ps->nvisit;
     ps->stats.walls = ps->ndraw;
-    (void)me;
+    if (!ps->nmov)
+        return;
+    /* the objects: only those in the sectors seen, each drawn in every
+     * visit of its sector, after that visit's walls */
+    no = objects_frame(ps, cam);
+    for (k = 0; no && k < ps->nvisit; k++)
+        objects_visit(ps, k, no);
 }
 
-void r8_portal_band(r8_render *r, r8_fb *fb)
+/* Draws [d0, d0 + nd) into band fb's rows [y0, y1), each cut to its
+ * visit's region. */
+static void draw_range(pstate *ps, r8_u16 d0, r8_u16 nd, r8_fb *fb, r8_s16 y0, r8_s16 y1)
 {
-    pstate *ps = pstate_of(r);
-    r8_state *st = (r8_state *)ps->inner.state;
-    r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
-    r8_u16 i;
     r8_scan s;
     r8_span sp;
-    if (y1 > fb->height)
-        y1 = fb->height;
-    r8_fb_clear(fb, 0);
-    for (i = 0; i < ps->ndraw; i++) {
+    r8_u16 i;
+    for (i = d0; i < (r8_u16)(d0 + nd); i++) {
         const pdraw *d = &ps->draw[i];
-        const pvisit *v = &ps->visit[d->visit];
+        const pvisit *v = &ps->visit[d->visit & (PD_OBJ - 1)];
         const r8_s16 *rows = ps->rows + 2u * v->row0;
+        const r8_state *st = (const r8_state *)((d->visit & PD_OBJ) ? ps->oinner.state
+                                                                    : ps->inner.state);
         r8_s16 ya = y0 > v->ytop ? y0 : v->ytop, yb = y1 < v->ybot ? y1 : v->ybot;
         r8_u8 n;
         if (ya >= yb)
@@ -396,6 +579,24 @@ void r8_portal_band(r8_render *r, r8_fb *fb)
                 ps->stats.pixels += (r8_u16)(b - a);
             }
         }
+    }
+}
+
+void r8_portal_band(r8_render *r, r8_fb *fb)
+{
+    pstate *ps = pstate_of(r);
+    r8_s16 y0 = fb->y0, y1 = (r8_s16)(fb->y0 + fb->rows);
+    r8_u8 k;
+    if (y1 > fb->height)
+        y1 = fb->height;
+    r8_fb_clear(fb, 0);
+    /* deepest visits first (breadth first: a visit's region lies inside
+     * the one it was seen through), each one's walls, then its objects:
+     * what lies in a sector covers what is seen through its portals */
+    for (k = ps->nvisit; k-- > 0;) {
+        const pvisit *v = &ps->visit[k];
+        draw_range(ps, v->w0, v->nw, fb, y0, y1);
+        draw_range(ps, v->o0, v->no, fb, y0, y1);
     }
 }
 

@@ -74,6 +74,10 @@ r8_demo_run *app_demo(const app_cfg *cfg)
     if (r8_demo_setup(&run, cfg->demo ? cfg->demo : r8_demo_get(cfg->scene),
                       cfg->render.width))
         return 0;
+#if defined(FW_WALLS_ALONE) && !defined(R8_NO_PORTAL)
+    if (run.scene.world)
+        run.scene.nobjects = 1;   /* make bench-portal: the world's walls alone */
+#endif
     return &run;
 }
 

@@ -226,6 +226,9 @@ def parse_r8s(text, path="<scene>"):
         sc.world = world
         sc.meshes[world.name] = sectors.to_mesh(world)
         sc.objects.insert(0, Obj(world.name, (0, 0, 0)))   # its walls, for the other methods
+        for n in world.moves:
+            if n + 1 >= len(sc.objects):
+                raise SceneError(path, 1, f"'move {n}': the scene has {len(sc.objects) - 1} objects")
     if not sc.objects:
         raise SceneError(path, len(text.splitlines()), "scene has no objects")
     if len(sc.objects) > 255:
@@ -724,6 +727,9 @@ def to_c_scene(sc):
     world = " R8_DEMO_WORLD(0, 0, 0)"
     if sc.world is not None:
         world = f" R8_DEMO_WORLD(&{sid}_world, {sid}_path, {len(sc.world.path)})"
+        if sc.world.moves:
+            world = (f" R8_DEMO_WORLDM(&{sid}_world, {sid}_path, {len(sc.world.path)}, "
+                     f"{sid}_moves, {len(sc.world.moves)})")
     out.append(f"const r8_demo r8_demo_{sid} R8_FLASH = {{{sid}_name, {sid}_objects, {len(sc.objects)}, "
                f"{sc.focal}, {sc.near}, {_q14(sc.ambient)}, {{{lx}, {ly}, {lz}}}{world}}};")
     return "\n".join(out) + "\n"

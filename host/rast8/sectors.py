@@ -8,12 +8,16 @@ portal renderer (R8_VIS_PORTAL).  The `.r8s` extension (docs/scene-format.md):
     p SECTOR I J K [L]      # a portal into SECTOR, clockwise seen from inside
     end
     path X Y Z YAW          # camera waypoints (top level, in order; 16 frames each)
+    move N X Y Z            # waypoints of the scene's object N (0: the first
+                            # 'object' line), 16 frames each, the last back to
+                            # the first: a movable object of the world
 
 Every sector must be convex (all its vertices on or in front of all its
 faces) and every portal A->B needs its twin B->A on the same vertices.
 The converter emits the world mesh (walls first, then portals), the same
 walls as an ordinary mesh (so every other method draws the same scene: the
-scene's first object), the sector table and the camera path.
+scene's first object), the sector table, the camera path and the objects'
+paths.
 
     python -m rast8.sectors rooms          # print the built-in rooms world
     python -m rast8.sectors path FILE.r8s  # the camera's sector per frame
@@ -45,6 +49,7 @@ class World:
     verts: list = field(default_factory=list)
     sectors: list = field(default_factory=list)
     path: list = field(default_factory=list)      # [(x, y, z, yaw)]
+    moves: dict = field(default_factory=dict)     # {object: [(x, y, z)]}
 
     def index(self, name):
         for k, s in enumerate(self.sectors):
@@ -184,7 +189,7 @@ def extract(text, path="<scene>"):
     """Take the world block and path lines out of a scene's text (they
     become blank lines, so line numbers stay).  Returns (text, world or
     None); raises WorldError."""
-    out, block, world, path_pts = [], None, None, []
+    out, block, world, path_pts, move_pts = [], None, None, [], []
     for ln, raw in enumerate(text.splitlines(), 1):
         t = raw.split("#", 1)[0].split()
         if block is not None:
@@ -207,12 +212,20 @@ def extract(text, path="<scene>"):
             path_pts.append((tuple(_ints(t[1:4], path, ln, -16383, 16383, "coordinate")) +
                              tuple(_ints(t[4:], path, ln, 0, 255, "yaw")), ln))
             out.append("")
+        elif t and t[0] == "move":
+            if len(t) != 5:
+                raise WorldError(path, ln, "usage: move N X Y Z")
+            n = _ints(t[1:2], path, ln, 0, 254, "object")[0]
+            move_pts.append((n, tuple(_ints(t[2:5], path, ln, -16383, 16383, "coordinate")), ln))
+            out.append("")
         else:
             out.append(raw)
     if block is not None:
         raise WorldError(path, block[0][0], "world not closed with 'end'")
     if path_pts and world is None:
         raise WorldError(path, path_pts[0][1], "'path' without a world")
+    if move_pts and world is None:
+        raise WorldError(path, move_pts[0][2], "'move' without a world")
     if world is not None:
         world.path = [p for p, _ in path_pts]
         if len(world.path) > 255:
@@ -224,7 +237,27 @@ def extract(text, path="<scene>"):
             if d < 1 << 14:
                 raise WorldError(path, path_pts[0][1], f"camera path frame {k} at {f[:3]} is within 1 unit "
                                  f"of a face of sector '{world.sectors[s].name}'")
+        for n, p, ln in move_pts:
+            world.moves.setdefault(n, []).append(p)
+            if len(world.moves[n]) > 255:
+                raise WorldError(path, ln, "at most 255 points per object path")
+        for n, pts in world.moves.items():
+            for k, f in enumerate(move_frames(pts)):
+                if locate(world, f)[1] < 0:
+                    ln = [m[2] for m in move_pts if m[0] == n][0]
+                    raise WorldError(path, ln, f"object {n}'s path frame {k} at {f} is outside every sector")
     return "\n".join(out), world
+
+
+def move_frames(pts):
+    """An object's position (x, y, z) in every frame of its path's loop,
+    as scenes/demo.c moves it (as the camera: PATH_STEPS frames a point)."""
+    out, n = [], len(pts)
+    for k in range(n):
+        a, b = pts[k], pts[(k + 1) % n]
+        for t in range(PATH_STEPS if n > 1 else 1):
+            out.append(tuple(a[j] + (((b[j] - a[j]) * t) >> 4) for j in range(3)))
+    return out
 
 
 def frames(w):
@@ -295,10 +328,49 @@ def c_world(w, sid, mid):
     if not w.path:
         out.append("    0")
     out.append("};")
+    if w.moves:
+        # per moving object: its index in the demo's objects (the walls are
+        # object 0), its point count, then x, y, z per point
+        tab = []
+        for n in sorted(w.moves):
+            tab.append(f"    {n + 1}, {len(w.moves[n])},")
+            tab += [f"    {x}, {y}, {z}," for x, y, z in w.moves[n]]
+        size = sum(2 + 3 * len(p) for p in w.moves.values())
+        out.append(f"static const r8_s16 {sid}_moves[{size}] R8_FLASH = {{")
+        out += tab
+        out.append("};")
     return out, f"{mid}_walls"
 
 
 # ---- the built-in indoor world ---------------------------------------------
+
+def _movables():
+    """The rooms' movable objects (.r8s lines): a box that goes to and
+    fro through the door between the first two rooms, a spinning gem in
+    the middle room, and a smaller box through the door from r01 to r02.
+    All float 4 units above the floor (no depth ties with it)."""
+    from .scene import box, Mesh, _orient_outward
+    out = []
+    b = box("box", 10, 10, 10, 16)
+    g = Mesh("gem")
+    g.verts = [(0, -14, 0), (14, 0, 0), (0, 0, 14), (-14, 0, 0), (0, 0, -14), (0, 14, 0)]
+    g.faces = [(14, [0, a, c]) for a, c in ((1, 2), (2, 3), (3, 4), (4, 1))] + \
+              [(12, [5, a, c]) for a, c in ((1, 2), (2, 3), (3, 4), (4, 1))]
+    _orient_outward(g)
+    for m in (b, g):
+        out.append(f"mesh {m.name}")
+        out += [f"v {x} {y} {z}" for x, y, z in m.verts]
+        out += [f"f {c} " + " ".join(map(str, idx)) for c, idx in m.faces]
+        out.append("end")
+    y = FLOOR - 14
+    out.append(f"object box at 48 {y} -30 spin 0 2 0")
+    out.append(f"object gem at 224 10 380 spin 0 3 0")
+    out.append(f"object box at -28 {y} 360")
+    out.append(f"move 0 48 {y} -30")
+    out.append(f"move 0 208 {y} -30")
+    out += [f"move 2 -28 {y} {z}" for z in (360, 440, 540, 440)]
+    return out
+
 
 COLS = [256, 192, 320]      # room widths (x), west to east
 ROWS = [256, 320, 192]      # room depths (z), south to north
@@ -393,7 +465,7 @@ def rooms():
             xd = (xs[c] + xs[c + 1]) // 2 + 3
             pts.append((xd, 0, zd - 37 * dz, yaw))
             pts.append((xd, 0, zd + 43 * dz, yaw))
-    text = "\n".join(lines)
+    text = "\n".join(lines) + "\n" + "\n".join(_movables())
     head = ("# rooms: nine box rooms in a 3 x 3 grid joined by doors (generated by\n"
             "# `python -m rast8.sectors rooms`): the portal renderer's scene\n"
             "scene rooms\ncamera focal 40 near 8\nlight -0.3 -1.0 -0.5 ambient 0.35\n")

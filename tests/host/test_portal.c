@@ -31,6 +31,7 @@ static void cfg_for(r8_render_cfg *c, r8_u8 method, r8_s16 band)
 {
     r8_render_defaults(c);
     TEST_ASSERT_EQUAL_INT(0, r8_demo_setup(&run, r8_demo_get(R8_DEMO_ROOMS), W));
+    run.scene.nobjects = 1;    /* the walls alone (test_portal_obj.c: the objects) */
     c->scene = &run.scene;
     c->method = method;
     c->format = R8_FMT_IDX8;   /* shade per pixel: a wrong wall shows */
@@ -103,6 +104,7 @@ static void render_ids(r8_u8 method, r8_u16 frame, r8_u8 out[2][W * H])
         TEST_ASSERT_EQUAL_INT(0, render(&c, frame, out[pass]));
     }
     TEST_ASSERT_EQUAL_INT(0, r8_demo_setup(&run, r8_demo_get(R8_DEMO_ROOMS), W));
+    run.scene.nobjects = 1;
 }
 
 /* Pixels where the two methods drew faces that do not share an edge:

@@ -94,6 +94,68 @@ def test_rooms_world():
     assert len(seen) == 48 * sectors.PATH_STEPS
 
 
+MOVER = """mesh cube
+v -5 -5 -5
+v 5 -5 -5
+v 5 5 -5
+v -5 5 -5
+v -5 -5 5
+v 5 -5 5
+v 5 5 5
+v -5 5 5
+f 16 0 1 2 3
+f 16 5 4 7 6
+f 16 1 5 6 2
+f 16 4 0 3 7
+f 16 4 5 1 0
+f 16 3 2 6 7
+end
+object cube at 40 -10 50
+move 0 40 -10 50
+move 0 160 -10 50
+"""
+
+
+def test_moving_object_crosses_sectors(tmp_path):
+    sc = scene.parse_r8s(TWO + MOVER, "two.r8s")
+    w = sc.world
+    assert w.moves == {0: [(40, -10, 50), (160, -10, 50)]}
+    fr = sectors.move_frames(w.moves[0])
+    assert len(fr) == 2 * sectors.PATH_STEPS and fr[1] == (47, -10, 50)
+    assert {sectors.locate(w, f)[0] for f in fr} == {0, 1}
+    out = tmp_path / "two.c"
+    scene.to_c([sc], str(out))
+    c = out.read_text()
+    assert "static const r8_s16 two_moves[8] R8_FLASH = {\n    1, 2,\n    40, -10, 50,\n    160, -10, 50," in c
+    assert "R8_DEMO_WORLDM(&two_world, two_path, 2, two_moves, 1)};" in c
+
+
+@pytest.mark.parametrize("edit,msg", [
+    (("move 0 160 -10 50", "move 0 260 -10 50"), "outside every sector"),
+    (("move 0 160 -10 50", "move 1 160 -10 50"), "'move 1': the scene has 1 objects"),
+    (("move 0 160 -10 50", "move 0 160 -10"), "usage: move N X Y Z"),
+    (("move 0 160 -10 50", "move -1 160 -10 50"), "out of range"),
+])
+def test_bad_moves_name_the_line(edit, msg):
+    with pytest.raises(scene.SceneError) as e:
+        scene.parse_r8s(TWO + MOVER.replace(*edit), "bad.r8s")
+    assert msg in str(e.value) and str(e.value).startswith("bad.r8s:")
+
+
+def test_move_without_world():
+    with pytest.raises(scene.SceneError) as e:
+        scene.parse_r8s("scene s\n" + MOVER, "bad.r8s")
+    assert "'move' without a world" in str(e.value)
+
+
+def test_rooms_objects_move_between_rooms():
+    w = scene.builtin("rooms").world
+    assert sorted(w.moves) == [0, 2]
+    names = [w.sectors[k].name for k in range(len(w.sectors))]
+    for n, rooms in ((0, {"r00", "r10"}), (2, {"r01", "r02"})):
+        assert {names[sectors.locate(w, f)[0]] for f in sectors.move_frames(w.moves[n])} == rooms
+
+
 def test_rooms_file_is_the_generator_output():
     with open(ROOMS, encoding="utf-8") as f:
         assert f.read() == sectors.rooms()
@@ -107,7 +169,9 @@ def test_rooms_c_has_the_world_and_the_walls_mesh(tmp_path):
     assert "static const r8_world rooms_world = {&rooms_rooms, rooms_sectors, rooms_target, %d, 9};" \
         % len(walls) in c
     assert "rooms_rooms_walls = {rooms_rooms_v, rooms_rooms_f, rooms_rooms_n, 200, %d," % len(walls) in c
-    assert "R8_DEMO_WORLD(&rooms_world, rooms_path, 48)};" in c
+    assert "R8_DEMO_WORLDM(&rooms_world, rooms_path, 48, rooms_moves, 2)};" in c
+    # the moving objects' table: demo object index, point count, points
+    assert "static const r8_s16 rooms_moves[22] R8_FLASH = {\n    1, 2,\n    48, 34, -30," in c
     # the generated scenes/rooms.c is up to date
     with open(os.path.join(ROOT, "scenes", "rooms.c"), encoding="utf-8") as f:
         assert f.read() == c

@@ -104,13 +104,16 @@ def read_sizes(t):
     return sizes, why
 
 
-def fw_path(t, s, m, frames, sh=1, wire=0):
+def fw_path(t, s, m, frames, sh=1, wire=0, objs=1):
     """Firmware of scene s, method m, `frames` frames; shading sh
     (R8_SHADE_*; Lambert, the demo's, unless make bench asks); wire=1 the
-    wireframe build (cfg.wire; ports/fwdefs.sh)."""
-    tail = "" if sh == 1 and not wire else "-%d" % sh
-    if wire:
-        tail += "-1"
+    wireframe build (cfg.wire; ports/fwdefs.sh); objs=0 a world's walls
+    without its movable objects (make bench-portal)."""
+    tail = "" if sh == 1 and not wire and objs else "-%d" % sh
+    if wire or not objs:
+        tail += "-%d" % wire
+    if not objs:
+        tail += "-0"
     return os.path.join(XB, t, "fw", "fw-%d-%d-%d%s.%s" % (s, m, frames, tail, EXT[t]))
 
 
