@@ -71,7 +71,7 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
 # (function-level dead code removal; C65_GC=0: off).
 C65_ASM    := $(wildcard ports/6502/*.s)
-C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT -DR8_ASM_EDGE
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_TXBAND -DR8_ASM_XFORM -DR8_ASM_PROJECT -DR8_ASM_EDGE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 # Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
 # links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:
