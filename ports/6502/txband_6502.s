@@ -205,11 +205,29 @@ fast:   ldy     #FB_BUF
         lda     (tx),y
         adc     fpp+1
         sta     fpp+1
-        ldy     #0              ; zz: the leading zeros
-@z:     lda     (bp),y
+        lda     nn              ; zz: the leading zeros, 4 bytes a turn
+        and     #$FC            ; up to nn & ~3, then one at a time
+        sta     tmp
+        ldy     #0
+@z4:    lda     (bp),y
         bne     @zd
         iny
-        cpy     nn
+        lda     (bp),y
+        bne     @zd
+        iny
+        lda     (bp),y
+        bne     @zd
+        iny
+        lda     (bp),y
+        bne     @zd
+        iny
+        cpy     tmp
+        bne     @z4
+@z:     cpy     nn
+        beq     @zd
+        lda     (bp),y
+        bne     @zd
+        iny
         bne     @z
 @zd:    sty     zz
         cpy     nn
