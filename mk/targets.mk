@@ -64,10 +64,11 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # together: bench/kern6502.py builds without each) - R8_ASM_MUL16
 # mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
 # R8_ASM_PROJECT proj_6502.s, R8_ASM_EDGE edge_6502.s, R8_ASM_WIRE
-# wire_6502.s; mul_6502.s is their
+# wire_6502.s, R8_ASM_TXBAND txband_6502.s (r8_tx_band; needs
+# wire_6502.s); mul_6502.s is their
 # quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
-# long multiplies.  tests/c/test_mul.c, test_kern.c and test_wirek.c
-# compare them with the C in sim65.  Programs link with ports/6502/
+# long multiplies.  tests/c/test_mul.c, test_kern.c, test_wirek.c and
+# test_txband.c compare them with the C in sim65.  Programs link with ports/6502/
 # rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
 # (function-level dead code removal; C65_GC=0: off).
 C65_ASM    := $(wildcard ports/6502/*.s)
