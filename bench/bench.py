@@ -202,22 +202,25 @@ def measure(t, s, m, need, host_streams, sh=1, wire=0, objs=1):
 SECTION_6502 = [
     "## The 6502 port: what each piece buys (cube / cull)",
     "",
-    "`python3 bench/kern6502.py` (measured on branch p6502, issue 10): sim65 cycles per "
+    "`python3 bench/kern6502.py` (measured on branch j-m6502, issue 10): sim65 cycles per "
     "frame (4-frame run minus 2-frame run, over 2) and image size of the cube / cull firmware "
     "with one piece left out.  Every variant's stream equals the host's.",
     "",
     "| 6502 cube / cull | cycles/frame | vs the build | flash | RAM static |",
     "|---|---:|---:|---:|---:|",
-    "| all kernels, gc65 (the build) | 451,017 | +0 | 48,219 | 4,655 |",
-    "| without r8k_trap (R8_ASM_TRAP, trap_6502.s) | 774,857 | +323,840 | 48,786 | 4,653 |",
-    "| without the wire kernels (R8_ASM_WIRE, wire_6502.s) | 737,880 | +286,863 | 48,151 | 4,158 |",
-    "| without r8k_xform (R8_ASM_XFORM, xform_6502.s) | 474,477 | +23,460 | 48,516 | 4,663 |",
-    "| without r8k_project (R8_ASM_PROJECT, proj_6502.s) | 482,831 | +31,814 | 48,021 | 4,667 |",
-    "| without r8k_edge (R8_ASM_EDGE, edge_6502.s) | 464,889 | +13,872 | 48,536 | 4,686 |",
-    "| without r8_mul16 (R8_ASM_MUL16, mul16_6502.s) | 465,032 | +14,015 | 48,441 | 4,659 |",
-    "| without cc65's runtime multiplies replaced (rtmul_6502.s) | 470,822 | +19,805 | 47,930 | 4,655 |",
-    "| without gc65 (whole objects linked) | 451,318 | +301 | 55,028 | 4,789 |",
-    "| none of it (the C, cc65's runtime, whole objects) | 1,370,735 | +919,718 | 52,819 | 2,252 |",
+    "| all kernels, gc65 (the build) | 377,990 | +0 | 44,369 | 4,601 |",
+    "| without r8k_trap (R8_ASM_TRAP, trap_6502.s) | 700,784 | +322,794 | 44,936 | 4,599 |",
+    "| without r8_tx_band (R8_ASM_TXBAND, txband_6502.s) | 434,924 | +56,934 | 43,111 | 4,591 |",
+    "| without the wire kernels (R8_ASM_WIRE + R8_ASM_TXBAND, wire_6502.s, txband_6502.s) | 721,501 | +343,511 | 43,043 | 4,094 |",
+    "| without r8_scanx_fill (R8_ASM_SCANX, scanx_6502.s) | 392,703 | +14,713 | 43,735 | 4,591 |",
+    "| without r8k_fill (R8_ASM_FILL, fill_6502.s) | 380,742 | +2,752 | 44,368 | 4,601 |",
+    "| without r8k_xform (R8_ASM_XFORM, xform_6502.s) | 400,943 | +22,953 | 44,666 | 4,609 |",
+    "| without r8k_project (R8_ASM_PROJECT, proj_6502.s) | 410,790 | +32,800 | 44,171 | 4,613 |",
+    "| without r8k_edge (R8_ASM_EDGE, edge_6502.s) | 391,216 | +13,226 | 44,686 | 4,632 |",
+    "| without r8_mul16 (R8_ASM_MUL16, mul16_6502.s) | 392,972 | +14,982 | 44,591 | 4,605 |",
+    "| without cc65's runtime multiplies replaced (rtmul_6502.s) | 397,291 | +19,301 | 44,080 | 4,601 |",
+    "| without gc65 (whole objects linked) | 378,120 | +130 | 53,958 | 4,825 |",
+    "| none of it (the C, cc65's runtime, whole objects) | 1,372,456 | +994,466 | 49,763 | 2,268 |",
     "",
     "* The multiplies (ports/6502/mul_6502.s) are quarter squares: four 512-entry tables "
     "(2 KB) and the CRC table (512 B) are built in RAM before main (R8PAGE in "

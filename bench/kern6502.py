@@ -21,12 +21,16 @@ import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 FW = "build/x/6502/fw/fw-0-0-%d.prg"
-ALL_DEFS = ["R8_ASM_MUL16", "R8_ASM_TRAP", "R8_ASM_WIRE", "R8_ASM_XFORM", "R8_ASM_PROJECT", "R8_ASM_EDGE"]
+ALL_DEFS = ["R8_ASM_MUL16", "R8_ASM_TRAP", "R8_ASM_WIRE", "R8_ASM_TXBAND", "R8_ASM_SCANX", "R8_ASM_FILL", "R8_ASM_XFORM", "R8_ASM_PROJECT", "R8_ASM_EDGE"]
 ALL_ASM = sorted(f for f in os.listdir(os.path.join(ROOT, "ports", "6502")) if f.endswith(".s"))
 VARIANTS = [
     ("all kernels, gc65 (the build)", {}),
     ("without r8k_trap (R8_ASM_TRAP)", {"defs": ["R8_ASM_TRAP"], "asm": ["trap_6502.s"]}),
-    ("without the wire kernels (R8_ASM_WIRE)", {"defs": ["R8_ASM_WIRE"], "asm": ["wire_6502.s"]}),
+    ("without r8_tx_band (R8_ASM_TXBAND)", {"defs": ["R8_ASM_TXBAND"], "asm": ["txband_6502.s"]}),
+    ("without the wire kernels (R8_ASM_WIRE, R8_ASM_TXBAND)",
+     {"defs": ["R8_ASM_WIRE", "R8_ASM_TXBAND"], "asm": ["wire_6502.s", "txband_6502.s"]}),
+    ("without r8_scanx_fill (R8_ASM_SCANX)", {"defs": ["R8_ASM_SCANX"], "asm": ["scanx_6502.s"]}),
+    ("without r8k_fill (R8_ASM_FILL)", {"defs": ["R8_ASM_FILL"], "asm": ["fill_6502.s"]}),
     ("without r8k_xform (R8_ASM_XFORM)", {"defs": ["R8_ASM_XFORM"], "asm": ["xform_6502.s"]}),
     ("without r8k_project (R8_ASM_PROJECT)", {"defs": ["R8_ASM_PROJECT"], "asm": ["proj_6502.s"]}),
     ("without r8k_edge (R8_ASM_EDGE)", {"defs": ["R8_ASM_EDGE"], "asm": ["edge_6502.s"]}),

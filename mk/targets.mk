@@ -64,14 +64,18 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # together: bench/kern6502.py builds without each) - R8_ASM_MUL16
 # mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
 # R8_ASM_PROJECT proj_6502.s, R8_ASM_EDGE edge_6502.s, R8_ASM_WIRE
-# wire_6502.s; mul_6502.s is their
+# wire_6502.s, R8_ASM_TXBAND txband_6502.s (r8_tx_band; needs
+# wire_6502.s), R8_ASM_SCANX scanx_6502.s (r8_scanx_fill), R8_ASM_FILL
+# fill_6502.s (r8k_fill); mul_6502.s is their
 # quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
-# long multiplies.  tests/c/test_mul.c, test_kern.c and test_wirek.c
-# compare them with the C in sim65.  Programs link with ports/6502/
+# long multiplies.  tests/c/test_mul.c, test_kern.c, test_wirek.c,
+# test_txband.c and test_scanx.c compare them with the C in sim65.  Programs link with ports/6502/
 # rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
-# (function-level dead code removal; C65_GC=0: off).
+# (function-level dead code removal; C65_GC=0: off); one that does not fit
+# is linked again with ports/6502/ckern.s65 (the C versions of txband,
+# scanx and fill: ports/xbuild.sh).
 C65_ASM    := $(wildcard ports/6502/*.s)
-C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_XFORM -DR8_ASM_PROJECT -DR8_ASM_EDGE
+C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_TXBAND -DR8_ASM_SCANX -DR8_ASM_FILL -DR8_ASM_XFORM -DR8_ASM_PROJECT -DR8_ASM_EDGE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
 # Z80 assembly kernels (ports/z80/NAME_z80.s, sdas): Z80_ASM=1 (default)
 # links them all, Z80_ASM=0 none (the C89 references), or a list of NAMEs:

@@ -41,6 +41,9 @@ case $tgt in
     # Function-level dead-code removal (ports/6502/gc65.py; C65_GC=0: off):
     # the program's and the library members' ca65 sources, only what
     # _main reaches, assembled in $base.gc/ and linked as objects.
+    # A program that does not fit with the speed kernels is linked again
+    # with ports/6502/ckern.s65: their C versions under their names.
+    for try in 1 2; do
     link=("$base.o" "${objs[@]}" $X/obj/plat_sim65.o $X/rast8.lib)
     if [ "${C65_GC:-1}" != 0 ]; then
       progs=("$base.s")
@@ -59,8 +62,15 @@ case $tgt in
     fi
     # C stack 1 KB instead of 2 (measured peaks are ~300 B): 1 KB more for code
     cl65 -t sim6502 -C ports/6502/rast8.cfg --ld-args -D,__STACKSIZE__=0x0200,-Ln,"$base.lbl",--dbgfile,"$base.dbg" -m "$base.map" -o "$out" "${link[@]}" \
-      >> "$log" 2>&1 || {
-        grep -q 'overflows memory area' "$log" && skip "$(grep -m1 -o 'Segment.*' "$log") (sim6502: 63 KB for code+data, 512 B C stack)"; fail; }
+      > "$log.ld" 2>&1 && { cat "$log.ld" >> "$log"; rm -f "$log.ld"; break; }
+    cat "$log.ld" >> "$log"
+    grep -q 'overflows memory area' "$log.ld" || fail
+    [ $try = 2 ] && skip "$(grep -m1 -o 'Segment.*' "$log.ld") (sim6502: 63 KB for code+data, 512 B C stack; with the C kernels)"
+    echo "xbuild.sh: $(grep -m1 -o 'Segment.*' "$log.ld"): again with ports/6502/ckern.s65" >> "$log"
+    cp ports/6502/ckern.s65 "$base.ck.s"
+    ca65 -g -t sim6502 -o "$base.ck.o" "$base.ck.s" >> "$log" 2>&1 || fail
+    objs+=("$base.ck.o")
+    done
     # segment sizes from the map: CODE+RODATA+DATA (program), DATA+BSS (RAM)
     python3 - "$base.map" > "$out.size" <<'PY'
 import re, sys

@@ -56,6 +56,11 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c);
 /* How many bytes of p[0..n) are 0x00 before the first other. */
 unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n);
 
+#ifdef R8_ASM_TXBAND
+/* src/wire.c's r8_tx_band when a port links its own (R8_ASM_TXBAND) */
+int r8_tx_band_c(r8_tx *tx, const r8_fb *band);
+#endif
+
 #if defined(R8_ASM_WIRE)
 unsigned r8_tx_zeros(const r8_u8 *p, unsigned n);
 r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k);

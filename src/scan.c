@@ -222,6 +222,18 @@ int r8_scan_row(r8_scanx *s, r8_s16 y, int judd)
 }
 
 
+#if defined(R8_ASM_SCANX) && !defined(r8_scanx_fill)
+/* a port's r8_scanx_fill (6502: ports/6502/scanx_6502.s) hands the
+ * calls it does not take to this one, the reference, and restarts
+ * edges through r8_scanx_edge */
+#define r8_scanx_fill r8_scanx_fill_c
+void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y);
+void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y)
+{
+    edge_start(s, e, e->vi, dir, y);
+}
+#endif
 void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 {
     r8_edge *l = &s->l, *r = &s->r;

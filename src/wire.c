@@ -602,6 +602,12 @@ static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n
     tx->sent++;
 }
 
+#if defined(R8_ASM_TXBAND) && !defined(r8_tx_band)
+/* a port's r8_tx_band (6502: ports/6502/txband_6502.s) hands the bands
+ * it does not take to this one, the reference (r8crc.h; a test that
+ * compiles this file under other names keeps them) */
+#define r8_tx_band r8_tx_band_c
+#endif
 int r8_tx_band(register r8_tx *tx, const r8_fb *band)
 {
     unsigned idx, n, z;

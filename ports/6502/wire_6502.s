@@ -13,6 +13,8 @@
 
         .export         _r8_crc16_update, _r8_crc16_mul, _r8_tx_zeros
         .export         _r8_tx_run, _r8_tx_lit
+        .export         txrun, txlit, THI, TLO      ; for txband_6502.s
+        .exportzp       ptr, optr, sptr, ch, cl, kk, cnt
         .import         _r8_crc16_shift, pushax
         .importzp       sp
         .constructor    crc_init
@@ -229,7 +231,8 @@ _r8_tx_run:
         sta     kk
         ARGS3   0
         POPN    6
-        ldy     #0
+; txrun: the same with k in kk, p, o, s in ptr, optr, sptr (no stack)
+txrun:  ldy     #0
         lda     (ptr),y
         sta     vv
         ldy     #3              ; c = 3; while c < k && p[c] == v: c++
@@ -346,7 +349,8 @@ _r8_tx_lit:
         sta     kk
         ARGS3   1
         POPN    7
-        ldx     kk              ; the first run of 3 among k positions
+; txlit: the same with c in cnt, k in kk, p, o, s in ptr, optr, sptr
+txlit:  ldx     kk              ; the first run of 3 among k positions
         beq     @len
         ldy     #0
 @scan:  lda     (ptr),y         ; p[i]

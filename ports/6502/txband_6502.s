@@ -1,0 +1,728 @@
+; txband_6502.s - r8_tx_band (include/r8wire.h) for the 6502 (ca65,
+; issue 10): one band of a frame onto the wire without the C glue.
+; Built into the 6502 library with -DR8_ASM_TXBAND (mk/targets.mk):
+; src/wire.c then names its C89 version r8_tx_band_c, the reference,
+; and this one takes the common case and hands every other to it:
+;
+;   in a frame, the band the encoder expects next (y0 = next_y), a whole
+;   band (height - y0 >= band), the frame's width and format, codec RLE,
+;   8 <= band bytes <= 255; and the RLE payload smaller than the band,
+;   with the COBS chain never broken (no block of 254 non-zero bytes).
+;
+; Nothing of tx changes before that is known (only the packet scratch
+; is written), so the C version then does the whole band itself.  What
+; is left is what src/wire.c's r8_tx_band, tx_band, tx_rle and tx_send
+; (all = 0) do on that path: the header, the RLE tokens (txrun and
+; txlit of wire_6502.s: packet CRC, the band's CRC from 0, Fletcher
+; sums, COBS links), the fingerprint, the frame CRC, the skip of an
+; unchanged band in a delta frame, and one put of the framed packet.
+; tests/c/test_txband.c compares the two on random frames in sim65, and
+; the r8_tx / r8_fb offsets below with the C compiler's (r8_txband_offs).
+
+        .export         _r8_tx_band, _r8_txband_offs
+        .import         _r8_tx_band_c, _r8_crc16_mul
+        .import         txrun, txlit, THI, TLO
+        .import         pushax, jmpvec
+        .importzp       sp, ptr, optr, sptr, ch, cl, kk, cnt
+
+; r8_tx (include/r8wire.h) and r8_fb (include/r8fb.h) on cc65
+TX_FORMAT  = $00
+TX_WIDTH   = $01
+TX_HEIGHT  = $03
+TX_BAND    = $05
+TX_CODEC   = $07
+TX_PUT     = $0E
+TX_CTX     = $10
+TX_PKT     = $12
+TX_FP      = $16
+TX_BANDB   = $1A
+TX_XN      = $1C
+TX_NEXTY   = $1E
+TX_NEXTIDX = $20
+TX_FRAME   = $22
+TX_SENT    = $26
+TX_FCRC    = $28
+TX_HCRC    = $2A
+TX_FULL    = $2C
+TX_INFRAME = $2E
+TX_BYTES   = $3C
+TX_RAW     = $40
+FB_BUF     = $00
+FB_WIDTH   = $02
+FB_Y0      = $06
+FB_FORMAT  = $0A
+; r8_tx_st (src/r8crc.h)
+S_CRC   = 0
+S_F1    = 2
+S_F2    = 3
+S_PKT   = 4
+S_CODE  = 6
+S_G     = 8
+
+        .rodata
+; the offsets above, in the order tests/c/test_txband.c checks them
+_r8_txband_offs:
+        .byte   TX_FORMAT, TX_WIDTH, TX_HEIGHT, TX_BAND, TX_CODEC, TX_PUT, TX_CTX
+        .byte   TX_PKT, TX_FP, TX_BANDB, TX_XN, TX_NEXTY, TX_NEXTIDX, TX_FRAME
+        .byte   TX_SENT, TX_FCRC, TX_HCRC, TX_FULL, TX_INFRAME, TX_BYTES, TX_RAW
+        .byte   FB_BUF, FB_WIDTH, FB_Y0, FB_FORMAT
+
+        .zeropage
+tx:     .res    2               ; the r8_tx
+fbp:    .res    2               ; the r8_fb
+bp:     .res    2               ; its buffer
+lk:     .res    2               ; a code byte being linked
+pk:     .res    2               ; tx->pkt
+fpp:    .res    2               ; tx->fp + 4 * idx
+y0:     .res    2
+nn:     .res    1               ; band bytes
+zz:     .res    1               ; its leading zeros
+room:   .res    1               ; payload bytes still free
+left:   .res    1               ; band bytes not encoded yet
+full:   .res    1               ; a literal count that means "no room"
+tmp:    .res    2
+
+        .bss
+st:     .res    10              ; the r8_tx_st of the packet
+
+        .code
+
+; one CRC step of the byte in A on ch:cl (X changed)
+.macro  CRCSTEP
+        eor     ch
+        tax
+        lda     cl
+        eor     THI,x
+        sta     ch
+        lda     TLO,x
+        sta     cl
+.endmacro
+
+; int r8_tx_band(r8_tx *tx, const r8_fb *band): band in A/X, tx at (sp)
+_r8_tx_band:
+        sta     fbp
+        stx     fbp+1
+        ldy     #1
+        lda     (sp),y
+        sta     tx+1
+        dey
+        lda     (sp),y
+        sta     tx
+        ldy     #TX_INFRAME     ; the common case?
+        lda     (tx),y
+        beq     slow
+        ldy     #TX_CODEC
+        lda     (tx),y
+        cmp     #1              ; R8_CODEC_RLE
+        bne     slow
+        ldy     #TX_BANDB+1
+        lda     (tx),y
+        bne     slow
+        dey
+        lda     (tx),y
+        cmp     #8
+        bcc     slow
+        sta     nn
+        ldy     #FB_Y0
+        lda     (fbp),y
+        sta     y0
+        iny
+        lda     (fbp),y
+        sta     y0+1
+        bmi     slow            ; y0 < 0
+        ldy     #TX_NEXTY
+        lda     (tx),y
+        cmp     y0
+        bne     slow
+        iny
+        lda     (tx),y
+        cmp     y0+1
+        bne     slow
+        ldy     #FB_WIDTH
+        lda     (fbp),y
+        ldy     #TX_WIDTH
+        cmp     (tx),y
+        bne     slow
+        ldy     #FB_WIDTH+1
+        lda     (fbp),y
+        ldy     #TX_WIDTH+1
+        cmp     (tx),y
+        bne     slow
+        ldy     #FB_FORMAT
+        lda     (fbp),y
+        ldy     #TX_FORMAT
+        cmp     (tx),y
+        bne     slow
+        sec                     ; height - y0 - band >= 0: a whole band
+        ldy     #TX_HEIGHT
+        lda     (tx),y
+        sbc     y0
+        sta     tmp
+        iny
+        lda     (tx),y
+        sbc     y0+1
+        sta     tmp+1
+        sec
+        lda     tmp
+        ldy     #TX_BAND
+        sbc     (tx),y
+        lda     tmp+1
+        iny
+        sbc     (tx),y
+        bpl     fast
+slow:   lda     fbp             ; tx still on the C stack, band in A/X
+        ldx     fbp+1
+        jmp     _r8_tx_band_c
+
+fast:   ldy     #FB_BUF
+        lda     (fbp),y
+        sta     bp
+        iny
+        lda     (fbp),y
+        sta     bp+1
+        ldy     #TX_PKT
+        lda     (tx),y
+        sta     pk
+        iny
+        lda     (tx),y
+        sta     pk+1
+        ldy     #TX_NEXTIDX     ; fpp = tx->fp + 4 idx
+        lda     (tx),y
+        sta     fpp
+        iny
+        lda     (tx),y
+        asl     fpp
+        rol     a
+        asl     fpp
+        rol     a
+        sta     fpp+1
+        ldy     #TX_FP
+        lda     (tx),y
+        clc
+        adc     fpp
+        sta     fpp
+        iny
+        lda     (tx),y
+        adc     fpp+1
+        sta     fpp+1
+        lda     nn              ; zz: the leading zeros, 4 bytes a turn
+        and     #$FC            ; up to nn & ~3, then one at a time
+        sta     tmp
+        ldy     #0
+@z4:    lda     (bp),y
+        bne     @zd
+        iny
+        lda     (bp),y
+        bne     @zd
+        iny
+        lda     (bp),y
+        bne     @zd
+        iny
+        lda     (bp),y
+        bne     @zd
+        iny
+        cpy     tmp
+        bne     @z4
+@z:     cpy     nn
+        beq     @zd
+        lda     (bp),y
+        bne     @zd
+        iny
+        bne     @z
+@zd:    sty     zz
+        cpy     nn
+        bne     encode
+        ldy     #3              ; a band of zeros: unchanged in a delta
+        lda     #0              ; frame, only the frame CRC moves
+@o:     ora     (fpp),y
+        dey
+        bpl     @o
+        ldy     #TX_FULL
+        ora     (tx),y
+        bne     encode
+        jsr     commit
+        jsr     fcrcmul
+        jmp     done
+
+; ---- the packet, in the scratch only
+encode: ldy     #TX_FRAME       ; header: BAND, frame, y0, RLE
+        lda     (tx),y
+        tax
+        iny
+        lda     (tx),y
+        ldy     #2
+        sta     (pk),y          ; b[1] = frame high
+        txa
+        iny
+        sta     (pk),y          ; b[2] = frame low
+        ldy     #1
+        lda     #2              ; R8_PKT_BAND
+        sta     (pk),y
+        ldy     #4
+        lda     y0+1
+        sta     (pk),y
+        iny
+        lda     y0
+        sta     (pk),y
+        iny
+        lda     #1              ; R8_CODEC_RLE
+        sta     (pk),y
+        ldy     #TX_HCRC        ; s.crc = crc(hcrc, b[3..5])
+        lda     (tx),y
+        sta     cl
+        iny
+        lda     (tx),y
+        sta     ch
+        lda     y0+1
+        CRCSTEP
+        lda     y0
+        CRCSTEP
+        lda     #1
+        CRCSTEP
+        lda     cl
+        sta     st+S_CRC
+        lda     ch
+        sta     st+S_CRC+1
+        lda     pk              ; s.pkt = s.code = pkt
+        sta     st+S_PKT
+        sta     st+S_CODE
+        lda     pk+1
+        sta     st+S_PKT+1
+        sta     st+S_CODE+1
+        lda     #0
+        sta     st+S_F1
+        sta     st+S_F2
+        sta     st+S_G
+        sta     st+S_G+1
+        ldy     #2              ; the header's zeros (b[1..4]: pkt + 2..5)
+@hz:    lda     (pk),y          ; link: *code = q - code, code = q
+        bne     @hn
+        sty     tmp
+        tya
+        sec
+        sbc     st+S_CODE       ; (code is pkt + 1 .. 4: same page or
+        clc                     ;  the next; the difference is 8-bit)
+        adc     pk
+        ldx     st+S_CODE       ; *code
+        stx     ptr
+        ldx     st+S_CODE+1
+        stx     ptr+1
+        ldy     #0
+        sta     (ptr),y
+        lda     tmp             ; code = pkt + y
+        clc
+        adc     pk
+        sta     st+S_CODE
+        lda     pk+1
+        adc     #0
+        sta     st+S_CODE+1
+        ldy     tmp
+@hn:    iny
+        cpy     #6
+        bne     @hz
+        lda     #<st
+        sta     sptr
+        lda     #>st
+        sta     sptr+1
+        lda     pk              ; o = b + 6 = pkt + 7
+        clc
+        adc     #7
+        sta     optr
+        lda     pk+1
+        adc     #0
+        sta     optr+1
+        lda     bp
+        sta     ptr
+        lda     bp+1
+        sta     ptr+1
+        ldx     nn
+        dex
+        stx     room            ; cap = n - 1
+        lda     nn
+        sta     left
+
+; the leading zeros: runs of up to 127 while 3 or more are left
+@zl:    lda     zz
+        cmp     #3
+        bcc     tokens
+        cmp     #127
+        bcc     :+
+        lda     #127
+:       sta     cnt
+        lda     room
+        cmp     #2
+        bcc     fail
+        sbc     #2
+        sta     room
+        ldy     #0
+        lda     cnt
+        sta     (optr),y
+        tya
+        iny
+        sta     (optr),y
+        lda     st+S_CRC        ; s.crc over [c, 0]
+        sta     cl
+        lda     st+S_CRC+1
+        sta     ch
+        lda     cnt
+        CRCSTEP
+        lda     #0
+        CRCSTEP
+        lda     cl
+        sta     st+S_CRC
+        lda     ch
+        sta     st+S_CRC+1
+        lda     #1              ; link o + 1
+        jsr     linko
+        bcs     fail
+        jsr     adv2
+        lda     zz
+        sec
+        sbc     cnt
+        sta     zz
+        lda     left
+        sec
+        sbc     cnt
+        sta     left
+        jsr     advp
+        jmp     @zl
+
+fail:   jmp     slow
+
+; the tokens, as tx_rle: a run of 3 or more, else literals
+tokens: lda     left
+        bne     :+
+        jmp     sent
+:       cmp     #127
+        bcc     :+
+        lda     #127
+:       sta     cnt             ; c = min(127, left)
+        cmp     #3
+        bcc     @lit
+        ldy     #0
+        lda     (ptr),y
+        iny
+        cmp     (ptr),y
+        bne     @lit
+        iny
+        cmp     (ptr),y
+        bne     @lit
+        lda     room            ; a run
+        cmp     #2
+        bcc     fail
+        sbc     #2
+        sta     room
+        lda     cnt
+        sta     kk
+        jsr     txrun
+        sta     cnt
+        ldy     #1
+        lda     (optr),y
+        bne     :+
+        lda     #1
+        jsr     linko
+        bcs     fail
+:       jsr     adv2
+        jmp     @next
+@lit:   ldx     #127            ; k: where a run of 3 may start
+        lda     left
+        cmp     #129
+        bcs     :+
+        ldx     #0
+        cmp     #2
+        bcc     :+
+        sbc     #2
+        tax
+:       stx     kk
+        lda     #0
+        sta     full
+        lda     room            ; room <= c: at most room - 1 fit
+        cmp     cnt
+        beq     :+
+        bcs     @fits
+:       cmp     #2
+        bcc     fail
+        sbc     #1
+        sta     cnt
+        sta     full
+        cmp     kk
+        bcs     @fits
+        sta     kk
+@fits:  jsr     txlit           ; (o + 1 in optr after it)
+        tax
+        bmi     fail2            ; the chain broke: the C does it
+        cmp     full
+        beq     fail2            ; no room
+        sta     cnt
+        sec                     ; room -= c + 1
+        lda     room
+        sbc     cnt
+        sec
+        sbc     #1
+        sta     room
+        lda     cnt             ; o += c + 1
+        clc
+        adc     optr
+        sta     optr
+        bcc     @next
+        inc     optr+1
+@next:  lda     left
+        sec
+        sbc     cnt
+        sta     left
+        jsr     advp
+        jmp     tokens
+
+fail2:  jmp     slow
+
+; ---- the payload is in: o = end - 3; the CRC, links, the last code
+sent:   ldy     #0              ; o[0], o[1] = the packet CRC
+        lda     st+S_CRC+1
+        sta     (optr),y
+        bne     :+
+        tya
+        jsr     linko
+        bcs     fail2
+:       ldy     #1
+        lda     st+S_CRC
+        sta     (optr),y
+        bne     :+
+        tya
+        jsr     linko
+        bcs     fail2
+:       lda     optr            ; end = o + 2
+        clc
+        adc     #2
+        sta     optr
+        bcc     :+
+        inc     optr+1
+:       lda     optr            ; end - code <= 255
+        sec
+        sbc     st+S_CODE
+        tax
+        lda     optr+1
+        sbc     st+S_CODE+1
+        bne     fail2
+        lda     st+S_CODE
+        sta     ptr
+        lda     st+S_CODE+1
+        sta     ptr+1
+        txa
+        ldy     #0
+        sta     (ptr),y         ; *code = end - code
+        tya
+        sta     (optr),y        ; *end = 0
+
+; ---- it goes: now tx changes
+        jsr     commit
+        lda     zz
+        cmp     nn
+        bne     @fp
+        jsr     fcrcmul         ; zeros: fp = 0, fcrc = fcrc x^(8n)
+        ldy     #3
+        lda     #0
+:       sta     (fpp),y
+        dey
+        bpl     :-
+        jmp     @send
+@fp:    lda     #0              ; the fingerprint g, f1, f2
+        sta     tmp
+        ldy     #0
+        lda     st+S_G+1
+        jsr     fpb
+        lda     st+S_G
+        jsr     fpb
+        lda     st+S_F1
+        jsr     fpb
+        lda     st+S_F2
+        jsr     fpb
+        jsr     fcrcmul         ; fcrc = fcrc x^(8n) ^ g
+        ldy     #TX_FCRC
+        lda     (tx),y
+        eor     st+S_G
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        eor     st+S_G+1
+        sta     (tx),y
+        lda     tmp             ; changed, or a full frame?
+        bne     @send
+        ldy     #TX_FULL
+        lda     (tx),y
+        beq     done
+@send:  lda     optr            ; the packet: end + 1 - pkt bytes
+        sec
+        sbc     pk
+        sta     tmp
+        lda     optr+1
+        sbc     pk+1
+        sta     tmp+1
+        inc     tmp
+        bne     :+
+        inc     tmp+1
+:       ldy     #TX_CTX+1       ; put(ctx, pkt, len)
+        lda     (tx),y
+        tax
+        dey
+        lda     (tx),y
+        jsr     pushax
+        lda     pk
+        ldx     pk+1
+        jsr     pushax
+        ldy     #TX_PUT
+        lda     (tx),y
+        sta     jmpvec+1
+        iny
+        lda     (tx),y
+        sta     jmpvec+2
+        lda     tmp
+        ldx     tmp+1
+        jsr     jmpvec
+        ldy     #TX_BYTES       ; tx->bytes += len
+        lda     tmp
+        ldx     tmp+1
+        jsr     add32
+        ldy     #TX_SENT        ; tx->sent++
+        lda     (tx),y
+        clc
+        adc     #1
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        adc     #0
+        sta     (tx),y
+done:   lda     #2              ; pop tx; R8_OK
+        clc
+        adc     sp
+        sta     sp
+        bcc     :+
+        inc     sp+1
+:       lda     #0
+        tax
+        rts
+
+; ---- helpers
+; link the 0x00 at optr + A into s's chain: carry set (and nothing
+; done) when it is more than 254 bytes after the last code
+linko:  clc
+        adc     optr
+        sta     tmp
+        lda     optr+1
+        adc     #0
+        sta     tmp+1
+        lda     tmp
+        sec
+        sbc     st+S_CODE
+        tax
+        lda     tmp+1
+        sbc     st+S_CODE+1
+        bne     @far
+        cpx     #255
+        bcs     @far
+        ; *code = q - code
+        lda     st+S_CODE
+        sta     lk
+        lda     st+S_CODE+1
+        sta     lk+1
+        txa
+        ldy     #0
+        sta     (lk),y
+        lda     tmp
+        sta     st+S_CODE
+        lda     tmp+1
+        sta     st+S_CODE+1
+        clc
+        rts
+@far:   sec
+        rts
+
+; o += 2
+adv2:   lda     optr
+        clc
+        adc     #2
+        sta     optr
+        bcc     :+
+        inc     optr+1
+:       rts
+
+; p += cnt
+advp:   lda     ptr
+        clc
+        adc     cnt
+        sta     ptr
+        bcc     :+
+        inc     ptr+1
+:       rts
+
+; one fingerprint byte A at fpp[y]: tmp |= changed; y++
+fpb:    tax
+        eor     (fpp),y
+        ora     tmp
+        sta     tmp
+        txa
+        sta     (fpp),y
+        iny
+        rts
+
+; next_y = y0 + band, next_idx++, raw_bytes += n
+commit: ldy     #TX_BAND
+        lda     (tx),y
+        clc
+        adc     y0
+        ldy     #TX_NEXTY
+        sta     (tx),y
+        ldy     #TX_BAND+1
+        lda     (tx),y
+        adc     y0+1
+        ldy     #TX_NEXTY+1
+        sta     (tx),y
+        ldy     #TX_NEXTIDX
+        lda     (tx),y
+        clc
+        adc     #1
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        adc     #0
+        sta     (tx),y
+        ldy     #TX_RAW
+        lda     nn
+        ldx     #0
+; the 32-bit tx field at y += X:A
+add32:  clc
+        adc     (tx),y
+        sta     (tx),y
+        iny
+        txa
+        adc     (tx),y
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        adc     #0
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        adc     #0
+        sta     (tx),y
+        rts
+
+; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn)
+fcrcmul:
+        ldy     #TX_FCRC+1
+        lda     (tx),y
+        tax
+        dey
+        lda     (tx),y
+        jsr     pushax
+        ldy     #TX_XN+1
+        lda     (tx),y
+        tax
+        dey
+        lda     (tx),y
+        jsr     _r8_crc16_mul
+        ldy     #TX_FCRC
+        sta     (tx),y
+        iny
+        txa
+        sta     (tx),y
+        rts
