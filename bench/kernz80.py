@@ -24,7 +24,7 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 FW = "build/x/z80/fw/fw-0-0-4.ihx"
 SIM = "build/emu/z80sim"
-ALL = "mul16 mullong wire trap"   # Z80_KALL in mk/targets.mk
+ALL = "mul16 mullong wire trap fill"   # Z80_KALL in mk/targets.mk
 DEFAULT = [ALL, "mul16 mullong wire", "mul16 mullong trap", "mul16 mullong", "mullong wire trap",
            "mul16 wire trap", "0"]
 

@@ -10,6 +10,13 @@
  *     between guard bytes, and all of t, l and r.
  *   The wire kernels (wire_z80.s) are tests/c/test_wirek.c's (step
  *     xunit-z80, with -DR8_ASM_WIRE when Z80_ASM links them).
+ *   r8k_fill (fill_z80.s): against memset (src/kern.c's reference) on
+ *     random lengths 0..700 at random offsets, the bytes around kept.
+ *   __mulint and __mul16 (mulint_z80.s, sdcc's int * int; linked here):
+ *     against a C89 shift-and-add model, unsigned, signed and char.
+ *   r8k_xform (xform_z80.s): against the reference on random matrices,
+ *     offsets (the 32-bit extremes too) and vertices (model-sized, the
+ *     16-bit extremes, and code bytes); out compared, m and t unchanged.
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
@@ -24,6 +31,7 @@ void r8k_trap_ref(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
 void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
+void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #define r8k_trap r8k_trap_ref
 #define r8k_xform r8k_xform_ref
 #define r8k_project r8k_project_ref
@@ -45,6 +53,9 @@ r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
+#endif
+#ifndef XFORM_CASES
+#define XFORM_CASES 2000
 #endif
 #ifndef MUL_CASES
 #define MUL_CASES 3000
@@ -158,14 +169,210 @@ static void test_mul_random(void)
     TEST_ASSERT_EQUAL_UINT32(0xC0008000UL, (r8_u32)r8_mul16(R8_S16_MIN, 32767));
 }
 
+/* ---- __mulint / __mul16 (mulint_z80.s): every int product of this
+ * file goes through them; the model only adds and shifts ---- */
+static r8_u16 model_mulint(r8_u16 a, r8_u16 b)
+{
+    r8_u16 r = 0;
+    r8_u8 i;
+    for (i = 0; i < 16; i++) {
+        r = (r8_u16)(r << 1);
+        if (b & 0x8000u)
+            r = (r8_u16)(r + a);
+        b = (r8_u16)(b << 1);
+    }
+    return r;
+}
+
+static r8_u16 rnd_int(void)
+{
+    unsigned c = rndn(4);
+    if (c == 0)
+        return (r8_u16)rndn(256);
+    if (c == 1)
+        return (r8_u16)(0u - rndn(256));
+    return (r8_u16)rnd();
+}
+
+static void test_mulint_random(void)
+{
+    unsigned long i;
+    for (i = 0; i < MUL_CASES; i++) {
+        r8_u16 a = rnd_int(), b = rnd_int(), want = model_mulint(a, b);
+        r8_s16 sa = (r8_s16)a, sb = (r8_s16)b;
+        signed char ca = (signed char)(a & 0xFFu), cb = (signed char)(b & 0xFFu);
+        unsigned char ua = (unsigned char)(a & 0xFFu);
+        if ((r8_u16)(a * b) != want || (r8_u16)(sa * sb) != want) {
+            print_case("__mulint", i);
+            TEST_ASSERT_EQUAL_UINT16(want, (r8_u16)(a * b));
+            TEST_ASSERT_EQUAL_UINT16(want, (r8_u16)(sa * sb));
+        }
+        want = model_mulint((r8_u16)(r8_s16)ca, (r8_u16)(r8_s16)cb);
+        if ((r8_u16)(ca * cb) != want) {
+            print_case("__mulschar", i);
+            TEST_ASSERT_EQUAL_UINT16(want, (r8_u16)(ca * cb));
+        }
+        want = model_mulint((r8_u16)ua, (r8_u16)(r8_s16)cb);
+        if ((r8_u16)(ua * cb) != want) {
+            print_case("__muluschar", i);
+            TEST_ASSERT_EQUAL_UINT16(want, (r8_u16)(ua * cb));
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT16(0xFFFEu, model_mulint(0xFFFFu, 2u));
+    TEST_ASSERT_EQUAL_UINT16(0x0001u, model_mulint(0xFFFFu, 0xFFFFu));
+}
+
+/* ---- r8k_xform ---- */
+
+static const r8_s16 vt_ext[96] R8_FLASH = {
+    128, -32767, 0, 2, 128, R8_S16_MIN, -256, 1, 32767, 2, 32767, -129,
+    255, 32766, -16383, -32767, 126, 2, -127, -32766, -255, 16384, -2, -32767,
+    0, -16384, 129, -2, -1, 0, -128, 32767, 256, -129, 1, -16383,
+    256, -128, 256, -2, -16384, 1, 16385, -255, 1, 129, -1, -32767,
+    128, R8_S16_MIN, -255, -16384, -256, -128, 127, -2, 16385, -255, -127, 256,
+    127, 1, 0, 2, -32766, 255, 128, -127, 126, -16383, 32767, -255,
+    0, -255, -32767, -32767, 2, -128, 32767, 129, 256, -32766, 127, -32766,
+    -16384, -1, 128, -2, 129, -16384, -16385, 16385, 16385, -16385, 1, R8_S16_MIN
+};
+static const r8_s16 vt_small[96] R8_FLASH = {
+    -128, 127, -128, -128, 127, 127, -31, 50, 93, 84, 100, -3,
+    12, -55, -37, -67, 8, 105, 26, -44, -39, -38, 117, 49,
+    39, 94, -14, -126, -106, 41, 35, -4, -88, 6, 101, 79,
+    -47, 71, 125, -5, 11, 119, 127, -96, -43, 122, 108, 77,
+    -59, 87, 50, 70, 122, -44, 97, -78, 84, -110, -127, 96,
+    -95, -103, 51, -81, -51, -73, 104, 120, -57, 106, 95, 100,
+    47, 4, 106, 88, 40, -50, -7, 37, -112, -28, 117, -116,
+    -69, 23, 94, -2, 20, -83, -105, -74, 18, -45, 116, -56
+};
+
+static r8_s16 rnd_m(void)
+{
+    static const r8_s16 ext[12] = {
+        R8_S16_MIN, -32767, -16385, -16384, -16383, -1, 0, 1, 16383, 16384, 16385, 32767
+    };
+    unsigned c = rndn(10);
+    if (c < 4)
+        return rnds(-16384, 16384);
+    if (c < 7)
+        return (r8_s16)rnd();
+    return ext[rndn(12)];
+}
+
+static r8_s32 rnd_t(void)
+{
+    unsigned c = rndn(8);
+    if (c < 3)
+        return (r8_s32)rnds(-4096, 4096);
+    if (c < 6)
+        return (r8_s32)rnd();
+    if (c < 7)
+        return (r8_s32)0x7FFFFFFFL;
+    return (r8_s32)(-0x7FFFFFFFL - 1);
+}
+
+static void test_xform_random(void)
+{
+    unsigned long i;
+    unsigned j;
+    unsigned long n_small = 0;
+    for (i = 0; i < XFORM_CASES; i++) {
+        r8_mat3 m, m0;
+        r8_vec3l t, t0, oa, or_;
+        const r8_s16 *v;
+        unsigned c = rndn(10);
+        for (j = 0; j < 9; j++)
+            m.m[j] = rnd_m();
+        t.x = rnd_t();
+        t.y = rnd_t();
+        t.z = rnd_t();
+        if (c < 5)
+            v = vt_small + rndn(94);
+        else if (c < 8)
+            v = vt_ext + rndn(94);
+        else
+            v = (const r8_s16 *)(0x0200u + rndn(0x3000u)); /* code bytes */
+        if (R8_RDS16(v) >= -128 && R8_RDS16(v) < 128 && R8_RDS16(v + 1) >= -128 &&
+            R8_RDS16(v + 1) < 128 && R8_RDS16(v + 2) >= -128 && R8_RDS16(v + 2) < 128)
+            n_small++;
+        m0 = m;
+        t0 = t;
+        memset(&oa, 0x5A, sizeof oa);
+        memset(&or_, 0xA5, sizeof or_);
+        r8k_xform_ref(&m, &t, v, &or_);
+        r8k_xform(&m, &t, v, &oa);
+        if (memcmp(&oa, &or_, sizeof oa) != 0 || memcmp(&m, &m0, sizeof m) != 0 ||
+            memcmp(&t, &t0, sizeof t) != 0) {
+            print_case("r8k_xform", i);
+            TEST_ASSERT_EQUAL_INT32(or_.x, oa.x);
+            TEST_ASSERT_EQUAL_INT32(or_.y, oa.y);
+            TEST_ASSERT_EQUAL_INT32(or_.z, oa.z);
+            TEST_FAIL_MESSAGE("r8k_xform changed m or t");
+        }
+    }
+    unity_print("r8k_xform: ");
+    unity_print_long((long)i);
+    unity_print(" cases, ");
+    unity_print_long((long)n_small);
+    unity_print(" with every component in -128..127\n");
+    TEST_ASSERT_GREATER_THAN(XFORM_CASES / 4, n_small);
+    TEST_ASSERT_LESS_THAN(XFORM_CASES - XFORM_CASES / 4, n_small);
+}
+
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
+
+/* ---- r8k_fill: lengths 0..700 at random offsets in band_asm/band_ref
+ * (kern_trap.h's windows), the bytes around them kept ---- */
+static void test_fill_random(void)
+{
+    unsigned long i;
+    unsigned rem[16];
+    memset(rem, 0, sizeof rem);
+    for (i = 0; i < 3000; i++) {
+        unsigned c = rndn(4), n, off, j, len;
+        r8_u8 b, v = (r8_u8)(rndn(3) == 0 ? 0 : rnd());
+        if (c == 0)
+            n = rndn(40);
+        else if (c == 1)
+            n = 16u * rndn(45) + rndn(2);
+        else
+            n = rndn(701);
+        off = GUARD + rndn(256);
+        len = off + n + GUARD;
+        b = (r8_u8)rnd();
+        for (j = 0; j < len; j++) {     /* an odd step: every value */
+            b = (r8_u8)(b + 151u);
+            band_ref[j] = b;
+        }
+        memcpy(band_asm, band_ref, len);
+        r8k_fill_ref(band_ref + off, v, n);
+        r8k_fill(band_asm + off, v, n);
+        rem[n & 15]++;
+        if (memcmp(band_asm, band_ref, len) != 0) {
+            print_case("r8k_fill", i);
+            unity_fail_int(__LINE__, "r8k_fill differs from the reference", (long)n, (long)off);
+        }
+    }
+    for (i = 0; i < 16; i++)
+        if (rem[i] < 20)
+            unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 20, (long)rem[i]);
+    /* the two-level count: 256 passes of 16 and more */
+    memset(band_ref, 0x5A, 4200);
+    r8k_fill(band_ref + 1, 0xC3, 4097);
+    TEST_ASSERT_EQUAL_UINT8(0x5A, band_ref[0]);
+    TEST_ASSERT_EQUAL_UINT8(0xC3, band_ref[1]);
+    TEST_ASSERT_EQUAL_UINT8(0xC3, band_ref[4097]);
+    TEST_ASSERT_EQUAL_UINT8(0x5A, band_ref[4098]);
+}
 
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_mul_random);
+    RUN_TEST(test_mulint_random);
     RUN_TEST(test_trap_random);
     RUN_TEST(test_trap_many_rows);
+    RUN_TEST(test_fill_random);
+    RUN_TEST(test_xform_random);
     return UNITY_END();
 }
