@@ -13,6 +13,8 @@
 ;;
 ;; A factor below 256 is the multiplier of one unrolled 16 x 8 pass
 ;; (~300 T with call and return); else BC * E + ((C * D) << 8).
+;; The cube / cull firmware (emu/z80sim, frames 1-3; docs/benchmarks.md,
+;; "Z80: round 4"): 9,195 T a frame less than sdcc's, 63 B more.
         .module mulint_z80
         .area   _CODE
 

@@ -17,6 +17,10 @@
  *   r8k_xform (xform_z80.s): against the reference on random matrices,
  *     offsets (the 32-bit extremes too) and vertices (model-sized, the
  *     16-bit extremes, and code bytes); out compared, m and t unchanged.
+ *   r8k_project (project_z80.s): against the reference (r8_recip and
+ *     r8_project_recip) on random points, focal lengths, guard bands and
+ *     projections (tests/targets/test_avr_kern.c's cases), every path of
+ *     the reference counted; out, *m, *e and the result compared.
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
@@ -53,6 +57,9 @@ r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
+#endif
+#ifndef PROJ_CASES
+#define PROJ_CASES 4000
 #endif
 #ifndef XFORM_CASES
 #define XFORM_CASES 2000
@@ -318,6 +325,203 @@ static void test_xform_random(void)
     TEST_ASSERT_LESS_THAN(XFORM_CASES - XFORM_CASES / 4, n_small);
 }
 
+static void print_count(const char *what, unsigned long n)
+{
+    unity_print("  ");
+    unity_print(what);
+    unity_print(" ");
+    unity_print_long((long)n);
+    unity_print("\n");
+}
+
+/* ---- r8k_project ---- */
+
+static r8_s32 rnd_coord(r8_s32 z, r8_s16 focal)
+{
+    unsigned c = rndn(20);
+    if (c < 10 && z > 0) {
+        /* about u pixels off the axis: around the guard band */
+        r8_s32 zf = z / focal;
+        if (zf < 1000000L)
+            return zf * (c & 1 ? rnds(-1100, 1100) : rnds(-80, 80)) + rnds(-40, 40);
+    }
+    if (c < 12)
+        return 0;
+    if (c < 15)
+        return rnds(-3000, 3000);
+    if (c < 17)
+        return rndn(2) ? 32767L - (r8_s32)rndn(4) : -32767L + (r8_s32)rndn(4) - 1;
+    if (c < 18)
+        return (r8_s32)(rnd() & 0x3FFFFUL) - 0x20000L;
+    return (r8_s32)rnd();
+}
+
+static r8_s32 rnd_z(void)
+{
+    unsigned c = rndn(24);
+    if (c < 3)
+        return 1 + (r8_s32)rndn(255);
+    if (c < 15)
+        return 256 + (r8_s32)rndn(65280u);
+    if (c < 16)
+        return 65534L + (r8_s32)rndn(4);    /* around 2^16 */
+    if (c < 19)
+        return 65536L + (r8_s32)(rnd() & 0xFFFFFUL);
+    if (c < 21)
+        return (r8_s32)(rnd() & 0x7FFFFFFFUL);
+    if (c < 22)
+        return 0x7FFFFFFFL - (r8_s32)rndn(4);
+    if (c < 23)
+        return (r8_s32)rndn(3);             /* 0, 1, 2 */
+    return -(r8_s32)(rnd() & 0x7FFFFFFFUL); /* z <= 0 (the reference takes 1) */
+}
+
+static void test_project_random(void)
+{
+    unsigned long i, n_ok = 0, n_out = 0, n_wide = 0, n_shz = 0, n_shz0 = 0, n_sh31 = 0,
+        n_zbig = 0, n_zle0 = 0, n_lim = 0, n_x32 = 0, n_m32768 = 0, n_limhi = 0, n_limneg = 0,
+        n_anyfn = 0;
+    static r8_proj p;
+    for (i = 0; i < PROJ_CASES; i++) {
+        static r8_vec3l c, c0;
+        static r8_proj p0;
+        r8_s16 oa[3], or_[3], focal;
+        r8_u16 ma, mr;
+        r8_s8 ea, er;
+        int ra, rr, sh, big;
+        r8_s16 lim;
+        unsigned k = rndn(16);
+        if (k < 4)
+            focal = 128;
+        else if (k < 9)
+            focal = (r8_s16)(1 + rndn(2047));
+        else if (k < 12)
+            focal = (r8_s16)(1025 + rndn(1023));   /* fsh 0: sh <= 0 possible */
+        else
+            focal = (r8_s16)(1 + rndn(64));        /* large fsh: sh > 31 */
+        r8_proj_init(&p, 128, 64, focal, 16);
+        k = rndn(16);
+        if (k < 8)
+            p.guard = 900;
+        else if (k < 10)
+            p.guard = (r8_s16)rndn(1024);
+        else if (k < 12)
+            p.guard = rnds(1018, 1029);             /* lim across 0x3FFF */
+        else if (k < 14)
+            p.guard = rnds(1024, 2047);             /* the C path */
+        else if (k < 15)
+            p.guard = rnds(-40, -1);
+        else
+            p.guard = (r8_s16)rndn(4);
+        if (rndn(8) == 0) {
+            p.cx = (r8_s16)rnd();
+            p.cy = (r8_s16)rnd();
+        }
+        if (rndn(16) == 0) {
+            /* not from r8_proj_init: any fn (kk of either sign), fsh */
+            p.fn = (r8_s16)rnd();
+            p.fsh = (r8_u8)rnd();
+            n_anyfn++;
+        }
+        c.z = rnd_z();
+        if (rndn(16) == 0) {
+            /* the axis itself near z = 1 (sh <= 0 with focal > 1024) */
+            c.z = (r8_s32)rndn(3) - 1;
+            c.x = rndn(2) ? 0 : rnds(-2, 2);
+            c.y = rndn(2) ? 0 : rnds(-2, 2);
+        } else {
+            c.x = rnd_coord(c.z, focal);
+            c.y = rnd_coord(c.z, focal);
+        }
+        c0 = c;
+        p0 = p;
+        oa[0] = or_[0] = (r8_s16)rnd();
+        oa[1] = or_[1] = (r8_s16)rnd();
+        oa[2] = or_[2] = (r8_s16)rnd();
+        ma = mr = (r8_u16)rnd();
+        ea = er = (r8_s8)rnd();
+        rr = r8k_project_ref(&p, &c, or_, &mr, &er);
+        ra = r8k_project(&p, &c, oa, &ma, &ea);
+        if (ra != rr || memcmp(oa, or_, sizeof oa) != 0 || ma != mr || ea != er ||
+            memcmp(&c, &c0, sizeof c) != 0 || memcmp(&p, &p0, sizeof p) != 0) {
+            print_case("r8k_project", i);
+            unity_print("x ");
+            unity_print_long(c.x);
+            unity_print(" y ");
+            unity_print_long(c.y);
+            unity_print(" z ");
+            unity_print_long(c.z);
+            unity_print(" focal ");
+            unity_print_long(p.focal);
+            unity_print(" guard ");
+            unity_print_long(p.guard);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_UINT16(mr, ma);
+            TEST_ASSERT_EQUAL_INT8(er, ea);
+            TEST_ASSERT_EQUAL_INT(rr, ra);
+            TEST_ASSERT_EQUAL_INT16(or_[0], oa[0]);
+            TEST_ASSERT_EQUAL_INT16(or_[1], oa[1]);
+            TEST_ASSERT_EQUAL_INT16(or_[2], oa[2]);
+            TEST_FAIL_MESSAGE("r8k_project changed c or p");
+        }
+        /* which path the reference took */
+        sh = 31 + p.fsh - er;
+        sh -= (r8_u16)(((r8_u32)mr * (r8_u16)p.fn) >> 16) >= 0x4000u ? 16 : 15;
+        lim = (r8_s16)(p.guard * 16);
+        big = c.x < -32767L || c.x > 32767L || c.y < -32767L || c.y > 32767L;
+        n_ok += rr == 0;
+        n_out += rr != 0;
+        n_zbig += c.z >= 0x10000L;
+        n_zle0 += c.z <= 0;
+        if (sh <= 0) {
+            n_shz++;
+            n_shz0 += rr == 0;
+            continue;
+        }
+        n_sh31 += sh > 31;
+        if (big || lim >= 0x3FFF) {
+            /* the reference's proj_wide: the kernel's own code when x and
+             * y fit 16 bits, else r8_project_recip */
+            n_wide++;
+            n_x32 += c.x < -32768L || c.x > 32767L || c.y < -32768L || c.y > 32767L;
+            n_m32768 += c.x == -32768L || c.y == -32768L;
+            n_limhi += !big && lim >= 0x3FFF;
+        } else {
+            n_lim += lim > 16300;
+            n_limneg += lim < 0;
+        }
+    }
+    unity_print("r8k_project: ");
+    unity_print_long((long)i);
+    unity_print(" cases\n");
+    print_count("inside (0):", n_ok);
+    print_count("outside (1):", n_out);
+    print_count("z >= 2^16:", n_zbig);
+    print_count("z <= 0:", n_zle0);
+    print_count("sh <= 0:", n_shz);
+    print_count("sh <= 0, on the axis (0):", n_shz0);
+    print_count("sh > 31:", n_sh31);
+    print_count("reference's proj_wide (lim >= 0x3FFF or |x|, |y| > 32767):", n_wide);
+    print_count("  x or y beyond 16 bits (kernel's C call):", n_x32);
+    print_count("  x or y = -32768:", n_m32768);
+    print_count("  x, y in 16 bits, lim >= 0x3FFF:", n_limhi);
+    print_count("proj_round, lim in 16301..16382:", n_lim);
+    print_count("proj_round, lim < 0:", n_limneg);
+    print_count("random fn, fsh:", n_anyfn);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_ok);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 5, n_out);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_zbig);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 100, n_zle0);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 500, n_shz);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 2000, n_shz0);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 100, n_sh31);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 20, n_x32);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 500, n_m32768);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 50, n_limhi);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_lim);
+    TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_limneg);
+}
+
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
 
@@ -374,5 +578,6 @@ int main(void)
     RUN_TEST(test_trap_many_rows);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_xform_random);
+    RUN_TEST(test_project_random);
     return UNITY_END();
 }
