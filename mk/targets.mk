@@ -89,7 +89,7 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 # tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
 # bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong mulint wire trap fill xform project
+Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
 Z80_KERN   := $(Z80_KERN0)
 Z80_KOBJS  := $(if $(Z80_KERN),$(XB)/z80/obj/mulz_z80.rel) $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)

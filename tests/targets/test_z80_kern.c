@@ -17,6 +17,9 @@
  *   r8k_xform (xform_z80.s): against the reference on random matrices,
  *     offsets (the 32-bit extremes too) and vertices (model-sized, the
  *     16-bit extremes, and code bytes); out compared, m and t unchanged.
+ *   r8k_edge (edge_z80.s): against the reference on random edges
+ *     (tests/targets/test_avr_kern.c's classes), every path counted; the
+ *     result and all of *it compared.
  *   r8k_project (project_z80.s): against the reference (r8_recip and
  *     r8_project_recip) on random points, focal lengths, guard bands and
  *     projections (tests/targets/test_avr_kern.c's cases), every path of
@@ -57,6 +60,9 @@ r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
+#endif
+#ifndef EDGE_CASES
+#define EDGE_CASES 4000
 #endif
 #ifndef PROJ_CASES
 #define PROJ_CASES 4000
@@ -522,6 +528,179 @@ static void test_project_random(void)
     TEST_ASSERT_GREATER_THAN(PROJ_CASES / 200, n_limneg);
 }
 
+/* ---- r8k_edge ---- */
+
+static r8_s16 clamp16(r8_s32 v)
+{
+    if (v > 32767L)
+        return 32767;
+    if (v < -32768L)
+        return R8_S16_MIN;
+    return (r8_s16)v;
+}
+
+
+/* classes of edges: a[1] < b[1] (the contract), otherwise anything */
+static void rnd_edge(r8_s16 *a, r8_s16 *b)
+{
+    unsigned c = rndn(16);
+    r8_s32 ay, dy, ax, dx;
+    if (c < 11)
+        ay = rnds(-300, 1300);
+    else if (c < 13)
+        ay = rnds(32744, 32766);           /* y0 = 2048 past 32760 */
+    else if (c < 14)
+        ay = rnds(R8_S16_MIN, -32700);
+    else
+        ay = (r8_s16)rnd();
+    c = rndn(16);
+    if (c < 3)
+        dy = 1;
+    else if (c < 7)
+        dy = 1 + rndn(48);
+    else if (c < 12)
+        dy = 1 + rndn(1423);
+    else if (c < 15)
+        dy = 1414 + rndn(20);              /* the 1424 limit */
+    else
+        dy = 1 + (r8_s32)(rnd() & 0x7FFF);
+    c = rndn(16);
+    if (c < 9)
+        ax = rnds(-400, 2400);
+    else if (c < 12)
+        ax = (c & 1 ? -16384 : 16383) + rnds(-3, 3);
+    else if (c < 15)
+        ax = rnds(-16384, 16383);
+    else
+        ax = (r8_s16)rnd();
+    c = rndn(16);
+    if (c < 2) {
+        dx = 0;
+    } else if (c < 8) {
+        dx = rnds(-40, 40) + (r8_s32)rnds(-3, 3) * dy;
+    } else if (c < 10) {
+        /* |q| near 2048: short rows, x near the middle */
+        dy = 1 + rndn(7);
+        ax = rnds(-1500, 1500);
+        dx = 2048L * dy + rnds((r8_s16)(-dy - 2), (r8_s16)(dy + 2));
+        if (rndn(2))
+            dx = -dx;
+    } else if (c < 11) {
+        /* ax - 8 + s0 q beyond 16 bits: s0 >= 12, q near +-2048, ax far
+         * out on the same side */
+        ay = (ay & ~15L) + 9 + rndn(4);
+        dy = 1;
+        ax = 9400 + rndn(4600);
+        dx = 1950 + rndn(98);
+        if (rndn(2)) {
+            ax = -ax;
+            dx = -dx;
+        }
+    } else if (c < 15) {
+        dx = rnds(-16000, 16000);
+    } else {
+        dx = (r8_s16)rnd() - ax;
+    }
+    if (ay + dy > 32767L)
+        dy = 32767L - ay;
+    a[0] = (r8_s16)ax;
+    a[1] = (r8_s16)ay;
+    b[0] = clamp16(ax + dx);
+    b[1] = (r8_s16)(ay + dy);
+}
+
+static void test_edge_random(void)
+{
+    unsigned long i, n_wide = 0, n_wdy = 0, n_wx = 0, n_wq = 0, n_neg = 0, n_dx0 = 0,
+        n_dy1 = 0, n_steep = 0, n_xlim = 0, n_ytop = 0, n_q0 = 0, n_long = 0, n_x17 = 0;
+    for (i = 0; i < EDGE_CASES; i++) {
+        static r8_s16 a[2], b[2];
+        r8_interp ia, ir;
+        r8_s16 ya, yr;
+        r8_s32 dx, x17;
+        rnd_edge(a, b);
+        if (a[1] >= b[1]) {
+            b[1] = (r8_s16)(a[1] + 1);     /* a[1] = 32767 cannot be an edge top */
+            if (a[1] == 32767) {
+                a[1] = 32766;
+                b[1] = 32767;
+            }
+        }
+        memset(&ia, (int)(i & 0xFF), sizeof ia);
+        memset(&ir, (int)(i & 0xFF), sizeof ir);
+        yr = r8k_edge_ref(&ir, a, b);
+        ya = r8k_edge(&ia, a, b);
+        if (ya != yr || memcmp(&ia, &ir, sizeof ia) != 0) {
+            print_case("r8k_edge", i);
+            unity_print("a ");
+            unity_print_long(a[0]);
+            unity_print(" ");
+            unity_print_long(a[1]);
+            unity_print(" b ");
+            unity_print_long(b[0]);
+            unity_print(" ");
+            unity_print_long(b[1]);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_INT16(yr, ya);
+            TEST_ASSERT_EQUAL_INT16(ir.val, ia.val);
+            TEST_ASSERT_EQUAL_INT16(ir.q, ia.q);
+            TEST_ASSERT_EQUAL_UINT16(ir.err, ia.err);
+            TEST_ASSERT_EQUAL_UINT16(ir.r, ia.r);
+            TEST_ASSERT_EQUAL_UINT16(ir.den, ia.den);
+            TEST_FAIL_MESSAGE("r8k_edge differs from the reference");
+        }
+        dx = (r8_s32)b[0] - a[0];
+        if (yr == R8_EDGE_WIDE) {
+            n_wide++;
+            if ((r8_u16)(b[1] - a[1]) >= 1424u)
+                n_wdy++;
+            else if (a[0] < -16384 || a[0] > 16383 || b[0] < -16384 || b[0] > 16383)
+                n_wx++;
+            else
+                n_wq++;
+            continue;
+        }
+        n_neg += dx < 0;
+        n_dx0 += dx == 0;
+        n_dy1 += ir.den == 1;
+        n_steep += ir.q >= 1900 || ir.q <= -1900;
+        n_q0 += ir.q == 0 || ir.q == -1;
+        n_xlim += a[0] < -16380 || a[0] > 16379 || b[0] < -16380 || b[0] > 16379;
+        n_ytop += a[1] > 32760;
+        n_long += ir.den >= 1000;
+        x17 = a[0] - 8 + (r8_s32)((8 - a[1]) & 15) * ir.q;
+        n_x17 += x17 < -32768L || x17 > 32767L;
+    }
+    unity_print("r8k_edge: ");
+    unity_print_long((long)i);
+    unity_print(" cases\n");
+    print_count("wide, dy >= 1424:", n_wdy);
+    print_count("wide, x outside +-16384:", n_wx);
+    print_count("wide, |q| >= 2048:", n_wq);
+    print_count("dx < 0:", n_neg);
+    print_count("dx = 0:", n_dx0);
+    print_count("dy = 1:", n_dy1);
+    print_count("|q| >= 1900:", n_steep);
+    print_count("q = 0 or -1:", n_q0);
+    print_count("x within 4 of +-16384:", n_xlim);
+    print_count("a[1] > 32760 (y0 = 2048):", n_ytop);
+    print_count("dy >= 1000:", n_long);
+    print_count("ax - 8 + s0 q beyond 16 bits:", n_x17);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wdy);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wx);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_wq);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 10, n_neg);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_dx0);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_dy1);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_steep);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_q0);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_xlim);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_ytop);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 100, n_long);
+    TEST_ASSERT_GREATER_THAN(EDGE_CASES / 200, n_x17);
+    TEST_ASSERT_LESS_THAN(EDGE_CASES / 2, n_wide);
+}
+
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
 #include "kern_trap.h"
 
@@ -579,5 +758,6 @@ int main(void)
     RUN_TEST(test_fill_random);
     RUN_TEST(test_xform_random);
     RUN_TEST(test_project_random);
+    RUN_TEST(test_edge_random);
     return UNITY_END();
 }
