@@ -84,8 +84,9 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
 #   (with wire, plat_z80.c's plat_write is its assembly loop too)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
-# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap and
-# the multiplies against their references whatever Z80_ASM says, and
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap,
+# fill, xform, project, edge and the multiplies against their references
+# whatever Z80_ASM says, and
 # tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
 # bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
