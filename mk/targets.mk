@@ -82,22 +82,25 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #   mul16    r8_mul16 (-DR8_ASM_MUL16); the multiply helpers the others
 #            use (mulz_z80.s) are in with any kernel
 #   mullong  sdcc's __mullong (long * long), ahead of z80.lib's
+#   mulint   sdcc's __mulint and __mul16 (int * int), the same way
 #   wire     the wire encoder's kernels (-DR8_ASM_WIRE, src/r8crc.h)
-#   trap xform project edge   the kernels of include/r8kern.h
+#   trap xform project edge fill   the kernels of include/r8kern.h
 #            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
+#   (with wire, plat_z80.c's plat_write is its assembly loop too)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
-# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap and
-# the multiplies against their references whatever Z80_ASM says, and
+# library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap,
+# fill, xform, project, edge and the multiplies against their references
+# whatever Z80_ASM says, and
 # tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
 # bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong wire trap
+Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
 Z80_KERN   := $(Z80_KERN0)
 Z80_KOBJS  := $(if $(Z80_KERN),$(XB)/z80/obj/mulz_z80.rel) $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
 Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter trap,$(Z80_KERN)),-DR8_ASM_TRAP) \
               $(if $(filter xform,$(Z80_KERN)),-DR8_ASM_XFORM) $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) \
-              $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE)
+              $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE) $(if $(filter fill,$(Z80_KERN)),-DR8_ASM_FILL)
 Z80_KSTAMP := $(XB)/z80-kernels.txt
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
@@ -215,13 +218,17 @@ $(XB)/6502/rast8.lib: $(XOBJ_NAMES:%=$(XB)/6502/obj/%.o) $(C65_ASM:ports/6502/%.
 $(Z80_KSTAMP): z80-kstamp-force
 	@mkdir -p $(dir $@) && echo "$(Z80_KERN)" | cmp -s - $@ || echo "$(Z80_KERN)" > $@
 z80-kstamp-force:
+# the library files a frame spends its time in get sdcc's deeper register
+# allocation (~20 s each to compile; the cube's frame -1.7% for wire.c alone)
+Z80_HOT := wire scan proj transform cull fixed
+$(Z80_HOT:%=$(XB)/z80/obj/%.rel): Z80_OPT := --max-allocs-per-node 25000
 $(XB)/z80/obj/%.rel: src/%.c $(XHDRS) $(Z80_KSTAMP)
 	@mkdir -p $(dir $@)
-	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) $(XNO) --Werror -c -o $@ $<
+	bash ports/z80/sdcc.sh $(Z80_CFLAGS) $(Z80_KDEFS) $(XNO) $(Z80_OPT) --Werror -c -o $@ $<
 $(XB)/z80/obj/%.rel: ports/z80/%.s
 	@mkdir -p $(dir $@)
 	sdasz80 -o $@ $<
-$(XB)/z80/obj/%.rel: ports/z80/%.c $(XHDRS)
+$(XB)/z80/obj/%.rel: ports/z80/%.c $(XHDRS) $(Z80_KSTAMP)
 	@mkdir -p $(dir $@)
 	bash ports/z80/sdcc.sh $(Z80_CFLAGS) -c -o $@ $<
 $(XB)/z80/obj/%.rel: examples/spin/%.c $(XHDRS)
