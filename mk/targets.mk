@@ -306,7 +306,7 @@ $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 # test under other names, without R8_ASM_*), whatever AVR_ASM says
 XKERN := $(XB)/avr1284/tests/avr_kern.elf
 XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/unity_target.o
-$(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
+$(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
 	$(XENV) bash ports/xbuild.sh avr1284 $@ $(basename $@).wrap.c $(XKERN_OBJS) -- -Isrc -Itests/unity -Itests/targets
@@ -317,7 +317,7 @@ $(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h src/kern.c $(X
 XKERNZ := $(XB)/z80/tests/z80_kern.ihx
 XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16,$(Z80_KALL))) \
                $(XB)/z80/obj/unity_target.rel
-$(XKERNZ): tests/targets/test_z80_kern.c tests/targets/kern_trap.h src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
+$(XKERNZ): tests/targets/test_z80_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
 	$(XENV) bash ports/xbuild.sh z80 $@ $(basename $@).wrap.c $(XKERNZ_OBJS) -- -Isrc -Itests/unity -Itests/targets
