@@ -1,10 +1,11 @@
 /* kern_cases.h - the random cases the AVR and Z80 kernel tests share
  * (tests/targets/test_avr_kern.c, test_z80_kern.c): the r8k_xform
- * inputs, and the r8k_edge and r8k_project tests, each kernel against
+ * test, and the r8k_edge and r8k_project tests, each kernel against
  * its C reference (r8k_edge_ref, r8k_project_ref) on the same random
  * inputs.  The including file defines rnd(), rndn(), rnds(),
- * print_case(), EDGE_CASES and PROJ_CASES, and includes <string.h>,
- * unity.h, r8kern.h and r8flash.h first. */
+ * print_case(), XFORM_CASES, EDGE_CASES, PROJ_CASES and KERN_CODE_PTR()
+ * (a random pointer into the program's code, for r8k_xform's inputs),
+ * and includes <string.h>, unity.h, r8kern.h and r8flash.h first. */
 #ifndef KERN_CASES_H
 #define KERN_CASES_H
 
@@ -30,7 +31,6 @@ static const r8_s16 vt_small[96] R8_FLASH = {
     47, 4, 106, 88, 40, -50, -7, 37, -112, -28, 117, -116,
     -69, 23, 94, -2, 20, -83, -105, -74, 18, -45, 116, -56
 };
-extern const char _etext[];   /* end of the program's code (avr-libc's linker script) */
 
 static r8_s16 rnd_m(void)
 {
@@ -55,6 +55,54 @@ static r8_s32 rnd_t(void)
     if (c < 7)
         return (r8_s32)0x7FFFFFFFL;
     return (r8_s32)(-0x7FFFFFFFL - 1);
+}
+
+static void test_xform_random(void)
+{
+    unsigned long i;
+    unsigned j;
+    unsigned long n_small = 0;
+    for (i = 0; i < XFORM_CASES; i++) {
+        r8_mat3 m, m0;
+        r8_vec3l t, t0, oa, or_;
+        const r8_s16 *v;
+        unsigned c = rndn(10);
+        for (j = 0; j < 9; j++)
+            m.m[j] = rnd_m();
+        t.x = rnd_t();
+        t.y = rnd_t();
+        t.z = rnd_t();
+        if (c < 5)
+            v = vt_small + rndn(94);
+        else if (c < 8)
+            v = vt_ext + rndn(94);
+        else
+            v = KERN_CODE_PTR();   /* the program's own bytes */
+        if (R8_RDS16(v) >= -128 && R8_RDS16(v) < 128 && R8_RDS16(v + 1) >= -128 &&
+            R8_RDS16(v + 1) < 128 && R8_RDS16(v + 2) >= -128 && R8_RDS16(v + 2) < 128)
+            n_small++;
+        m0 = m;
+        t0 = t;
+        memset(&oa, 0x5A, sizeof oa);
+        memset(&or_, 0xA5, sizeof or_);
+        r8k_xform_ref(&m, &t, v, &or_);
+        r8k_xform(&m, &t, v, &oa);
+        if (memcmp(&oa, &or_, sizeof oa) != 0 || memcmp(&m, &m0, sizeof m) != 0 ||
+            memcmp(&t, &t0, sizeof t) != 0) {
+            print_case("r8k_xform", i);
+            TEST_ASSERT_EQUAL_INT32(or_.x, oa.x);
+            TEST_ASSERT_EQUAL_INT32(or_.y, oa.y);
+            TEST_ASSERT_EQUAL_INT32(or_.z, oa.z);
+            TEST_FAIL_MESSAGE("r8k_xform changed m or t");
+        }
+    }
+    unity_print("r8k_xform: ");
+    unity_print_long((long)i);
+    unity_print(" cases, ");
+    unity_print_long((long)n_small);
+    unity_print(" with every component in -128..127\n");
+    TEST_ASSERT_GREATER_THAN(XFORM_CASES / 4, n_small);
+    TEST_ASSERT_LESS_THAN(XFORM_CASES - XFORM_CASES / 4, n_small);
 }
 
 /* ---- r8k_edge ---- */

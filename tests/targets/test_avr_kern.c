@@ -181,56 +181,9 @@ static void test_trap_groups(void)
 }
 
 /* ---- r8k_xform inputs, r8k_edge, r8k_project: tests/targets/kern_cases.h ---- */
+extern const char _etext[];   /* end of the program's code (avr-libc's linker script) */
+#define KERN_CODE_PTR() ((const r8_s16 *)(rndn((unsigned)_etext - 6u)))
 #include "kern_cases.h"
-
-static void test_xform_random(void)
-{
-    unsigned long i;
-    unsigned j, code = (unsigned)_etext;
-    unsigned long n_small = 0;
-    for (i = 0; i < XFORM_CASES; i++) {
-        r8_mat3 m, m0;
-        r8_vec3l t, t0, oa, or_;
-        const r8_s16 *v;
-        unsigned c = rndn(10);
-        for (j = 0; j < 9; j++)
-            m.m[j] = rnd_m();
-        t.x = rnd_t();
-        t.y = rnd_t();
-        t.z = rnd_t();
-        if (c < 5)
-            v = vt_small + rndn(94);
-        else if (c < 8)
-            v = vt_ext + rndn(94);
-        else
-            v = (const r8_s16 *)(rndn(code - 6u));
-        if (R8_RDS16(v) >= -128 && R8_RDS16(v) < 128 && R8_RDS16(v + 1) >= -128 &&
-            R8_RDS16(v + 1) < 128 && R8_RDS16(v + 2) >= -128 && R8_RDS16(v + 2) < 128)
-            n_small++;
-        m0 = m;
-        t0 = t;
-        memset(&oa, 0x5A, sizeof oa);
-        memset(&or_, 0xA5, sizeof or_);
-        r8k_xform_ref(&m, &t, v, &or_);
-        r8k_xform(&m, &t, v, &oa);
-        if (memcmp(&oa, &or_, sizeof oa) != 0 || memcmp(&m, &m0, sizeof m) != 0 ||
-            memcmp(&t, &t0, sizeof t) != 0) {
-            print_case("r8k_xform", i);
-            TEST_ASSERT_EQUAL_INT32(or_.x, oa.x);
-            TEST_ASSERT_EQUAL_INT32(or_.y, oa.y);
-            TEST_ASSERT_EQUAL_INT32(or_.z, oa.z);
-            TEST_FAIL_MESSAGE("r8k_xform changed m or t");
-        }
-    }
-    unity_print("r8k_xform: ");
-    unity_print_long((long)i);
-    unity_print(" cases, ");
-    unity_print_long((long)n_small);
-    unity_print(" with every component in -128..127\n");
-    TEST_ASSERT_GREATER_THAN(XFORM_CASES / 4, n_small);
-    TEST_ASSERT_LESS_THAN(XFORM_CASES - XFORM_CASES / 4, n_small);
-}
-
 
 /* ---- r8k_fill: lengths 0..700 at random offsets in band_asm/band_ref
  * (kern_trap.h's windows), the bytes around them kept ---- */
