@@ -11,7 +11,9 @@
  *     -m FILE      marker log (default: stderr)
  *     -q           no marker lines, only the summary
  *     -P FILE      profile: cycles per function (ELF symbols) spent inside
- *                  frames (between markers 2 and 3), written to FILE
+ *                  frames (between markers 2 and 3), written to FILE;
+ *                  libgcc's shared register saves (-mcall-prologues)
+ *                  are charged to the function that jumped into them
  *     -F N         profile only frames N and later (default 0)
  *     -i FILE      bytes for the UART receiver (the display's side), one
  *                  at a time as the firmware reads them: the next byte
@@ -64,9 +66,10 @@ static int in_frame;
 static unsigned frame_no;
 
 /* profile: function start addresses (sorted) and cycles */
-typedef struct { uint32_t addr; const char *name; unsigned long long cyc; } prof_fn;
+typedef struct { uint32_t addr; const char *name; unsigned long long cyc; int shared; } prof_fn;
 static prof_fn *prof;
 static int nprof;
+static int prof_owner = -1;   /* the last function outside libgcc's shared saves */
 static unsigned prof_from;
 static unsigned long long *hist_cyc;   /* -H: per byte address */
 static unsigned long *hist_n;
@@ -101,6 +104,8 @@ static void prof_init(elf_firmware_t *fw)
             !is_abs_symbol(fw->symbol[i]->symbol)) {
             prof[nprof].addr = fw->symbol[i]->addr;
             prof[nprof].name = fw->symbol[i]->symbol;
+            prof[nprof].shared = !strcmp(prof[nprof].name, "__prologue_saves__") ||
+                                 !strcmp(prof[nprof].name, "__epilogue_restores__");
             nprof++;
         }
     qsort(prof, nprof, sizeof *prof, prof_cmp);
@@ -118,8 +123,18 @@ static void prof_add(uint32_t pc, avr_cycle_count_t c)
             hi = mid - 1;
         }
     }
-    if (k >= 0)
-        prof[k].cyc += c;
+    if (k < 0)
+        return;
+    /* -mcall-prologues: a function jumps into libgcc's shared register
+     * saves and restores; their cycles are the caller's (so bench.py's
+     * render / wire split charges them to the right side) */
+    if (prof[k].shared) {
+        if (prof_owner >= 0)
+            k = prof_owner;
+    } else {
+        prof_owner = k;
+    }
+    prof[k].cyc += c;
 }
 
 static void quiet_logger(struct avr_t *avr, const int level, const char *fmt, va_list ap)
