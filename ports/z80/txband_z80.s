@@ -32,8 +32,21 @@
         .globl  _r8_tx_zeros
         .globl  _r8_tx_run
         .globl  _r8_tx_lit
-        .globl  _r8_crc16_update
         .globl  _r8_crc16_mul
+        .globl  r8z_crctab
+
+;; the CRC byte step of wire_z80.s: byte in A, crc in B:C, H = the
+;; table's page (L changed)
+        .macro  CRCSTEP
+        xor     a, b
+        ld      l, a
+        ld      a, (hl)
+        xor     a, c
+        ld      b, a
+        inc     h
+        ld      c, (hl)
+        dec     h
+        .endm
 
 ;; r8_tx (include/r8wire.h) and r8_fb (include/r8fb.h) on sdcc
 TX_FORMAT  = 0x00
@@ -208,15 +221,16 @@ encode: ld      l, TX_PKT (ix)  ; s.pkt = s.code = pkt
         ld      (hl), #1        ; R8_CODEC_RLE
         inc     hl
         ld      (op), hl        ; o = b + 6
-        ld      de, #-3
-        add     hl, de
-        ex      de, hl          ; s.crc = crc(hcrc, b[3..5])
-        ld      hl, #3
-        push    hl
-        ld      l, TX_HCRC (ix)
-        ld      h, TX_HCRC+1 (ix)
-        call    _r8_crc16_update ; (pops n) -> DE
-        ld      (st+S_CRC), de
+        ld      c, TX_HCRC (ix) ; s.crc = crc(hcrc, b[3..5])
+        ld      b, TX_HCRC+1 (ix)
+        ld      h, #>r8z_crctab
+        ld      a, d
+        CRCSTEP
+        ld      a, e
+        CRCSTEP
+        ld      a, #1
+        CRCSTEP
+        ld      (st+S_CRC), bc
         ld      hl, (st+S_PKT)  ; the header's zeros (b[1..4]) linked
         ld      d, h
         ld      e, l            ; DE = code
@@ -260,13 +274,12 @@ zl:     ld      a, (zz)
         ld      (hl), a
         inc     hl
         ld      (hl), #0
-        dec     hl
-        ex      de, hl          ; s.crc over them
-        ld      hl, #2
-        push    hl
-        ld      hl, (st+S_CRC)
-        call    _r8_crc16_update
-        ld      (st+S_CRC), de
+        ld      bc, (st+S_CRC)  ; s.crc over them
+        ld      h, #>r8z_crctab
+        CRCSTEP
+        xor     a, a
+        CRCSTEP
+        ld      (st+S_CRC), bc
         ld      a, #1           ; link o + 1
         call    linko
         jp      c, slow
