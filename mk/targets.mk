@@ -87,6 +87,10 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #   trap xform project edge fill   the kernels of include/r8kern.h
 #            (-DR8_ASM_TRAP ...: src/kern.c leaves its references out)
 #   (with wire, plat_z80.c's plat_write is its assembly loop too)
+#   txband   r8_tx_band, one band onto the wire (-DR8_ASM_TXBAND; only
+#            with wire; tests/c/test_txband.c in step xunit-z80)
+#   scanx    r8_scanx_fill, a polygon's trapezoids in a band
+#            (-DR8_ASM_SCANX; tests/c/test_scanx.c in step xunit-z80)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
 # library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap,
 # fill, xform, project, edge and the multiplies against their references
@@ -94,15 +98,17 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 # tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
 # bench/kernz80.py: the cube's T-states per frame with and without each.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge
+Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
-Z80_KERN   := $(Z80_KERN0)
+# txband (txband_z80.s, R8_ASM_TXBAND: r8_tx_band) calls wire's kernels
+Z80_KERN   := $(if $(filter wire,$(Z80_KERN0)),$(Z80_KERN0),$(filter-out txband,$(Z80_KERN0)))
 Z80_KOBJS  := $(if $(Z80_KERN),$(XB)/z80/obj/mulz_z80.rel) $(Z80_KERN:%=$(XB)/z80/obj/%_z80.rel)
 Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter trap,$(Z80_KERN)),-DR8_ASM_TRAP) \
               $(if $(filter xform,$(Z80_KERN)),-DR8_ASM_XFORM) $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter edge,$(Z80_KERN)),-DR8_ASM_EDGE) $(if $(filter fill,$(Z80_KERN)),-DR8_ASM_FILL)
 Z80_KSTAMP := $(XB)/z80-kernels.txt
-Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE)
+Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE) \
+              $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill
@@ -315,7 +321,7 @@ $(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/
 # test under other names), whatever Z80_ASM says: every kernel's object
 # is linked in (r8_mul16 is the library's)
 XKERNZ := $(XB)/z80/tests/z80_kern.ihx
-XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16,$(Z80_KALL))) \
+XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16 txband scanx,$(Z80_KALL))) \
                $(XB)/z80/obj/unity_target.rel
 $(XKERNZ): tests/targets/test_z80_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)

@@ -32,6 +32,7 @@
         .globl  _r8_tx_run
         .globl  _r8_tx_lit
         .globl  _r8_crc16_shift         ; src/crc16.c
+        .globl  r8z_crctab              ; (txband_z80.s steps with it too)
 
 ;; undocumented halves of IY (sdas has no names for them)
         .macro  LD_A_IYH
