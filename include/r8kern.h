@@ -11,6 +11,7 @@
  *   r8k_edge    an edge's column DDA for its first row (R8_ASM_EDGE)
  *   r8k_fill    n bytes set to one value: the band and depth clears
  *               (R8_ASM_FILL)
+ *   r8k_cull    the 16-bit backface test of a face (R8_ASM_CULL)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -65,5 +66,12 @@ r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 
 /* p[0..n-1] = v (memset; on AVR an unrolled store loop). */
 void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n);
+
+/* r8_cull_front's 16-bit test (src/cull.c): -1 when a component of v
+ * (three r8_s16 in R8_FLASH, the face's first vertex) lies outside
+ * [-1023, 1023]; else 1 if n . (eye - 16 v) > 0, 0 if not, exactly (n
+ * three Q1.14 r8_s16 in R8_FLASH, the unit face normal; eye's components
+ * within +-16383, of which the low 16 bits are read). */
+int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
 
 #endif

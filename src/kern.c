@@ -144,3 +144,15 @@ void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows)
     t->k = k;
 }
 #endif
+
+#ifndef R8_ASM_CULL
+int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
+{
+    r8_s16 x = R8_RDS16(v), y = R8_RDS16(v + 1), z = R8_RDS16(v + 2);
+    if ((r8_u16)(x + 1023) > 2046u || (r8_u16)(y + 1023) > 2046u || (r8_u16)(z + 1023) > 2046u)
+        return -1;
+    return R8_MUL16(R8_RDS16(n), (r8_s16)eye->x - (r8_s16)(x * R8_CSCALE)) +
+           R8_MUL16(R8_RDS16(n + 1), (r8_s16)eye->y - (r8_s16)(y * R8_CSCALE)) +
+           R8_MUL16(R8_RDS16(n + 2), (r8_s16)eye->z - (r8_s16)(z * R8_CSCALE)) > 0;
+}
+#endif

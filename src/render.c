@@ -723,7 +723,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL), kcull;
     r8_u16 f;
 #ifndef R8_NO_BSP
     r8_u16 nf;
@@ -731,6 +731,11 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #endif
     if (o->hidden)
         return;
+    kcull = o->eye16;             /* r8k_cull reads flash normals */
+#ifndef R8_NO_RT_NORMALS
+    if (!o->nflash)
+        kcull = 0;
+#endif
 #ifndef R8_NO_BSP
     if (bsp)
         r8_bsp_begin(r, me);
@@ -757,8 +762,16 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         if (n < 3 || n > R8_MAX_FACE_VERTS)
             continue;
         vi[0] = R8_RDU8(&fc->v[0]);
-        if (normal && !r8_cull_front(o, me->verts + 3u * vi[0], f))
-            continue;
+        if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
+            const r8_s16 *v0 = me->verts + 3u * vi[0];
+            int c = -1;
+            if (kcull)
+                c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
+            if (c < 0)
+                c = r8_cull_front(o, v0, f);
+            if (!c)
+                continue;
+        }
         /* vertex pointers; a marked vertex sends the face to the clipper */
         for (j = 0; j < n; j++) {
             if (j)
