@@ -12,6 +12,7 @@
  *   r8k_fill    n bytes set to one value: the band and depth clears
  *               (R8_ASM_FILL)
  *   r8k_cull    the 16-bit backface test of a face (R8_ASM_CULL)
+ *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -73,5 +74,12 @@ void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n);
  * three Q1.14 r8_s16 in R8_FLASH, the unit face normal; eye's components
  * within +-16383, of which the low 16 bits are read). */
 int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+
+/* The dither level of a face of normal n (three Q1.14 r8_s16 in
+ * R8_FLASH) under `light` (components within +-16384) for brightness
+ * colour and ambient amb in [0, 16384]: (r8_u8)((r8_tf_shade(n, light,
+ * colour) + 128) >> 8) (src/cull.c) bit for bit, as (q colour + 8224) >>
+ * 14, q = amb + (16384 - amb) i >> 14, i = n . light >> 14 (<= 16384). */
+r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
 
 #endif

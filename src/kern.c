@@ -156,3 +156,22 @@ int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
            R8_MUL16(R8_RDS16(n + 2), (r8_s16)eye->z - (r8_s16)(z * R8_CSCALE)) > 0;
 }
 #endif
+
+#ifndef R8_ASM_LEVEL
+r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
+{
+    r8_s32 d = R8_MUL16(R8_RDS16(n), light->x) + R8_MUL16(R8_RDS16(n + 1), light->y) +
+               R8_MUL16(R8_RDS16(n + 2), light->z);
+    r8_s16 i = 0;                          /* as r8_tf_shade, step by step */
+    r8_u32 p;
+    if (d > 0) {
+        i = (r8_s16)R8_SHR14U(d);
+        if (i > R8_ONE14)
+            i = R8_ONE14;
+    }
+    p = (r8_u32)R8_MUL16(R8_ONE14 - amb, i);
+    p = (r8_u16)(amb + R8_SHR14U(p));
+    /* ((p colour 256 + 8192) >> 14 in 16 bits, + 128) >> 8, in 8 bits */
+    return (r8_u8)((p * colour + 8224u) >> 14);
+}
+#endif

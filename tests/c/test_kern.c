@@ -16,6 +16,10 @@
 #undef R8_ASM_PROJECT
 #undef R8_ASM_EDGE
 #undef R8_ASM_FILL
+#undef R8_ASM_CULL
+#undef R8_ASM_LEVEL
+#define r8k_cull ref_cull
+#define r8k_level ref_level
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
@@ -27,6 +31,10 @@
 #undef r8k_project
 #undef r8k_edge
 #undef r8k_fill
+#undef r8k_cull
+#undef r8k_level
+int ref_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+r8_u8 ref_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
 void ref_fill(r8_u8 *p, r8_u8 v, unsigned n);
 r8_s16 ref_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
@@ -436,6 +444,103 @@ static void test_fill(void)
     }
 }
 
+/* ---- r8k_cull and r8k_level: the library's and the reference against
+ * plain 32-bit models (r8_cull_front's 16-bit test; r8_face_level's
+ * (r8_tf_shade(n, light, colour) + 128) >> 8, step by step).  n and v
+ * from flash tables: v around the 16-bit range [-1023, 1023] (its ends
+ * included), n in [-16384, 16384]. */
+#define KV1(i) (r8_s16)((((i) * 40503L + 12345L) % 2241L) - 1120L)
+#define KN1(i) (r8_s16)((((i) * 25173L + 13849L) % 32769L) - 16384L)
+#define K4(m, i) m(i), m(i + 1), m(i + 2), m(i + 3)
+#define K16(m, i) K4(m, i), K4(m, i + 4), K4(m, i + 8), K4(m, i + 12)
+static const r8_s16 kv_tab[] R8_FLASH = {
+    1023, -1023, 1023, 1024, -1024, 0, -1, 1, 1023, 1023, -1023, -1023,
+    K16(KV1, 0), K16(KV1, 16), K16(KV1, 32), K16(KV1, 48)
+};
+static const r8_s16 kn_tab[] R8_FLASH = {
+    16384, -16384, 16384, 0, 0, 0, -16384, 16384, -16384, 1, -1, 0,
+    K16(KN1, 0), K16(KN1, 16), K16(KN1, 32), K16(KN1, 48)
+};
+
+static int cull_model(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
+{
+    const r8_s32 *e = &eye->x;
+    r8_s32 dot = 0;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        r8_s16 x = R8_RDS16(v + k);
+        if (x < -1023 || x > 1023)
+            return -1;
+    }
+    for (k = 0; k < 3; k++)
+        dot += mul32(R8_RDS16(n + k), (r8_s16)(e[k] - 16L * R8_RDS16(v + k)));
+    return dot > 0;
+}
+
+static r8_u8 level_model(const r8_s16 *n, const r8_vec3 *l, r8_s16 amb, r8_u8 colour)
+{
+    r8_s32 d = mul32(R8_RDS16(n), l->x) + mul32(R8_RDS16(n + 1), l->y) + mul32(R8_RDS16(n + 2), l->z);
+    r8_s16 i = 0;
+    r8_u32 p;
+    if (d > 0) {
+        i = (r8_s16)R8_SHR14U(d);
+        if (i > R8_ONE14)
+            i = R8_ONE14;
+    }
+    p = (r8_u32)mul32((r8_s16)(R8_ONE14 - amb), i);
+    p = (r8_u16)(amb + R8_SHR14U(p));
+    p *= (r8_u16)((r8_u16)colour << 8);
+    return (r8_u8)(((r8_s16)R8_SHR14U(p + 8192u) + 128) >> 8);
+}
+
+static void test_cull(void)
+{
+    unsigned i, k, nv = sizeof kv_tab / sizeof kv_tab[0] - 2u, nn = sizeof kn_tab / sizeof kn_tab[0] - 2u;
+    unsigned hit[3] = {0, 0, 0};
+    for (i = 0; i < 3000; i++) {
+        const r8_s16 *v = kv_tab + rndn(nv), *n = kn_tab + rndn(nn);
+        r8_vec3l eye;
+        r8_s32 *e = &eye.x;
+        unsigned c = rndn(4);
+        int m;
+        for (k = 0; k < 3; k++) {
+            r8_s16 x = R8_RDS16(v + k);
+            if (c == 0 && x >= -1023 && x <= 1023)
+                e[k] = 16L * x;                     /* a zero dot product */
+            else if (c == 1)
+                e[k] = rndn(2) ? 16383 : -16383;
+            else
+                e[k] = (r8_s32)rndn(32767u) - 16383;
+        }
+        m = cull_model(n, v, &eye);
+        TEST_ASSERT_EQUAL_INT(m, ref_cull(n, v, &eye));
+        TEST_ASSERT_EQUAL_INT(m, r8k_cull(n, v, &eye));
+        hit[m + 1]++;
+    }
+    for (k = 0; k < 3; k++)
+        TEST_ASSERT_TRUE(hit[k] > 100);
+}
+
+static void test_level(void)
+{
+    unsigned i, k, nn = sizeof kn_tab / sizeof kn_tab[0] - 2u;
+    for (i = 0; i < 3000; i++) {
+        const r8_s16 *n = kn_tab + rndn(nn);
+        r8_vec3 l;
+        r8_s16 amb, *lp = &l.x;
+        r8_u8 colour, m;
+        for (k = 0; k < 3; k++)
+            lp[k] = rndn(8) ? (r8_s16)((r8_s16)rndn(32769u) - 16384) : (rndn(2) ? 16384 : -16384);
+        k = rndn(8);
+        amb = (r8_s16)(k == 0 ? 0 : (k == 1 ? R8_ONE14 : rndn(16385u)));
+        k = rndn(8);
+        colour = (r8_u8)(k == 0 ? 0 : (k == 1 ? 255 : (k < 5 ? rndn(17) : rndn(256))));
+        m = level_model(n, &l, amb, colour);
+        TEST_ASSERT_EQUAL_UINT8(m, ref_level(n, &l, amb, colour));
+        TEST_ASSERT_EQUAL_UINT8(m, r8k_level(n, &l, amb, colour));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -444,5 +549,7 @@ int main(void)
     RUN_TEST(test_project);
     RUN_TEST(test_edge);
     RUN_TEST(test_fill);
+    RUN_TEST(test_cull);
+    RUN_TEST(test_level);
     return UNITY_END();
 }

@@ -31,6 +31,8 @@ int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m,
 void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 int r8k_cull_ref(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
 #define r8k_cull r8k_cull_ref
+r8_u8 r8k_level_ref(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
+#define r8k_level r8k_level_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -43,6 +45,7 @@ int r8k_cull_ref(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
 #undef r8k_project
 #undef r8k_fill
 #undef r8k_cull
+#undef r8k_level
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -284,6 +287,41 @@ static void test_cull_random(void)
             unity_fail_int(__LINE__, "r8k_cull: a class too rare", 300, (long)hit[i]);
 }
 
+/* ---- r8k_level (ports/avr/facelevel.S): n over kc_norms, the light's
+ * components in [-16384, 16384] (or at its ends), ambient in [0, 16384]
+ * and colour in [0, 255] (ends included); every class of the clamped
+ * cosine (none, inside, clamped) must be hit ---- */
+static void test_level_random(void)
+{
+    unsigned long i, hit[3] = {0, 0, 0};
+    unsigned nn = sizeof kc_norms / sizeof kc_norms[0] - 2u;
+    for (i = 0; i < 20000; i++) {
+        const r8_s16 *n = kc_norms + rndn(nn);
+        r8_vec3 l;
+        r8_s16 amb, *lp = &l.x;
+        r8_u8 colour, ra, rr;
+        r8_s32 d;
+        unsigned k;
+        for (k = 0; k < 3; k++)
+            lp[k] = rndn(8) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
+        k = rndn(8);
+        amb = k == 0 ? 0 : (k == 1 ? R8_ONE14 : rnds(0, R8_ONE14));
+        k = rndn(8);
+        colour = (r8_u8)(k == 0 ? 0 : (k == 1 ? 255 : (k < 5 ? rndn(17) : rndn(256))));
+        rr = r8k_level_ref(n, &l, amb, colour);
+        ra = r8k_level(n, &l, amb, colour);
+        if (ra != rr) {
+            print_case("r8k_level", i);
+            unity_fail_int(__LINE__, "r8k_level differs from the reference", (long)rr, (long)ra);
+        }
+        d = (r8_s32)R8_RDS16(n) * l.x + (r8_s32)R8_RDS16(n + 1) * l.y + (r8_s32)R8_RDS16(n + 2) * l.z;
+        hit[d <= 0 ? 0 : (d >= (r8_s32)R8_ONE14 * (R8_ONE14 + 1) ? 2 : 1)]++;
+    }
+    for (i = 0; i < 3; i++)
+        if (hit[i] < 1000)
+            unity_fail_int(__LINE__, "r8k_level: a class too rare", 1000, (long)hit[i]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -295,5 +333,6 @@ int main(void)
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_cull_random);
+    RUN_TEST(test_level_random);
     return UNITY_END();
 }
