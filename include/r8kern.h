@@ -13,6 +13,7 @@
  *               (R8_ASM_FILL)
  *   r8k_cull    the 16-bit backface test of a face (R8_ASM_CULL)
  *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
+ *   r8k_zsum    a face's painter's depth sum (R8_ASM_ZSUM)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -81,5 +82,11 @@ int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
  * colour) + 128) >> 8) (src/cull.c) bit for bit, as (q colour + 8224) >>
  * 14, q = amb + (16384 - amb) i >> 14, i = n . light >> 14 (<= 16384). */
 r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
+
+/* The model vertices verts[3 vi[k] ..] (R8_FLASH; vi in RAM, n >= 1)
+ * summed per component: 0 when a sum lies outside [-32767, 32767];
+ * else 1 and *out = floor((row . sums + 512) / 1024), exactly (row three
+ * Q1.14 r8_s16: the camera-space z row of the object's matrix). */
+int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 
 #endif

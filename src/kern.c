@@ -175,3 +175,22 @@ r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
     return (r8_u8)((p * colour + 8224u) >> 14);
 }
 #endif
+
+#ifndef R8_ASM_ZSUM
+int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out)
+{
+    r8_s32 s[3];
+    r8_u8 k, j;
+    s[0] = s[1] = s[2] = 0;
+    for (k = 0; k < n; k++) {
+        const r8_s16 *mv = verts + 3u * vi[k];
+        for (j = 0; j < 3; j++)
+            s[j] += R8_RDS16(mv + j);
+    }
+    for (j = 0; j < 3; j++)
+        if (s[j] > 32767 || s[j] < -32767)
+            return 0;
+    *out = R8_ASR32C(R8_MUL16(row[0], s[0]) + R8_MUL16(row[1], s[1]) + R8_MUL16(row[2], s[2]) + 512, 10);
+    return 1;
+}
+#endif

@@ -691,25 +691,31 @@ static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
  * added in model space (flash), then the one product row. */
 static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8_u8 n)
 {
-    r8_s32 sx = 0, sy = 0, sz = 0, tz;
-    r8_u8 k, sh = 0;
-    for (k = 0; k < n; k++) {
-        const r8_s16 *mv = me->verts + 3u * vi[k];
-        sx += R8_RDS16(mv);
-        sy += R8_RDS16(mv + 1);
-        sz += R8_RDS16(mv + 2);
+    r8_s32 sx, tz;
+    if (!r8k_zsum(me->verts, vi, n, &o->m.m[6], &sx)) {   /* (r8kern.h) */
+        /* a sum past 16 bits: all halved until they fit, the product
+         * shifted back */
+        r8_s32 sy = 0, sz = 0;
+        r8_u8 k, sh = 0;
+        sx = 0;
+        for (k = 0; k < n; k++) {
+            const r8_s16 *mv = me->verts + 3u * vi[k];
+            sx += R8_RDS16(mv);
+            sy += R8_RDS16(mv + 1);
+            sz += R8_RDS16(mv + 2);
+        }
+        while ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
+               (r8_u32)(sz + 32767) > 65534UL) {
+            sx = R8_ASR32C(sx, 1);
+            sy = R8_ASR32C(sy, 1);
+            sz = R8_ASR32C(sz, 1);
+            sh++;
+        }
+        sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
+                       R8_MUL16(o->m.m[8], sz) + 512, 10);
+        if (sh)
+            sx = (r8_s32)((r8_u32)sx << sh);
     }
-    while ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
-           (r8_u32)(sz + 32767) > 65534UL) {
-        sx = R8_ASR32C(sx, 1);
-        sy = R8_ASR32C(sy, 1);
-        sz = R8_ASR32C(sz, 1);
-        sh++;
-    }
-    sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
-                   R8_MUL16(o->m.m[8], sz) + 512, 10);
-    if (sh)
-        sx = (r8_s32)((r8_u32)sx << sh);
     tz = o->t.z;
     if (n == 4)
         tz <<= 2;

@@ -18,6 +18,8 @@
 #undef R8_ASM_FILL
 #undef R8_ASM_CULL
 #undef R8_ASM_LEVEL
+#undef R8_ASM_ZSUM
+#define r8k_zsum ref_zsum
 #define r8k_cull ref_cull
 #define r8k_level ref_level
 #define r8k_trap ref_trap
@@ -33,6 +35,8 @@
 #undef r8k_fill
 #undef r8k_cull
 #undef r8k_level
+#undef r8k_zsum
+int ref_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 int ref_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
 r8_u8 ref_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
 void ref_fill(r8_u8 *p, r8_u8 v, unsigned n);
@@ -448,18 +452,28 @@ static void test_fill(void)
  * plain 32-bit models (r8_cull_front's 16-bit test; r8_face_level's
  * (r8_tf_shade(n, light, colour) + 128) >> 8, step by step).  n and v
  * from flash tables: v around the 16-bit range [-1023, 1023] (its ends
- * included), n in [-16384, 16384]. */
-#define KV1(i) (r8_s16)((((i) * 40503L + 12345L) % 2241L) - 1120L)
-#define KN1(i) (r8_s16)((((i) * 25173L + 13849L) % 32769L) - 16384L)
-#define K4(m, i) m(i), m(i + 1), m(i + 2), m(i + 3)
-#define K16(m, i) K4(m, i), K4(m, i + 4), K4(m, i + 8), K4(m, i + 12)
+ * included), n in [-16384, 16384] (after the edge cases, 64 values of
+ * ((40503 i + 12345) mod 2241) - 1120 and ((25173 i + 13849) mod 32769)
+ * - 16384). */
 static const r8_s16 kv_tab[] R8_FLASH = {
     1023, -1023, 1023, 1024, -1024, 0, -1, 1, 1023, 1023, -1023, -1023,
-    K16(KV1, 0), K16(KV1, 16), K16(KV1, 32), K16(KV1, 48)
+    20, 185, 350, 515, 680, 845, 1010, -1066, -901, -736,
+    -571, -406, -241, -76, 89, 254, 419, 584, 749, 914,
+    1079, -997, -832, -667, -502, -337, -172, -7, 158, 323,
+    488, 653, 818, 983, -1093, -928, -763, -598, -433, -268,
+    -103, 62, 227, 392, 557, 722, 887, 1052, -1024, -859,
+    -694, -529, -364, -199, -34, 131, 296, 461, 626, 791,
+    956, -1120, -955, -790
 };
 static const r8_s16 kn_tab[] R8_FLASH = {
     16384, -16384, 16384, 0, 0, 0, -16384, 16384, -16384, 1, -1, 0,
-    K16(KN1, 0), K16(KN1, 16), K16(KN1, 32), K16(KN1, 48)
+    -2535, -10131, 15042, 7446, -150, -7746, -15342, 9831, 2235, -5361,
+    -12957, 12216, 4620, -2976, -10572, 14601, 7005, -591, -8187, -15783,
+    9390, 1794, -5802, -13398, 11775, 4179, -3417, -11013, 14160, 6564,
+    -1032, -8628, -16224, 8949, 1353, -6243, -13839, 11334, 3738, -3858,
+    -11454, 13719, 6123, -1473, -9069, 16104, 8508, 912, -6684, -14280,
+    10893, 3297, -4299, -11895, 13278, 5682, -1914, -9510, 15663, 8067,
+    471, -7125, -14721, 10452
 };
 
 static int cull_model(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
@@ -541,6 +555,51 @@ static void test_level(void)
     }
 }
 
+/* ---- r8k_zsum: over vt_kern's 64 vertices (extremes: sums past 16
+ * bits) and kv_tab's 25 (small), n 1..4, row entries Q1.14; against a
+ * plain model (exact sums, the 16-bit test, the product row, floor) */
+static int zsum_model(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out)
+{
+    r8_s32 sum[3], dot = 0;
+    unsigned k, j;
+    for (j = 0; j < 3; j++) {
+        sum[j] = 0;
+        for (k = 0; k < n; k++)
+            sum[j] += R8_RDS16(verts + 3u * vi[k] + j);
+        if (sum[j] > 32767 || sum[j] < -32767)
+            return 0;
+    }
+    for (j = 0; j < 3; j++)
+        dot += mul32(row[j], (r8_s16)sum[j]);
+    *out = R8_ASR32C(dot + 512, 10);
+    return 1;
+}
+
+static void test_zsum(void)
+{
+    unsigned i, k, hit[2] = {0, 0};
+    for (i = 0; i < 3000; i++) {
+        int big = rndn(3) == 0;
+        const r8_s16 *verts = big ? vt_kern : kv_tab;
+        unsigned nv = big ? 64u : (unsigned)(sizeof kv_tab / sizeof kv_tab[0] / 3u);
+        r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
+        r8_s16 row[3];
+        r8_s32 om = 0x5A5A5A5AL, orf = 0x5A5A5A5AL, ok = 0x5A5A5A5AL;
+        int m;
+        for (k = 0; k < 4; k++)
+            vi[k] = (r8_u8)rndn((r8_u16)nv);
+        for (k = 0; k < 3; k++)
+            row[k] = rndn(4) ? (r8_s16)((r8_s16)rndn(32769u) - 16384) : (rndn(2) ? 16384 : -16384);
+        m = zsum_model(verts, vi, n, row, &om);
+        TEST_ASSERT_EQUAL_INT(m, ref_zsum(verts, vi, n, row, &orf));
+        TEST_ASSERT_EQUAL_INT(m, r8k_zsum(verts, vi, n, row, &ok));
+        TEST_ASSERT_EQUAL_INT32(om, orf);
+        TEST_ASSERT_EQUAL_INT32(om, ok);
+        hit[m]++;
+    }
+    TEST_ASSERT_TRUE(hit[0] > 100 && hit[1] > 1000);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -551,5 +610,6 @@ int main(void)
     RUN_TEST(test_fill);
     RUN_TEST(test_cull);
     RUN_TEST(test_level);
+    RUN_TEST(test_zsum);
     return UNITY_END();
 }

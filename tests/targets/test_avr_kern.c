@@ -33,6 +33,8 @@ int r8k_cull_ref(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
 #define r8k_cull r8k_cull_ref
 r8_u8 r8k_level_ref(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
 #define r8k_level r8k_level_ref
+int r8k_zsum_ref(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
+#define r8k_zsum r8k_zsum_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -46,6 +48,7 @@ r8_u8 r8k_level_ref(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 col
 #undef r8k_fill
 #undef r8k_cull
 #undef r8k_level
+#undef r8k_zsum
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -322,6 +325,38 @@ static void test_level_random(void)
             unity_fail_int(__LINE__, "r8k_level: a class too rare", 1000, (long)hit[i]);
 }
 
+/* ---- r8k_zsum (ports/avr/facez.S): the vertex table the program's own
+ * code (arbitrary words: sums past 16 bits) or kc_verts (small), n 1..4,
+ * indices 0..255 (code) or within kc_verts, row entries Q1.14; the
+ * result and *out compared (out left as it was on 0); both classes of
+ * result must be hit ---- */
+static void test_zsum_random(void)
+{
+    unsigned long i, hit[2] = {0, 0};
+    for (i = 0; i < 20000; i++) {
+        int code = rndn(3) == 0;
+        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) : kc_verts;
+        unsigned nv = code ? 256u : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
+        r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
+        r8_s16 row[3];
+        r8_s32 oa = 0x5A5A5A5AL, orf = 0x5A5A5A5AL;
+        int ra, rr;
+        for (k = 0; k < 4; k++)
+            vi[k] = (r8_u8)rndn(nv);
+        for (k = 0; k < 3; k++)
+            row[k] = rndn(4) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
+        rr = r8k_zsum_ref(verts, vi, n, row, &orf);
+        ra = r8k_zsum(verts, vi, n, row, &oa);
+        if (ra != rr || oa != orf) {
+            print_case("r8k_zsum", i);
+            unity_fail_int(__LINE__, "r8k_zsum differs from the reference", (long)orf, (long)oa);
+        }
+        hit[rr ? 1 : 0]++;
+    }
+    if (hit[0] < 300 || hit[1] < 3000)
+        unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -334,5 +369,6 @@ int main(void)
     RUN_TEST(test_fill_random);
     RUN_TEST(test_cull_random);
     RUN_TEST(test_level_random);
+    RUN_TEST(test_zsum_random);
     return UNITY_END();
 }
