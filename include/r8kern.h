@@ -69,6 +69,11 @@ r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 /* p[0..n-1] = v (memset; on AVR an unrolled store loop). */
 void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n);
 
+/* R8_SDCC_FACE_KERN: r8k_cull, r8k_level and r8k_zsum are left unused
+ * by the renderer under SDCC (the Z80 keeps the code they replace, as
+ * at 38ee31d): SDCC 4.2 was seen to miscompile the C reference of
+ * r8k_zsum inside the library (tests/c/test_kern.c), so those tests are
+ * left out there too. */
 /* r8_cull_front's 16-bit test (src/cull.c): -1 when a component of v
  * (three r8_s16 in R8_FLASH, the face's first vertex) lies outside
  * [-1023, 1023]; else 1 if n . (eye - 16 v) > 0, 0 if not, exactly (n

@@ -179,18 +179,18 @@ r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
 #ifndef R8_ASM_ZSUM
 int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out)
 {
-    r8_s32 s[3];
-    r8_u8 k, j;
-    s[0] = s[1] = s[2] = 0;
+    r8_s32 sx = 0, sy = 0, sz = 0;      /* (face_zsum's own sums) */
+    r8_u8 k;
     for (k = 0; k < n; k++) {
         const r8_s16 *mv = verts + 3u * vi[k];
-        for (j = 0; j < 3; j++)
-            s[j] += R8_RDS16(mv + j);
+        sx += R8_RDS16(mv);
+        sy += R8_RDS16(mv + 1);
+        sz += R8_RDS16(mv + 2);
     }
-    for (j = 0; j < 3; j++)
-        if (s[j] > 32767 || s[j] < -32767)
-            return 0;
-    *out = R8_ASR32C(R8_MUL16(row[0], s[0]) + R8_MUL16(row[1], s[1]) + R8_MUL16(row[2], s[2]) + 512, 10);
+    if ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
+        (r8_u32)(sz + 32767) > 65534UL)
+        return 0;
+    *out = R8_ASR32C(R8_MUL16(row[0], sx) + R8_MUL16(row[1], sy) + R8_MUL16(row[2], sz) + 512, 10);
     return 1;
 }
 #endif

@@ -692,7 +692,10 @@ static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
 static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8_u8 n)
 {
     r8_s32 sx, tz;
-    if (!r8k_zsum(me->verts, vi, n, &o->m.m[6], &sx)) {   /* (r8kern.h) */
+#ifndef __SDCC                         /* (R8_SDCC_FACE_KERN in r8kern.h) */
+    if (!r8k_zsum(me->verts, vi, n, &o->m.m[6], &sx))
+#endif
+    {
         /* a sum past 16 bits: all halved until they fit, the product
          * shifted back */
         r8_s32 sy = 0, sz = 0;
@@ -739,7 +742,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL), kcull;
+    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+#ifndef __SDCC
+    r8_u8 kcull;
+#endif
     r8_u16 f;
 #ifndef R8_NO_BSP
     r8_u16 nf;
@@ -747,10 +753,12 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #endif
     if (o->hidden)
         return;
+#ifndef __SDCC
     kcull = o->eye16;             /* r8k_cull reads flash normals */
 #ifndef R8_NO_RT_NORMALS
     if (!o->nflash)
         kcull = 0;
+#endif
 #endif
 #ifndef R8_NO_BSP
     if (bsp)
@@ -778,10 +786,13 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         vi[0] = R8_RDU8(&fc->v[0]);
         if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
             const r8_s16 *v0 = me->verts + 3u * vi[0];
-            int c = -1;
+            int c;
+#ifndef __SDCC                 /* (R8_SDCC_FACE_KERN in r8kern.h) */
+            c = -1;
             if (kcull)
                 c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
             if (c < 0)
+#endif
                 c = r8_cull_front(o, v0, f);
             if (!c)
                 continue;

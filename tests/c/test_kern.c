@@ -531,8 +531,9 @@ static void test_cull(void)
         TEST_ASSERT_EQUAL_INT(m, r8k_cull(n, v, &eye));
         hit[m + 1]++;
     }
-    for (k = 0; k < 3; k++)
-        TEST_ASSERT_TRUE(hit[k] > 100);
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[0]);     /* -1 */
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[1]);     /* 0 */
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[2]);     /* 1 */
 }
 
 static void test_level(void)
@@ -608,8 +609,10 @@ int main(void)
     RUN_TEST(test_project);
     RUN_TEST(test_edge);
     RUN_TEST(test_fill);
+#ifndef __SDCC   /* (R8_SDCC_FACE_KERN in r8kern.h: the Z80 renderer does not use them) */
     RUN_TEST(test_cull);
     RUN_TEST(test_level);
     RUN_TEST(test_zsum);
+#endif
     return UNITY_END();
 }
