@@ -11,6 +11,9 @@
  *   r8k_edge    an edge's column DDA for its first row (R8_ASM_EDGE)
  *   r8k_fill    n bytes set to one value: the band and depth clears
  *               (R8_ASM_FILL)
+ *   r8k_cull    the 16-bit backface test of a face (R8_ASM_CULL)
+ *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
+ *   r8k_zsum    a face's painter's depth sum (R8_ASM_ZSUM)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -65,5 +68,30 @@ r8_s16 r8k_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 
 /* p[0..n-1] = v (memset; on AVR an unrolled store loop). */
 void r8k_fill(r8_u8 *p, r8_u8 v, unsigned n);
+
+/* R8_SDCC_FACE_KERN: r8k_cull, r8k_level and r8k_zsum are left unused
+ * by the renderer under SDCC (the Z80 keeps the code they replace, as
+ * at 38ee31d): SDCC 4.2 was seen to miscompile the C reference of
+ * r8k_zsum inside the library (tests/c/test_kern.c), so those tests are
+ * left out there too. */
+/* r8_cull_front's 16-bit test (src/cull.c): -1 when a component of v
+ * (three r8_s16 in R8_FLASH, the face's first vertex) lies outside
+ * [-1023, 1023]; else 1 if n . (eye - 16 v) > 0, 0 if not, exactly (n
+ * three Q1.14 r8_s16 in R8_FLASH, the unit face normal; eye's components
+ * within +-16383, of which the low 16 bits are read). */
+int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+
+/* The dither level of a face of normal n (three Q1.14 r8_s16 in
+ * R8_FLASH) under `light` (components within +-16384) for brightness
+ * colour and ambient amb in [0, 16384]: (r8_u8)((r8_tf_shade(n, light,
+ * colour) + 128) >> 8) (src/cull.c) bit for bit, as (q colour + 8224) >>
+ * 14, q = amb + (16384 - amb) i >> 14, i = n . light >> 14 (<= 16384). */
+r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
+
+/* The model vertices verts[3 vi[k] ..] (R8_FLASH; vi in RAM, n >= 1)
+ * summed per component: 0 when a sum lies outside [-32767, 32767];
+ * else 1 and *out = floor((row . sums + 512) / 1024), exactly (row three
+ * Q1.14 r8_s16: the camera-space z row of the object's matrix). */
+int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 
 #endif

@@ -20,12 +20,12 @@
 # Every firmware links build/x/scenes/scene_S.c (ports/scene_strip.py): the
 # scene table with only its own scene's meshes.
 # AVR assembly kernels (include/r8kern.h): ports/avr/trap.S, xform.S,
-# edge.S, project.S and fill.S go into both AVR archives, whose library
+# edge.S, project.S, fill.S, facecull.S, facelevel.S and facez.S go into both AVR archives, whose library
 # objects are compiled with -DR8_ASM_TRAP -DR8_ASM_XFORM -DR8_ASM_EDGE
-# -DR8_ASM_PROJECT -DR8_ASM_FILL (src/kern.c then leaves its C references out); the
+# -DR8_ASM_PROJECT -DR8_ASM_FILL -DR8_ASM_CULL -DR8_ASM_LEVEL -DR8_ASM_ZSUM (src/kern.c then leaves its C references out); the
 # host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
-# project fill) with those only, for before/after figures; as an environment
+# project fill facecull facelevel facez) with those only, for before/after figures; as an environment
 # variable it also reaches make bench (`AVR_ASM=0 make bench`).
 # build/x/avr-kernels.txt records the choice and AVR_CFLAGS, so changing
 # either rebuilds the AVR objects.
@@ -111,11 +111,12 @@ Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KALL   := trap xform edge project fill
+AVR_KALL   := trap xform edge project fill facecull facelevel facez
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
 AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
               $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
-              $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL)
+              $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
+              $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p

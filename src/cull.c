@@ -6,6 +6,7 @@
  * n = (v2 - v0) x (v1 - v0), which points outwards for faces listed
  * clockwise as seen from outside (screen y down), scaled to unit length. */
 #include "r8int.h"
+#include "r8kern.h"
 
 void r8_pose_identity(r8_pose *p)
 {
@@ -64,11 +65,28 @@ int r8_cull_front(const r8_objx *o, const r8_s16 *v0, r8_u16 f)
 r8_u8 r8_face_level(const r8_state *st, const r8_objx *o, const r8_object *ob, r8_u16 f)
 {
     r8_u8 colour = R8_RDU8(&ob->mesh->faces[f].colour);
-    r8_vec3 n;
     if (ob->pose.flags & R8_POSE_COLOUR)
         colour = ob->pose.colour;
     if (st->shading != R8_SHADE_LAMBERT && !R8_TEXTURED(st->shading))
         return colour;
-    normal_of(o, f, &n);
-    return (r8_u8)((r8_tf_shade(st, &n, &o->light, colour) + 128) >> 8);
+#if defined(__SDCC) || !defined(R8_NO_RT_NORMALS)
+#ifndef __SDCC                         /* (R8_SDCC_FACE_KERN in r8kern.h) */
+    if (!o->nflash)
+#endif
+    {
+        r8_vec3 n;
+        normal_of(o, f, &n);
+        return (r8_u8)((r8_tf_shade(st, &n, &o->light, colour) + 128) >> 8);
+    }
+#endif
+#ifndef __SDCC
+    {                                  /* flash normals: one kernel (r8kern.h) */
+        r8_s16 amb = st->scene->ambient;
+        if (amb < 0)
+            amb = 0;
+        if (amb > R8_ONE14)
+            amb = R8_ONE14;
+        return r8k_level(o->normals + 3u * f, &o->light, amb, colour);
+    }
+#endif
 }

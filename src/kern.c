@@ -144,3 +144,53 @@ void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows)
     t->k = k;
 }
 #endif
+
+#ifndef R8_ASM_CULL
+int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
+{
+    r8_s16 x = R8_RDS16(v), y = R8_RDS16(v + 1), z = R8_RDS16(v + 2);
+    if ((r8_u16)(x + 1023) > 2046u || (r8_u16)(y + 1023) > 2046u || (r8_u16)(z + 1023) > 2046u)
+        return -1;
+    return R8_MUL16(R8_RDS16(n), (r8_s16)eye->x - (r8_s16)(x * R8_CSCALE)) +
+           R8_MUL16(R8_RDS16(n + 1), (r8_s16)eye->y - (r8_s16)(y * R8_CSCALE)) +
+           R8_MUL16(R8_RDS16(n + 2), (r8_s16)eye->z - (r8_s16)(z * R8_CSCALE)) > 0;
+}
+#endif
+
+#ifndef R8_ASM_LEVEL
+r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
+{
+    r8_s32 d = R8_MUL16(R8_RDS16(n), light->x) + R8_MUL16(R8_RDS16(n + 1), light->y) +
+               R8_MUL16(R8_RDS16(n + 2), light->z);
+    r8_s16 i = 0;                          /* as r8_tf_shade, step by step */
+    r8_u32 p;
+    if (d > 0) {
+        i = (r8_s16)R8_SHR14U(d);
+        if (i > R8_ONE14)
+            i = R8_ONE14;
+    }
+    p = (r8_u32)R8_MUL16(R8_ONE14 - amb, i);
+    p = (r8_u16)(amb + R8_SHR14U(p));
+    /* ((p colour 256 + 8192) >> 14 in 16 bits, + 128) >> 8, in 8 bits */
+    return (r8_u8)((p * colour + 8224u) >> 14);
+}
+#endif
+
+#ifndef R8_ASM_ZSUM
+int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out)
+{
+    r8_s32 sx = 0, sy = 0, sz = 0;      /* (face_zsum's own sums) */
+    r8_u8 k;
+    for (k = 0; k < n; k++) {
+        const r8_s16 *mv = verts + 3u * vi[k];
+        sx += R8_RDS16(mv);
+        sy += R8_RDS16(mv + 1);
+        sz += R8_RDS16(mv + 2);
+    }
+    if ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
+        (r8_u32)(sz + 32767) > 65534UL)
+        return 0;
+    *out = R8_ASR32C(R8_MUL16(row[0], sx) + R8_MUL16(row[1], sy) + R8_MUL16(row[2], sz) + 512, 10);
+    return 1;
+}
+#endif

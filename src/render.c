@@ -616,6 +616,18 @@ static r8_u16 band_of(const r8_state *st, r8_s16 y, r8_s16 band)
     return (r8_u16)((r8_u16)y / (r8_u16)band);
 }
 
+/* Rows [*top, *bot) of the box [xmin, xmax] x [ymin, ymax] (12.4); 0 if
+ * no pixel centre of the frame can be inside. */
+static int box_rows(const r8_state *st, r8_s16 xmin, r8_s16 xmax, r8_s16 ymin, r8_s16 ymax,
+                    r8_s16 *top, r8_s16 *bot)
+{
+    *top = R8_FLOOR16(ymin + 7);
+    *bot = R8_FLOOR16(ymax + 7);
+    return *top < *bot && *bot > 0 && *top < st->height &&
+           R8_FLOOR16(xmax + 7) > 0 && R8_FLOOR16(xmin + 7) < st->width;
+}
+
+#if !defined(R8_NO_CLIP) || R8_W_PAINTER
 /* Rows [*top, *bot) and columns of the polygon vp[0..n); 0 if no pixel
  * centre of the frame can be inside. */
 static int face_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n, r8_s16 *top, r8_s16 *bot)
@@ -629,11 +641,9 @@ static int face_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n, r8_s1
         if (v[1] < ymin) ymin = v[1];
         if (v[1] > ymax) ymax = v[1];
     }
-    *top = R8_FLOOR16(ymin + 7);
-    *bot = R8_FLOOR16(ymax + 7);
-    return *top < *bot && *bot > 0 && *top < st->height &&
-           R8_FLOOR16(xmax + 7) > 0 && R8_FLOOR16(xmin + 7) < st->width;
+    return box_rows(st, xmin, xmax, ymin, ymax, top, bot);
 }
+#endif
 
 /* Vertex pointers of the polygon over screen vertex list idx. */
 static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16 **vp)
@@ -681,25 +691,34 @@ static r8_u8 depth_key(const r8_state *st, r8_s32 zsum, r8_u8 n)
  * added in model space (flash), then the one product row. */
 static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8_u8 n)
 {
-    r8_s32 sx = 0, sy = 0, sz = 0, tz;
-    r8_u8 k, sh = 0;
-    for (k = 0; k < n; k++) {
-        const r8_s16 *mv = me->verts + 3u * vi[k];
-        sx += R8_RDS16(mv);
-        sy += R8_RDS16(mv + 1);
-        sz += R8_RDS16(mv + 2);
+    r8_s32 sx, tz;
+#ifndef __SDCC                         /* (R8_SDCC_FACE_KERN in r8kern.h) */
+    if (!r8k_zsum(me->verts, vi, n, &o->m.m[6], &sx))
+#endif
+    {
+        /* a sum past 16 bits: all halved until they fit, the product
+         * shifted back */
+        r8_s32 sy = 0, sz = 0;
+        r8_u8 k, sh = 0;
+        sx = 0;
+        for (k = 0; k < n; k++) {
+            const r8_s16 *mv = me->verts + 3u * vi[k];
+            sx += R8_RDS16(mv);
+            sy += R8_RDS16(mv + 1);
+            sz += R8_RDS16(mv + 2);
+        }
+        while ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
+               (r8_u32)(sz + 32767) > 65534UL) {
+            sx = R8_ASR32C(sx, 1);
+            sy = R8_ASR32C(sy, 1);
+            sz = R8_ASR32C(sz, 1);
+            sh++;
+        }
+        sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
+                       R8_MUL16(o->m.m[8], sz) + 512, 10);
+        if (sh)
+            sx = (r8_s32)((r8_u32)sx << sh);
     }
-    while ((r8_u32)(sx + 32767) > 65534UL || (r8_u32)(sy + 32767) > 65534UL ||
-           (r8_u32)(sz + 32767) > 65534UL) {
-        sx = R8_ASR32C(sx, 1);
-        sy = R8_ASR32C(sy, 1);
-        sz = R8_ASR32C(sz, 1);
-        sh++;
-    }
-    sx = R8_ASR32C(R8_MUL16(o->m.m[6], sx) + R8_MUL16(o->m.m[7], sy) +
-                   R8_MUL16(o->m.m[8], sz) + 512, 10);
-    if (sh)
-        sx = (r8_s32)((r8_u32)sx << sh);
     tz = o->t.z;
     if (n == 4)
         tz <<= 2;
@@ -724,6 +743,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     const r8_objx *o = &st->obj[i];
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
     r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+#ifndef __SDCC
+    r8_u8 kcull;
+#endif
     r8_u16 f;
 #ifndef R8_NO_BSP
     r8_u16 nf;
@@ -731,6 +753,13 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #endif
     if (o->hidden)
         return;
+#ifndef __SDCC
+    kcull = o->eye16;             /* r8k_cull reads flash normals */
+#ifndef R8_NO_RT_NORMALS
+    if (!o->nflash)
+        kcull = 0;
+#endif
+#endif
 #ifndef R8_NO_BSP
     if (bsp)
         r8_bsp_begin(r, me);
@@ -745,29 +774,54 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         {
 #endif
         r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
-#ifdef R8_NO_CLIP
-        const r8_s16 *vp[R8_MAX_FACE_VERTS];   /* no clipped polygons */
-#else
+#ifndef R8_NO_CLIP
         const r8_s16 *vp[R8_SCAN_MAXV];
 #endif
-        r8_s16 top, bot;
+        r8_s16 top, bot, xmin = 32767, xmax = -32767, ymin = 32767, ymax = -32767;
         r8_s32 zsum = 0;
         r8_fid id;
         r8_u16 key;
         if (n < 3 || n > R8_MAX_FACE_VERTS)
             continue;
         vi[0] = R8_RDU8(&fc->v[0]);
-        if (normal && !r8_cull_front(o, me->verts + 3u * vi[0], f))
-            continue;
-        /* vertex pointers; a marked vertex sends the face to the clipper */
+        if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
+            const r8_s16 *v0 = me->verts + 3u * vi[0];
+            int c;
+#ifndef __SDCC                 /* (R8_SDCC_FACE_KERN in r8kern.h) */
+            c = -1;
+            if (kcull)
+                c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
+            if (c < 0)
+#endif
+                c = r8_cull_front(o, v0, f);
+            if (!c)
+                continue;
+        }
+        /* the vertices' box; a marked vertex sends the face to the
+         * clipper */
         for (j = 0; j < n; j++) {
+            const r8_s16 *v;
+            r8_s16 x;
             if (j)
                 vi[j] = R8_RDU8(&fc->v[j]);
-            vp[j] = base + (vsh == 1 ? 2u * vi[j] : 4u * vi[j]);   /* no variable shift */
-            if (vp[j][0] == R8_VX_TODO)
+            v = base + (vsh == 1 ? 2u * vi[j] : 4u * vi[j]);   /* no variable shift */
+#ifndef R8_NO_CLIP
+            vp[j] = v;
+#endif
+            x = v[0];
+            if (x == R8_VX_TODO) {
                 r8_tf_vertex(st, o, me->verts + 3u * vi[j], (r8_u16)(o->vbase + vi[j]));
-            if (vp[j][0] == R8_VX_CLIP)
+                x = v[0];
+            }
+            if (x == R8_VX_CLIP) {
                 clip = 1;
+            } else {
+                r8_s16 y = v[1];
+                if (x < xmin) xmin = x;
+                if (x > xmax) xmax = x;
+                if (y < ymin) ymin = y;
+                if (y > ymax) ymax = y;
+            }
         }
         if (clip) {
 #ifdef R8_NO_CLIP
@@ -784,13 +838,15 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 continue;
             n = cp->n;
             face_vp(st, cp->idx, n, vp);
+            if (!face_rows(st, vp, n, &top, &bot))
+                continue;
             id = (r8_fid)(st->nfaces + st->nclipped);
 #endif
         } else {
+            if (!box_rows(st, xmin, xmax, ymin, ymax, &top, &bot))
+                continue;
             id = (r8_fid)(o->fbase + f);
         }
-        if (!face_rows(st, vp, n, &top, &bot))
-            continue;
         if (clip)
             st->nclipped++;
         if (painter) {

@@ -16,6 +16,12 @@
 #undef R8_ASM_PROJECT
 #undef R8_ASM_EDGE
 #undef R8_ASM_FILL
+#undef R8_ASM_CULL
+#undef R8_ASM_LEVEL
+#undef R8_ASM_ZSUM
+#define r8k_zsum ref_zsum
+#define r8k_cull ref_cull
+#define r8k_level ref_level
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
@@ -27,6 +33,12 @@
 #undef r8k_project
 #undef r8k_edge
 #undef r8k_fill
+#undef r8k_cull
+#undef r8k_level
+#undef r8k_zsum
+int ref_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
+int ref_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+r8_u8 ref_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
 void ref_fill(r8_u8 *p, r8_u8 v, unsigned n);
 r8_s16 ref_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
@@ -436,6 +448,159 @@ static void test_fill(void)
     }
 }
 
+/* ---- r8k_cull and r8k_level: the library's and the reference against
+ * plain 32-bit models (r8_cull_front's 16-bit test; r8_face_level's
+ * (r8_tf_shade(n, light, colour) + 128) >> 8, step by step).  n and v
+ * from flash tables: v around the 16-bit range [-1023, 1023] (its ends
+ * included), n in [-16384, 16384] (after the edge cases, 64 values of
+ * ((40503 i + 12345) mod 2241) - 1120 and ((25173 i + 13849) mod 32769)
+ * - 16384). */
+static const r8_s16 kv_tab[] R8_FLASH = {
+    1023, -1023, 1023, 1024, -1024, 0, -1, 1, 1023, 1023, -1023, -1023,
+    20, 185, 350, 515, 680, 845, 1010, -1066, -901, -736,
+    -571, -406, -241, -76, 89, 254, 419, 584, 749, 914,
+    1079, -997, -832, -667, -502, -337, -172, -7, 158, 323,
+    488, 653, 818, 983, -1093, -928, -763, -598, -433, -268,
+    -103, 62, 227, 392, 557, 722, 887, 1052, -1024, -859,
+    -694, -529, -364, -199, -34, 131, 296, 461, 626, 791,
+    956, -1120, -955, -790
+};
+static const r8_s16 kn_tab[] R8_FLASH = {
+    16384, -16384, 16384, 0, 0, 0, -16384, 16384, -16384, 1, -1, 0,
+    -2535, -10131, 15042, 7446, -150, -7746, -15342, 9831, 2235, -5361,
+    -12957, 12216, 4620, -2976, -10572, 14601, 7005, -591, -8187, -15783,
+    9390, 1794, -5802, -13398, 11775, 4179, -3417, -11013, 14160, 6564,
+    -1032, -8628, -16224, 8949, 1353, -6243, -13839, 11334, 3738, -3858,
+    -11454, 13719, 6123, -1473, -9069, 16104, 8508, 912, -6684, -14280,
+    10893, 3297, -4299, -11895, 13278, 5682, -1914, -9510, 15663, 8067,
+    471, -7125, -14721, 10452
+};
+
+static int cull_model(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
+{
+    const r8_s32 *e = &eye->x;
+    r8_s32 dot = 0;
+    unsigned k;
+    for (k = 0; k < 3; k++) {
+        r8_s16 x = R8_RDS16(v + k);
+        if (x < -1023 || x > 1023)
+            return -1;
+    }
+    for (k = 0; k < 3; k++)
+        dot += mul32(R8_RDS16(n + k), (r8_s16)(e[k] - 16L * R8_RDS16(v + k)));
+    return dot > 0;
+}
+
+static r8_u8 level_model(const r8_s16 *n, const r8_vec3 *l, r8_s16 amb, r8_u8 colour)
+{
+    r8_s32 d = mul32(R8_RDS16(n), l->x) + mul32(R8_RDS16(n + 1), l->y) + mul32(R8_RDS16(n + 2), l->z);
+    r8_s16 i = 0;
+    r8_u32 p;
+    if (d > 0) {
+        i = (r8_s16)R8_SHR14U(d);
+        if (i > R8_ONE14)
+            i = R8_ONE14;
+    }
+    p = (r8_u32)mul32((r8_s16)(R8_ONE14 - amb), i);
+    p = (r8_u16)(amb + R8_SHR14U(p));
+    p *= (r8_u16)((r8_u16)colour << 8);
+    return (r8_u8)(((r8_s16)R8_SHR14U(p + 8192u) + 128) >> 8);
+}
+
+static void test_cull(void)
+{
+    unsigned i, k, nv = sizeof kv_tab / sizeof kv_tab[0] - 2u, nn = sizeof kn_tab / sizeof kn_tab[0] - 2u;
+    unsigned hit[3] = {0, 0, 0};
+    for (i = 0; i < 3000; i++) {
+        const r8_s16 *v = kv_tab + rndn(nv), *n = kn_tab + rndn(nn);
+        r8_vec3l eye;
+        r8_s32 *e = &eye.x;
+        unsigned c = rndn(4);
+        int m;
+        for (k = 0; k < 3; k++) {
+            r8_s16 x = R8_RDS16(v + k);
+            if (c == 0 && x >= -1023 && x <= 1023)
+                e[k] = 16L * x;                     /* a zero dot product */
+            else if (c == 1)
+                e[k] = rndn(2) ? 16383 : -16383;
+            else
+                e[k] = (r8_s32)rndn(32767u) - 16383;
+        }
+        m = cull_model(n, v, &eye);
+        TEST_ASSERT_EQUAL_INT(m, ref_cull(n, v, &eye));
+        TEST_ASSERT_EQUAL_INT(m, r8k_cull(n, v, &eye));
+        hit[m + 1]++;
+    }
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[0]);     /* -1 */
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[1]);     /* 0 */
+    TEST_ASSERT_GREATER_THAN(100, (int)hit[2]);     /* 1 */
+}
+
+static void test_level(void)
+{
+    unsigned i, k, nn = sizeof kn_tab / sizeof kn_tab[0] - 2u;
+    for (i = 0; i < 3000; i++) {
+        const r8_s16 *n = kn_tab + rndn(nn);
+        r8_vec3 l;
+        r8_s16 amb, *lp = &l.x;
+        r8_u8 colour, m;
+        for (k = 0; k < 3; k++)
+            lp[k] = rndn(8) ? (r8_s16)((r8_s16)rndn(32769u) - 16384) : (rndn(2) ? 16384 : -16384);
+        k = rndn(8);
+        amb = (r8_s16)(k == 0 ? 0 : (k == 1 ? R8_ONE14 : rndn(16385u)));
+        k = rndn(8);
+        colour = (r8_u8)(k == 0 ? 0 : (k == 1 ? 255 : (k < 5 ? rndn(17) : rndn(256))));
+        m = level_model(n, &l, amb, colour);
+        TEST_ASSERT_EQUAL_UINT8(m, ref_level(n, &l, amb, colour));
+        TEST_ASSERT_EQUAL_UINT8(m, r8k_level(n, &l, amb, colour));
+    }
+}
+
+/* ---- r8k_zsum: over vt_kern's 64 vertices (extremes: sums past 16
+ * bits) and kv_tab's 25 (small), n 1..4, row entries Q1.14; against a
+ * plain model (exact sums, the 16-bit test, the product row, floor) */
+static int zsum_model(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out)
+{
+    r8_s32 sum[3], dot = 0;
+    unsigned k, j;
+    for (j = 0; j < 3; j++) {
+        sum[j] = 0;
+        for (k = 0; k < n; k++)
+            sum[j] += R8_RDS16(verts + 3u * vi[k] + j);
+        if (sum[j] > 32767 || sum[j] < -32767)
+            return 0;
+    }
+    for (j = 0; j < 3; j++)
+        dot += mul32(row[j], (r8_s16)sum[j]);
+    *out = R8_ASR32C(dot + 512, 10);
+    return 1;
+}
+
+static void test_zsum(void)
+{
+    unsigned i, k, hit[2] = {0, 0};
+    for (i = 0; i < 3000; i++) {
+        int big = rndn(3) == 0;
+        const r8_s16 *verts = big ? vt_kern : kv_tab;
+        unsigned nv = big ? 64u : (unsigned)(sizeof kv_tab / sizeof kv_tab[0] / 3u);
+        r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
+        r8_s16 row[3];
+        r8_s32 om = 0x5A5A5A5AL, orf = 0x5A5A5A5AL, ok = 0x5A5A5A5AL;
+        int m;
+        for (k = 0; k < 4; k++)
+            vi[k] = (r8_u8)rndn((r8_u16)nv);
+        for (k = 0; k < 3; k++)
+            row[k] = rndn(4) ? (r8_s16)((r8_s16)rndn(32769u) - 16384) : (rndn(2) ? 16384 : -16384);
+        m = zsum_model(verts, vi, n, row, &om);
+        TEST_ASSERT_EQUAL_INT(m, ref_zsum(verts, vi, n, row, &orf));
+        TEST_ASSERT_EQUAL_INT(m, r8k_zsum(verts, vi, n, row, &ok));
+        TEST_ASSERT_EQUAL_INT32(om, orf);
+        TEST_ASSERT_EQUAL_INT32(om, ok);
+        hit[m]++;
+    }
+    TEST_ASSERT_TRUE(hit[0] > 100 && hit[1] > 1000);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -444,5 +609,10 @@ int main(void)
     RUN_TEST(test_project);
     RUN_TEST(test_edge);
     RUN_TEST(test_fill);
+#ifndef __SDCC   /* (R8_SDCC_FACE_KERN in r8kern.h: the Z80 renderer does not use them) */
+    RUN_TEST(test_cull);
+    RUN_TEST(test_level);
+    RUN_TEST(test_zsum);
+#endif
     return UNITY_END();
 }

@@ -29,6 +29,12 @@ void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
+int r8k_cull_ref(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+#define r8k_cull r8k_cull_ref
+r8_u8 r8k_level_ref(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour);
+#define r8k_level r8k_level_ref
+int r8k_zsum_ref(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
+#define r8k_zsum r8k_zsum_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -40,6 +46,9 @@ void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #undef r8k_edge
 #undef r8k_project
 #undef r8k_fill
+#undef r8k_cull
+#undef r8k_level
+#undef r8k_zsum
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -222,6 +231,132 @@ static void test_fill_random(void)
             unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 10, (long)rem[i]);
 }
 
+/* ---- r8k_cull (ports/avr/facecull.S): v over a flash table of values
+ * around the 16-bit range [-1023, 1023] (its edges included), n over one
+ * of normal components in [-16384, 16384] (zeros included), eye random,
+ * at its limits, or exactly 16 v (a zero dot product); every class of
+ * result (-1, 0 with a zero sum, 0, 1) must be hit ---- */
+#define KC_V1(i) (r8_s16)((((i) * 40503L + 12345L) % 2241L) - 1120L)
+#define KC_N1(i) (r8_s16)((((i) * 25173L + 13849L) % 32769L) - 16384L)
+#define KC_4(m, i) m(i), m(i + 1), m(i + 2), m(i + 3)
+#define KC_16(m, i) KC_4(m, i), KC_4(m, i + 4), KC_4(m, i + 8), KC_4(m, i + 12)
+#define KC_64(m, i) KC_16(m, i), KC_16(m, i + 16), KC_16(m, i + 32), KC_16(m, i + 48)
+static const r8_s16 kc_verts[] R8_FLASH = {
+    1023, -1023, 1023, 1024, -1024, 0, -1, 1, 1023, 1023, -1023, -1023,
+    KC_64(KC_V1, 0), KC_64(KC_V1, 64), KC_64(KC_V1, 128), KC_64(KC_V1, 192)
+};
+static const r8_s16 kc_norms[] R8_FLASH = {
+    16384, -16384, 16384, 0, 0, 0, -16384, 16384, -16384, 1, -1, 0,
+    KC_64(KC_N1, 0), KC_64(KC_N1, 64), KC_64(KC_N1, 128), KC_64(KC_N1, 192)
+};
+
+static void test_cull_random(void)
+{
+    unsigned long i, hit[4] = {0, 0, 0, 0};
+    unsigned nv = sizeof kc_verts / sizeof kc_verts[0] - 2u;
+    unsigned nn = sizeof kc_norms / sizeof kc_norms[0] - 2u;
+    for (i = 0; i < 20000; i++) {
+        const r8_s16 *v = kc_verts + rndn(nv), *n = kc_norms + rndn(nn);
+        r8_vec3l eye;
+        r8_s32 *e = &eye.x;
+        unsigned c = rndn(4), k;
+        int ra, rr;
+        for (k = 0; k < 3; k++) {
+            r8_s16 vk = R8_RDS16(v + k);
+            if (c == 0 && vk >= -1023 && vk <= 1023)
+                e[k] = (r8_s32)vk * 16;                    /* eye = 16 v */
+            else if (c == 1)
+                e[k] = rndn(2) ? 16383 : -16383;
+            else
+                e[k] = rnds(-16383, 16383);
+        }
+        rr = r8k_cull_ref(n, v, &eye);
+        ra = r8k_cull(n, v, &eye);
+        if (ra != rr) {
+            print_case("r8k_cull", i);
+            unity_fail_int(__LINE__, "r8k_cull differs from the reference", (long)rr, (long)ra);
+        }
+        if (rr < 0)
+            hit[0]++;
+        else if (rr)
+            hit[3]++;
+        else if (c == 0)
+            hit[1]++;
+        else
+            hit[2]++;
+    }
+    for (i = 0; i < 4; i++)
+        if (hit[i] < 300)
+            unity_fail_int(__LINE__, "r8k_cull: a class too rare", 300, (long)hit[i]);
+}
+
+/* ---- r8k_level (ports/avr/facelevel.S): n over kc_norms, the light's
+ * components in [-16384, 16384] (or at its ends), ambient in [0, 16384]
+ * and colour in [0, 255] (ends included); every class of the clamped
+ * cosine (none, inside, clamped) must be hit ---- */
+static void test_level_random(void)
+{
+    unsigned long i, hit[3] = {0, 0, 0};
+    unsigned nn = sizeof kc_norms / sizeof kc_norms[0] - 2u;
+    for (i = 0; i < 20000; i++) {
+        const r8_s16 *n = kc_norms + rndn(nn);
+        r8_vec3 l;
+        r8_s16 amb, *lp = &l.x;
+        r8_u8 colour, ra, rr;
+        r8_s32 d;
+        unsigned k;
+        for (k = 0; k < 3; k++)
+            lp[k] = rndn(8) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
+        k = rndn(8);
+        amb = k == 0 ? 0 : (k == 1 ? R8_ONE14 : rnds(0, R8_ONE14));
+        k = rndn(8);
+        colour = (r8_u8)(k == 0 ? 0 : (k == 1 ? 255 : (k < 5 ? rndn(17) : rndn(256))));
+        rr = r8k_level_ref(n, &l, amb, colour);
+        ra = r8k_level(n, &l, amb, colour);
+        if (ra != rr) {
+            print_case("r8k_level", i);
+            unity_fail_int(__LINE__, "r8k_level differs from the reference", (long)rr, (long)ra);
+        }
+        d = (r8_s32)R8_RDS16(n) * l.x + (r8_s32)R8_RDS16(n + 1) * l.y + (r8_s32)R8_RDS16(n + 2) * l.z;
+        hit[d <= 0 ? 0 : (d >= (r8_s32)R8_ONE14 * (R8_ONE14 + 1) ? 2 : 1)]++;
+    }
+    for (i = 0; i < 3; i++)
+        if (hit[i] < 1000)
+            unity_fail_int(__LINE__, "r8k_level: a class too rare", 1000, (long)hit[i]);
+}
+
+/* ---- r8k_zsum (ports/avr/facez.S): the vertex table the program's own
+ * code (arbitrary words: sums past 16 bits) or kc_verts (small), n 1..4,
+ * indices 0..255 (code) or within kc_verts, row entries Q1.14; the
+ * result and *out compared (out left as it was on 0); both classes of
+ * result must be hit ---- */
+static void test_zsum_random(void)
+{
+    unsigned long i, hit[2] = {0, 0};
+    for (i = 0; i < 20000; i++) {
+        int code = rndn(3) == 0;
+        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) : kc_verts;
+        unsigned nv = code ? 256u : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
+        r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
+        r8_s16 row[3];
+        r8_s32 oa = 0x5A5A5A5AL, orf = 0x5A5A5A5AL;
+        int ra, rr;
+        for (k = 0; k < 4; k++)
+            vi[k] = (r8_u8)rndn(nv);
+        for (k = 0; k < 3; k++)
+            row[k] = rndn(4) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
+        rr = r8k_zsum_ref(verts, vi, n, row, &orf);
+        ra = r8k_zsum(verts, vi, n, row, &oa);
+        if (ra != rr || oa != orf) {
+            print_case("r8k_zsum", i);
+            unity_fail_int(__LINE__, "r8k_zsum differs from the reference", (long)orf, (long)oa);
+        }
+        hit[rr ? 1 : 0]++;
+    }
+    if (hit[0] < 300 || hit[1] < 3000)
+        unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -232,5 +367,8 @@ int main(void)
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
+    RUN_TEST(test_cull_random);
+    RUN_TEST(test_level_random);
+    RUN_TEST(test_zsum_random);
     return UNITY_END();
 }

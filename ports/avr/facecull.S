@@ -1,0 +1,129 @@
+/* facecull.S - r8k_cull (include/r8kern.h) for AVR with MUL (ATmega).
+ *
+ *   int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+ *
+ * The 16-bit backface test of src/cull.c (r8_cull_front's fast path):
+ * -1 when a component of the face's first vertex v lies outside
+ * [-1023, 1023]; else 1 when n . (eye - 16 v) > 0, 0 otherwise, the dot
+ * product exact in 32 bits.  n (the face's unit normal, Q1.14) and v are
+ * three r8_s16 in flash (LPM; RAM when R8_NO_PROGMEM is defined, as
+ * R8_RDS16 reads then); eye in RAM, of which only each component's low
+ * 16 bits are read (the caller guarantees |eye| <= 16383).  |eye - 16 v|
+ * < 2^15 and |n| <= 2^14, so the sum of the three products is < 2^31.
+ *
+ * Registers (avr-gcc ABI): arguments n r25:r24, v r23:r22, eye r21:r20.
+ * X = eye, Z = v then n.  The differences d0 r19:r18, d1 r21:r20,
+ * d2 r23:r22; the sum r27:r26:r25:r24; the normal component r17:r16;
+ * r15 zero.  Saves r15, r16, r17; clears r1 before returning.
+ */
+#ifdef R8_NO_PROGMEM
+#define RD(r) ld r, Z+
+#else
+#define RD(r) lpm r, Z+
+#endif
+
+#define ZERO r15
+
+/* d = eye component - 16 v component (X advances to the next r8_s32);
+ * out of range: to `out` */
+.macro DIFF dl, dh
+    RD(\dl)
+    RD(\dh)
+    movw  r16, \dl
+    subi  r16, 0x01
+    sbci  r17, 0xFC         /* v + 1023 */
+    cpi   r16, 0xFF
+    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
+    brcc  out
+    swap  \dh               /* v << 4 (fits: |v| <= 1023) */
+    swap  \dl
+    andi  \dh, 0xF0
+    eor   \dh, \dl
+    andi  \dl, 0xF0
+    eor   \dh, \dl
+    ld    r16, X+
+    ld    r17, X
+    adiw  r26, 3
+    sub   r16, \dl
+    sbc   r17, \dh
+    movw  \dl, r16
+.endm
+
+/* the sum += n component (r17:r16, read here) * d, both signed 16 */
+.macro ACC dl, dh
+    RD(r16)
+    RD(r17)
+    mul   r16, \dl          /* u x u, at byte 0 */
+    add   r24, r0
+    adc   r25, r1
+    adc   r26, ZERO
+    adc   r27, ZERO
+    muls  r17, \dh          /* s x s, at byte 2 */
+    add   r26, r0
+    adc   r27, r1
+    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
+    sbc   r27, ZERO         /* the sign extension: -2^24 */
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu \dh, r16          /* s x u, at byte 1 */
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+.endm
+
+    .section .text.r8k_cull,"ax",@progbits
+    .global r8k_cull
+    .type   r8k_cull, @function
+r8k_cull:
+    push  r15
+    push  r16
+    push  r17
+    movw  r26, r20          /* X = eye */
+    movw  r30, r22          /* Z = v (flash) */
+    DIFF  r18, r19
+    DIFF  r20, r21
+    DIFF  r22, r23
+    rjmp  dot
+out:
+    ldi   r24, 0xFF         /* -1: the caller's 32-bit path */
+    ldi   r25, 0xFF
+    rjmp  done
+dot:
+    movw  r30, r24          /* Z = n (flash) */
+    clr   ZERO
+    RD(r16)                 /* the first product sets the sum */
+    RD(r17)
+    mul   r16, r18
+    movw  r24, r0
+    muls  r17, r19
+    movw  r26, r0
+    mulsu r17, r18
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu r19, r16
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    ACC   r20, r21
+    ACC   r22, r23
+    mov   r0, r24           /* > 0: not zero and the sign clear */
+    or    r0, r25
+    or    r0, r26
+    or    r0, r27
+    ldi   r24, 0
+    breq  1f
+    sbrs  r27, 7
+    ldi   r24, 1
+1:  ldi   r25, 0
+done:
+    clr   r1
+    pop   r17
+    pop   r16
+    pop   r15
+    ret
+    .size r8k_cull, .-r8k_cull
