@@ -133,6 +133,30 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
     return y0;
 }
 
+/* The rare ends of edge_start, out of line so that the common path
+ * keeps few registers (AVR: a short prologue): an empty edge (b at or
+ * above a, only for non-convex input), an edge r8k_edge does not take
+ * (y0 == R8_EDGE_WIDE), and an edge started above row y (y0 < y), which
+ * is stepped down to it. */
+void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s16 y);
+void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s16 y)
+{
+    if (b[1] <= a[1]) {
+        /* only for non-convex input: an empty edge at b */
+        e->x.val = r8_row_of(b[0]);
+        e->x.q = 0;
+        e->x.r = e->x.err = 0;
+        e->x.den = 1;
+        return;
+    }
+    if (y0 == R8_EDGE_WIDE)
+        y0 = edge_dda_wide(&e->x, a[0], a[1], b[0], b[1]);
+    while (y0 < y) {
+        R8_INTERP_STEP(&e->x);
+        y0++;
+    }
+}
+
 /* Set up edge e on the chain going in direction dir from polygon
  * position `from`, for row y: skips edges that end at or above row y,
  * and steps a started edge down to row y. */
@@ -152,21 +176,11 @@ static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
     b = s->vp[to];
     e->vi = to;
     e->yend = yb;
-    if (b[1] <= a[1]) {
-        /* only for non-convex input: an empty edge at b */
-        e->x.val = r8_row_of(b[0]);
-        e->x.q = 0;
-        e->x.r = e->x.err = 0;
-        e->x.den = 1;
-        return;
-    }
-    y0 = r8k_edge(&e->x, a, b);    /* 16-bit, or a port's kernel */
-    if (y0 == R8_EDGE_WIDE)
-        y0 = edge_dda_wide(&e->x, a[0], a[1], b[0], b[1]);
-    while (y0 < y) {
-        R8_INTERP_STEP(&e->x);
-        y0++;
-    }
+    y0 = R8_EDGE_WIDE;
+    if (b[1] > a[1])
+        y0 = r8k_edge(&e->x, a, b);    /* 16-bit, or a port's kernel */
+    if (y0 < y)                        /* (R8_EDGE_WIDE too) */
+        r8_edge_rare(e, a, b, y0, y);
 }
 
 r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart)
