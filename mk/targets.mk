@@ -108,7 +108,7 @@ AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
 AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
-              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
+              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE -DR8_ASM_ESTART) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p

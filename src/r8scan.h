@@ -11,4 +11,14 @@ int r8_scan_row(r8_scanx *s, r8_s16 y, int judd);
  * vertex gets its depth and shade interpolators set up again. */
 int r8_scan_row_attrs(r8_scan *s, r8_s16 y, int judd);
 
+/* The rare ends of an edge's set-up (scan.c): an empty edge, one
+ * r8k_edge does not take, one starting above row y. */
+void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y);
+
+/* scan.c's edge set-up (C reference: kern.c; R8_ASM_ESTART: the
+ * port's, AVR ports/avr/edge.S): edge e
+ * (&s->l: the left chain, backwards; &s->r: the right one, forwards) set
+ * up from polygon position `from` for row y, with y < s->ybot. */
+void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
+
 #endif

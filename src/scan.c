@@ -39,12 +39,6 @@ r8_s16 r8_row_of(r8_s16 y)
 #define VX(s, i) ((s)->vp[i][0])
 #define VY(s, i) ((s)->vp[i][1])
 
-static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
-{
-    if (dir > 0)
-        return (r8_u8)(i + 1 == s->n ? 0 : i + 1);
-    return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
-}
 
 /* Column DDA of the edge (ax, ay) -> (bx, by), by > ay, on its first row
  * y0 = row_of(ay), in 32 bits: the edges r8k_edge (r8kern.h, the 16-bit
@@ -136,11 +130,11 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
 /* The rare ends of edge_start, out of line so that the common path
  * keeps few registers (AVR: a short prologue): an empty edge (b at or
  * above a, only for non-convex input), an edge r8k_edge does not take
- * (y0 == R8_EDGE_WIDE), and an edge started above row y (y0 < y), which
- * is stepped down to it. */
-void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s16 y);
-void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s16 y)
+ * (R8_EDGE_WIDE), and an edge starting above row y, stepped down to it.
+ * (The 16-bit set-up runs again here: these cases are rare.) */
+void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y)
 {
+    r8_s16 y0;
     if (b[1] <= a[1]) {
         /* only for non-convex input: an empty edge at b */
         e->x.val = r8_row_of(b[0]);
@@ -149,6 +143,7 @@ void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s1
         e->x.den = 1;
         return;
     }
+    y0 = r8k_edge(&e->x, a, b);
     if (y0 == R8_EDGE_WIDE)
         y0 = edge_dda_wide(&e->x, a[0], a[1], b[0], b[1]);
     while (y0 < y) {
@@ -157,31 +152,9 @@ void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y0, r8_s1
     }
 }
 
-/* Set up edge e on the chain going in direction dir from polygon
- * position `from`, for row y: skips edges that end at or above row y,
- * and steps a started edge down to row y. */
-static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
-{
-    r8_u8 to = wrap(s, from, dir);
-    r8_u8 guard = s->n;
-    const r8_s16 *a, *b;
-    r8_s16 yb, y0;
-    yb = ROW_OF(VY(s, to));
-    while (yb <= y && guard--) {
-        from = to;
-        to = wrap(s, from, dir);
-        yb = ROW_OF(VY(s, to));
-    }
-    a = s->vp[from];
-    b = s->vp[to];
-    e->vi = to;
-    e->yend = yb;
-    y0 = R8_EDGE_WIDE;
-    if (b[1] > a[1])
-        y0 = r8k_edge(&e->x, a, b);    /* 16-bit, or a port's kernel */
-    if (y0 < y)                        /* (R8_EDGE_WIDE too) */
-        r8_edge_rare(e, a, b, y0, y);
-}
+/* Set up edge e for row y from polygon position `from` (r8kern.h's
+ * r8k_estart: its C reference is in kern.c, AVR's in edge.S). */
+#define edge_start(s, e, from, dir, y) r8k_estart(s, e, y, from)
 
 r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart)
 {
@@ -245,6 +218,7 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y);
 void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y)
 {
+    (void)dir;                     /* (e tells the chain) */
     edge_start(s, e, e->vi, dir, y);
 }
 #endif

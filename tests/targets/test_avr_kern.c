@@ -29,6 +29,8 @@ void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
+void r8k_estart_ref(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
+#define r8k_estart r8k_estart_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -40,6 +42,8 @@ void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #undef r8k_edge
 #undef r8k_project
 #undef r8k_fill
+#undef r8k_estart
+void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -222,6 +226,8 @@ static void test_fill_random(void)
             unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 10, (long)rem[i]);
 }
 
+static void test_estart_random(void);
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -232,5 +238,114 @@ int main(void)
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
+    RUN_TEST(test_estart_random);
     return UNITY_END();
+}
+
+/* ---- r8k_estart (edge.S) against kern.c's reference: random polygons
+ * of 3..9 vertices (screen-sized, with shared rows, wide or far out,
+ * near the 32760 row limit, non-convex and random), a random row y
+ * above the polygon's last (the contract: y < ybot), a random start
+ * position, either chain; the whole r8_scanx compared, the vertices
+ * untouched. ---- */
+#ifndef ESTART_CASES
+#define ESTART_CASES 5000
+#endif
+static void test_estart_random(void)
+{
+    static r8_s16 vr[R8_SCAN_MAXV][2], va[R8_SCAN_MAXV][2];
+    static r8_scanx sr, sa;
+    unsigned long i, n_left = 0, n_walk = 0, n_empty = 0, n_wide = 0, n_step = 0, n_2048 = 0;
+    for (i = 0; i < ESTART_CASES; i++) {
+        unsigned n = 3 + rndn(R8_SCAN_MAXV - 2), k, c = rndn(16);
+        r8_s16 ymax = R8_S16_MIN, ymin = 32767, y, ybot, ytop, cy = rnds(-3000, 3000);
+        r8_u8 from = (r8_u8)rndn(n), *p, left = (r8_u8)rndn(2);
+        r8_edge *er, *ea;
+        for (k = 0; k < n; k++) {
+            r8_s16 x, yy;
+            if (c < 8) {                    /* screen-sized */
+                x = rnds(-400, 2400);
+                yy = rnds(-300, 1300);
+            } else if (c < 11) {            /* rows shared: horizontal edges */
+                x = rnds(-400, 2400);
+                yy = (r8_s16)(16 * rnds(-2, 10) + rnds(-9, 9) * (rndn(3) == 0));
+            } else if (c < 13) {            /* wide: tall, or x far out */
+                x = rndn(2) ? rnds(-16400, 16400) : rnds(-400, 2400);
+                yy = rnds(-1500, 3000);
+            } else if (c < 14) {            /* near the row limit */
+                x = rnds(-400, 2400);
+                yy = rnds(32600, 32767);
+            } else {                        /* anything within +-3000 of cy */
+                x = (r8_s16)rnd();
+                yy = (r8_s16)(cy + rnds(-3000, 3000));
+            }
+            vr[k][0] = x;
+            vr[k][1] = yy;
+            if (yy > ymax)
+                ymax = yy;
+            if (yy < ymin)
+                ymin = yy;
+        }
+        ybot = R8_ROW_OF(ymax);
+        ytop = R8_ROW_OF(ymin);
+        if (ytop >= ybot)
+            continue;                       /* no row: never scanned */
+        y = rnds((r8_s16)(ytop - 2), (r8_s16)(ybot - 1));
+        if (rndn(2))
+            y = rnds((r8_s16)(ybot - 3 > ytop ? ybot - 3 : ytop), (r8_s16)(ybot - 1));
+        memcpy(va, vr, sizeof vr);
+        p = (r8_u8 *)&sr;
+        for (k = 0; k < sizeof sr; k++)
+            p[k] = (r8_u8)rnd();
+        sr.n = (r8_u8)n;
+        for (k = 0; k < n; k++)
+            sr.vp[k] = vr[k];
+        memcpy(&sa, &sr, sizeof sr);
+        for (k = 0; k < n; k++)
+            sa.vp[k] = va[k];
+        er = left ? &sr.l : &sr.r;
+        ea = left ? &sa.l : &sa.r;
+        r8k_estart_ref(&sr, er, y, from);
+        r8k_estart(&sa, ea, y, from);
+        for (k = 0; k < n; k++)             /* (pointers differ: compare through them) */
+            sa.vp[k] = vr[k];
+        if (memcmp(&sa, &sr, sizeof sr) != 0 || memcmp(va, vr, sizeof vr) != 0) {
+            print_case("r8k_estart", i);
+            unity_fail_int(__LINE__, "r8k_estart differs from the reference", (long)y, (long)from);
+        }
+        n_left += left;
+        {
+            r8_u8 to = er->vi, fr = (r8_u8)(left ? (to + 1u == n ? 0 : to + 1u) : (to == 0 ? n - 1u : to - 1u));
+            const r8_s16 *a = vr[fr], *b = vr[to];
+            if (fr != from)
+                n_walk++;
+            if (b[1] <= a[1])
+                n_empty++;
+            else {
+                r8_interp it;
+                r8_s16 y0 = r8k_edge_ref(&it, a, b);
+                if (y0 == R8_EDGE_WIDE)
+                    n_wide++;
+                else if (y0 < y)
+                    n_step++;
+            }
+            if (er->yend == 2048)
+                n_2048++;
+        }
+    }
+    unity_print("r8k_estart: left ");
+    unity_print_long((long)n_left);
+    unity_print(", walked ");
+    unity_print_long((long)n_walk);
+    unity_print(", empty ");
+    unity_print_long((long)n_empty);
+    unity_print(", wide ");
+    unity_print_long((long)n_wide);
+    unity_print(", stepped ");
+    unity_print_long((long)n_step);
+    unity_print(", row 2048 ");
+    unity_print_long((long)n_2048);
+    unity_print("\n");
+    if (n_left < 500 || n_walk < 200 || n_empty < 20 || n_wide < 50 || n_step < 200 || n_2048 < 20)
+        TEST_FAIL_MESSAGE("r8k_estart: a class of cases too rare to mean anything");
 }
