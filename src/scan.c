@@ -152,8 +152,8 @@ void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y)
     }
 }
 
-/* Set up edge e for row y from polygon position `from` (r8kern.h's
- * r8k_estart: its C reference is in kern.c, AVR's in edge.S). */
+/* Set up edge e for row y from polygon position `from` (r8scan.h's
+ * r8k_estart: its C reference is in scankern.c, AVR's in edge.S). */
 #define edge_start(s, e, from, dir, y) r8k_estart(s, e, y, from)
 
 r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart)
@@ -222,12 +222,26 @@ void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y)
     edge_start(s, e, e->vi, dir, y);
 }
 #endif
-void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+#ifdef __AVR__
+/* AVR: a page-1 band with no rows above it and Judd's test decided (the
+ * common case) goes to r8k_scanband (r8scan.h; scanband.c's C, or
+ * ports/avr/trap.S with R8_ASM_SCANFILL), the rest to this function */
+#define R8_SCANBAND 1
+#define R8_SCANX_FILL r8_scanx_fill_gen
+void r8_scanx_fill_gen(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+#else
+#define R8_SCANX_FILL r8_scanx_fill
+#endif
+void R8_SCANX_FILL(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 {
     r8_edge *l = &s->l, *r = &s->r;
     r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+#ifdef R8_SCANBAND
+    r8_s16 y = s->y;
+#else
     r8_s16 w = fb->width, y = s->y, by;
     r8_trapfill t;
+#endif
 #ifndef R8_PAGE1_ONLY
     if (fb->format != R8_FMT_PAGE1) {
         /* other layouts: one span at a time */
@@ -258,6 +272,21 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         s->y = y;
         return;
     }
+#ifdef R8_SCANBAND
+    /* (AVR) Judd's test row by row while undecided (each row then one
+     * row of r8k_scanband, its edges already restarted), then the rest
+     * of the band in one r8k_scanband */
+    while (y < lim && judd && !s->front) {
+        if (!r8_scan_row(s, y, judd))
+            return;
+        s->y = y;
+        r8k_scanband(s, fb, (r8_s16)(y + 1), level);
+        y++;
+    }
+    s->y = y;
+    if (y < lim)
+        r8k_scanband(s, fb, lim, level);
+#else
     /* this row's page and bit, and the level's 4 dither rows in the
      * order the rows come; then trapezoids: runs of rows on which
      * neither edge ends, filled by the kernel (r8kern.h) */
@@ -298,5 +327,25 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         y = stop;
     }
     s->y = y;
+#endif
 }
 
+#ifdef R8_SCANBAND
+void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+{
+#ifndef R8_PAGE1_ONLY
+    if (fb->format == R8_FMT_PAGE1)
+#endif
+    {
+        r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+        if (lim > fb->y0 + fb->rows)
+            lim = (r8_s16)(fb->y0 + fb->rows);
+        if (s->y >= fb->y0 && (!judd || s->front)) {
+            if (s->y < lim)
+                r8k_scanband(s, fb, lim, level);
+            return;
+        }
+    }
+    r8_scanx_fill_gen(s, ylimit, judd, fb, level);
+}
+#endif

@@ -59,6 +59,7 @@ r8k_edge:
     movw  r30, r24          /* Z = it */
     ld    r24, X+           /* ay */
     ld    r25, X
+.Ledge_body:                  /* (r8k_estart's entry: ax, ay, bx, by, Z = it) */
     sub   r20, r24          /* dy = by - ay */
     sbc   r21, r25
     ldi   r26, hi8(1424)    /* dy >= 1424: wide */
@@ -247,15 +248,17 @@ r8k_edge:
  * below row y (with y < s->ybot one is found within n - 1 steps, so the
  * reference's guard never stops the walk), set e->vi = to, e->yend =
  * that row, then the edge's DDA from a = s->vp[from] to b = s->vp[to]
- * through r8k_edge (above, by RCALL: the same section).  The rare cases
- * go to the reference's r8_edge_rare(e, a, b, y) (scan.c): an empty
- * edge (b[1] <= a[1]) and R8_EDGE_WIDE (r8k_edge leaves *it as it was:
- * a and b are parked in it->val and it->q for that); an edge whose first
- * row is above y is stepped down here (R8_INTERP_STEP per row).
+ * through r8k_edge (above, by RCALL past its loads: the same section).
+ * The rare cases go to the reference's r8_edge_rare(e, a, b, y)
+ * (scan.c): an empty edge (b[1] <= a[1]) and R8_EDGE_WIDE (r8k_edge
+ * leaves *it as it was: a and b are parked in it->val and it->q for
+ * that); an edge whose first row is above y is stepped down here
+ * (R8_INTERP_STEP per row).
  *
  * Registers: s r25:r24, e r23:r22, y r21:r20, from r18; r19 = to, r0 =
  * n, T = the left chain, X = a row, Z = a vertex; then Y = e and
- * r17:r16 = y (saved), r23:r22 = a, r21:r20 = b for r8k_edge.
+ * r17:r16 = y (saved), then r8k_edge's registers: r23:r22 = ax, r25:r24
+ * = ay, r19:r18 = bx, r21:r20 = by, Z = it.
  * r8_scanx offsets: vp 0, n 18, l 25, r 38; r8_edge: x 0, yend 10,
  * vi 12 (scan.c asserts them). */
     .section .text.r8k_edge,"ax",@progbits
@@ -328,21 +331,26 @@ r8k_estart:
     adc   r31, r1
     ld    r22, Z
     ldd   r23, Z+1
-    movw  r30, r22          /* ay */
-    ldd   r24, Z+2
-    ldd   r25, Z+3
-    movw  r30, r20          /* by */
+    movw  r30, r20          /* bx, by */
+    ld    r18, Z
+    ldd   r19, Z+1
     ldd   r26, Z+2
     ldd   r27, Z+3
-    cp    r24, r26
-    cpc   r25, r27
-    brge  .Le_rare          /* by <= ay: empty edge */
-    st    Y, r22            /* a, b parked for R8_EDGE_WIDE */
+    movw  r30, r22
+    st    Y, r22            /* a, b parked (R8_EDGE_WIDE, empty edge) */
     std   Y+1, r23
     std   Y+2, r20
     std   Y+3, r21
-    movw  r24, r28
-    rcall r8k_edge          /* r16, r17, Y kept (ABI) */
+    ld    r22, Z            /* ax, ay */
+    ldd   r23, Z+1
+    ldd   r24, Z+2
+    ldd   r25, Z+3
+    cp    r24, r26
+    cpc   r25, r27
+    brge  .Le_wide          /* by <= ay: empty edge */
+    movw  r20, r26
+    movw  r30, r28          /* it = e */
+    rcall .Ledge_body       /* r8k_edge past its loads; r16, r17, Y kept */
     cp    r24, r16          /* y0 >= y: done */
     cpc   r25, r17
     brlt  .Le_above

@@ -16,8 +16,6 @@
 #undef R8_ASM_PROJECT
 #undef R8_ASM_EDGE
 #undef R8_ASM_FILL
-#undef R8_ASM_ESTART
-#define r8k_estart ref_estart
 #define r8k_trap ref_trap
 #define r8k_xform ref_xform
 #define r8k_project ref_project
@@ -29,7 +27,6 @@
 #undef r8k_project
 #undef r8k_edge
 #undef r8k_fill
-#undef r8k_estart
 void ref_fill(r8_u8 *p, r8_u8 v, unsigned n);
 r8_s16 ref_edge(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void ref_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);

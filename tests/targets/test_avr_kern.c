@@ -29,8 +29,6 @@ void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
-void r8k_estart_ref(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
-#define r8k_estart r8k_estart_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -42,8 +40,6 @@ void r8k_estart_ref(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
 #undef r8k_edge
 #undef r8k_project
 #undef r8k_fill
-#undef r8k_estart
-void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -227,6 +223,7 @@ static void test_fill_random(void)
 }
 
 static void test_estart_random(void);
+static void test_scanband_random(void);
 
 int main(void)
 {
@@ -239,10 +236,30 @@ int main(void)
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_estart_random);
+    RUN_TEST(test_scanband_random);
     return UNITY_END();
 }
 
-/* ---- r8k_estart (edge.S) against kern.c's reference: random polygons
+/* ---- the scan kernels (src/scankern.c's and scanband.c's references,
+ * renamed, calling the references of r8k_trap and r8k_edge) ---- */
+#define r8k_trap r8k_trap_ref
+#define r8k_edge r8k_edge_ref
+#define r8k_estart r8k_estart_ref
+#define r8k_scanfill r8k_scanfill_ref
+#define r8k_scanband r8k_scanband_ref
+#undef R8_ASM_ESTART
+#undef R8_ASM_SCANFILL
+#include "scankern.c"
+#include "scanband.c"
+#undef r8k_trap
+#undef r8k_edge
+#undef r8k_estart
+#undef r8k_scanfill
+#undef r8k_scanband
+void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
+void r8k_scanband(r8_scanx *s, const r8_fb *fb, r8_s16 lim, r8_u8 level);
+
+/* ---- r8k_estart (edge.S) against scankern.c's reference: random polygons
  * of 3..9 vertices (screen-sized, with shared rows, wide or far out,
  * near the 32760 row limit, non-convex and random), a random row y
  * above the polygon's last (the contract: y < ybot), a random start
@@ -348,4 +365,113 @@ static void test_estart_random(void)
     unity_print("\n");
     if (n_left < 500 || n_walk < 200 || n_empty < 20 || n_wide < 50 || n_step < 200 || n_2048 < 20)
         TEST_FAIL_MESSAGE("r8k_estart: a class of cases too rare to mean anything");
+}
+
+/* ---- r8k_scanband (trap.S, with r8k_scanfill) against the reference:
+ * random polygons of 3..7 vertices over and around a page-1 band of 1..4
+ * pages and 8..160 columns (at a random offset between guard bytes),
+ * begun (r8_scanx_begin) at a random row of the band, filled from there
+ * to a random limit at a random level (0..20); the band window, guards
+ * included, and the whole r8_scanx compared.  Counted: trapezoids of
+ * one row, of several, edge restarts, calls of more than one trapezoid,
+ * spans with page groups (7+ rows, 16+ columns). ---- */
+#ifndef SCANBAND_CASES
+#define SCANBAND_CASES 1500
+#endif
+#define SB_WIN (GUARD + 255 + 4 * 160 + GUARD)
+static r8_u8 sb_ref[SB_WIN], sb_asm[SB_WIN];
+static void test_scanband_random(void)
+{
+    static r8_s16 v[7][2];
+    static r8_scanx sr, sa;
+    unsigned long i, n_run = 0, n_restart = 0, n_multi = 0, n_group = 0, n_level = 0;
+    for (i = 0; i < SCANBAND_CASES; i++) {
+        unsigned n = 3 + rndn(5), k, pages = 1 + rndn(4), len, off = rndn(256);
+        r8_s16 w = (r8_s16)(8 + rndn(153)), y0 = rnds(-20, 60), rows = (r8_s16)(8 * pages);
+        r8_s16 lim, ystart, ylimit;
+        r8_u8 level = (r8_u8)rndn(21), b, l_vi, r_vi;
+        r8_fb fr, fa;
+        unsigned c = rndn(4);
+        for (k = 0; k < n; k++) {
+            if (c == 0) {                   /* around the band */
+                v[k][0] = rnds(-40 * 16, (r8_s16)((w + 40) * 16));
+                v[k][1] = rnds((r8_s16)((y0 - 12) * 16), (r8_s16)((y0 + rows + 12) * 16));
+            } else if (c == 1) {            /* tall and wide: page groups */
+                v[k][0] = rnds(-8 * 16, (r8_s16)((w + 8) * 16));
+                v[k][1] = rnds((r8_s16)((y0 - 40) * 16), (r8_s16)((y0 + rows + 40) * 16));
+            } else if (c == 2) {            /* small: many short trapezoids */
+                v[k][0] = (r8_s16)(rnds(0, (r8_s16)(w * 16)) + rnds(-60, 60));
+                v[k][1] = (r8_s16)(rnds((r8_s16)(y0 * 16), (r8_s16)((y0 + rows) * 16)) + rnds(-60, 60));
+            } else {                        /* far out */
+                v[k][0] = rnds(-3000, 3000);
+                v[k][1] = rnds((r8_s16)((y0 - 200) * 16), (r8_s16)((y0 + rows + 200) * 16));
+            }
+        }
+        if (c == 1 && n >= 4) {             /* a convex quad over the band */
+            r8_s16 xl = rnds(-100, (r8_s16)(w * 4)), xr = rnds((r8_s16)(w * 8), (r8_s16)(w * 20));
+            v[0][0] = xl; v[0][1] = (r8_s16)((y0 - 20) * 16 + rnds(0, 15));
+            v[1][0] = xr; v[1][1] = (r8_s16)((y0 - 10) * 16 + rnds(0, 15));
+            v[2][0] = (r8_s16)(xr + rnds(-40, 40)); v[2][1] = (r8_s16)((y0 + rows + 10) * 16);
+            v[3][0] = (r8_s16)(xl + rnds(-40, 40)); v[3][1] = (r8_s16)((y0 + rows + 5) * 16);
+            n = 4;
+        }
+        memset(&sr, 0, sizeof sr);
+        for (k = 0; k < n; k++)
+            sr.vp[k] = v[k];
+        ystart = (r8_s16)(y0 + rndn((unsigned)rows));
+        if (!r8_scanx_begin(&sr, (r8_u8)n, ystart))
+            continue;
+        ylimit = rndn(3) ? (r8_s16)(y0 + rows + 5) : (r8_s16)(sr.y + 1 + rndn(rows));
+        lim = sr.ybot < ylimit ? sr.ybot : ylimit;
+        if (lim > y0 + rows)
+            lim = (r8_s16)(y0 + rows);
+        if (sr.y < y0 || sr.y >= lim)
+            continue;
+        memcpy(&sa, &sr, sizeof sr);
+        len = GUARD + off + pages * (unsigned)w + GUARD;
+        b = (r8_u8)rnd();
+        for (k = 0; k < len; k++) {
+            b = (r8_u8)(b + 151u);
+            sb_ref[k] = b;
+        }
+        memcpy(sb_asm, sb_ref, len);
+        fr.buf = sb_ref + GUARD + off;
+        fr.width = w;
+        fr.height = 200;
+        fr.y0 = y0;
+        fr.rows = rows;
+        fr.format = R8_FMT_PAGE1;
+        fa = fr;
+        fa.buf = sb_asm + GUARD + off;
+        l_vi = sr.l.vi;
+        r_vi = sr.r.vi;
+        r8k_scanband_ref(&sr, &fr, lim, level);
+        r8k_scanband(&sa, &fa, lim, level);
+        if (memcmp(sb_asm, sb_ref, len) != 0 || memcmp(&sa, &sr, sizeof sr) != 0) {
+            print_case("r8k_scanband", i);
+            unity_fail_int(__LINE__, "r8k_scanband differs from the reference", (long)lim, (long)level);
+        }
+        n_run++;
+        if (sr.l.vi != l_vi || sr.r.vi != r_vi)
+            n_restart++;
+        if (sr.l.vi != l_vi && sr.r.vi != r_vi)
+            n_multi++;
+        if (c == 1 && n == 4 && w >= 24)
+            n_group++;
+        if (level > 16)
+            n_level++;
+    }
+    unity_print("r8k_scanband: ");
+    unity_print_long((long)n_run);
+    unity_print(" filled, restarts ");
+    unity_print_long((long)n_restart);
+    unity_print(", both edges ");
+    unity_print_long((long)n_multi);
+    unity_print(", quads over the band ");
+    unity_print_long((long)n_group);
+    unity_print(", level > 16 ");
+    unity_print_long((long)n_level);
+    unity_print("\n");
+    if (n_run < 600 || n_restart < 100 || n_multi < 30 || n_group < 50 || n_level < 40)
+        TEST_FAIL_MESSAGE("r8k_scanband: a class of cases too rare to mean anything");
 }
