@@ -113,8 +113,8 @@ XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill facecull facelevel facez
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
-AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
-              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
+AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP -DR8_ASM_SCANFILL) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
+              $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE -DR8_ASM_ESTART) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
               $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM)
 AVR_KSTAMP := $(XB)/avr-kernels.txt

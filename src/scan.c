@@ -39,12 +39,6 @@ r8_s16 r8_row_of(r8_s16 y)
 #define VX(s, i) ((s)->vp[i][0])
 #define VY(s, i) ((s)->vp[i][1])
 
-static r8_u8 wrap(const r8_scanx *s, r8_u8 i, int dir)
-{
-    if (dir > 0)
-        return (r8_u8)(i + 1 == s->n ? 0 : i + 1);
-    return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
-}
 
 /* Column DDA of the edge (ax, ay) -> (bx, by), by > ay, on its first row
  * y0 = row_of(ay), in 32 bits: the edges r8k_edge (r8kern.h, the 16-bit
@@ -133,25 +127,14 @@ static r8_s16 edge_dda_wide(r8_interp *it, r8_s16 ax, r8_s16 ay, r8_s16 bx, r8_s
     return y0;
 }
 
-/* Set up edge e on the chain going in direction dir from polygon
- * position `from`, for row y: skips edges that end at or above row y,
- * and steps a started edge down to row y. */
-static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
+/* The rare ends of edge_start, out of line so that the common path
+ * keeps few registers (AVR: a short prologue): an empty edge (b at or
+ * above a, only for non-convex input), an edge r8k_edge does not take
+ * (R8_EDGE_WIDE), and an edge starting above row y, stepped down to it.
+ * (The 16-bit set-up runs again here: these cases are rare.) */
+void r8_edge_rare(r8_edge *e, const r8_s16 *a, const r8_s16 *b, r8_s16 y)
 {
-    r8_u8 to = wrap(s, from, dir);
-    r8_u8 guard = s->n;
-    const r8_s16 *a, *b;
-    r8_s16 yb, y0;
-    yb = ROW_OF(VY(s, to));
-    while (yb <= y && guard--) {
-        from = to;
-        to = wrap(s, from, dir);
-        yb = ROW_OF(VY(s, to));
-    }
-    a = s->vp[from];
-    b = s->vp[to];
-    e->vi = to;
-    e->yend = yb;
+    r8_s16 y0;
     if (b[1] <= a[1]) {
         /* only for non-convex input: an empty edge at b */
         e->x.val = r8_row_of(b[0]);
@@ -160,7 +143,7 @@ static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
         e->x.den = 1;
         return;
     }
-    y0 = r8k_edge(&e->x, a, b);    /* 16-bit, or a port's kernel */
+    y0 = r8k_edge(&e->x, a, b);
     if (y0 == R8_EDGE_WIDE)
         y0 = edge_dda_wide(&e->x, a[0], a[1], b[0], b[1]);
     while (y0 < y) {
@@ -168,6 +151,10 @@ static void edge_start(r8_scanx *s, r8_edge *e, r8_u8 from, int dir, r8_s16 y)
         y0++;
     }
 }
+
+/* Set up edge e for row y from polygon position `from` (r8scan.h's
+ * r8k_estart: its C reference is in scankern.c, AVR's in edge.S). */
+#define edge_start(s, e, from, dir, y) r8k_estart(s, e, y, from)
 
 r8_s16 r8_scanx_begin(r8_scanx *s, r8_u8 n, r8_s16 ystart)
 {
@@ -231,15 +218,30 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y);
 void r8_scanx_edge(r8_scanx *s, r8_edge *e, int dir, r8_s16 y)
 {
+    (void)dir;                     /* (e tells the chain) */
     edge_start(s, e, e->vi, dir, y);
 }
 #endif
-void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+#ifdef __AVR__
+/* AVR: a page-1 band with no rows above it and Judd's test decided (the
+ * common case) goes to r8k_scanband (r8scan.h; scanband.c's C, or
+ * ports/avr/trap.S with R8_ASM_SCANFILL), the rest to this function */
+#define R8_SCANBAND 1
+#define R8_SCANX_FILL r8_scanx_fill_gen
+void r8_scanx_fill_gen(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+#else
+#define R8_SCANX_FILL r8_scanx_fill
+#endif
+void R8_SCANX_FILL(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
 {
     r8_edge *l = &s->l, *r = &s->r;
     r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+#ifdef R8_SCANBAND
+    r8_s16 y = s->y;
+#else
     r8_s16 w = fb->width, y = s->y, by;
     r8_trapfill t;
+#endif
 #ifndef R8_PAGE1_ONLY
     if (fb->format != R8_FMT_PAGE1) {
         /* other layouts: one span at a time */
@@ -270,6 +272,21 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         s->y = y;
         return;
     }
+#ifdef R8_SCANBAND
+    /* (AVR) Judd's test row by row while undecided (each row then one
+     * row of r8k_scanband, its edges already restarted), then the rest
+     * of the band in one r8k_scanband */
+    while (y < lim && judd && !s->front) {
+        if (!r8_scan_row(s, y, judd))
+            return;
+        s->y = y;
+        r8k_scanband(s, fb, (r8_s16)(y + 1), level);
+        y++;
+    }
+    s->y = y;
+    if (y < lim)
+        r8k_scanband(s, fb, lim, level);
+#else
     /* this row's page and bit, and the level's 4 dither rows in the
      * order the rows come; then trapezoids: runs of rows on which
      * neither edge ends, filled by the kernel (r8kern.h) */
@@ -310,5 +327,25 @@ void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
         y = stop;
     }
     s->y = y;
+#endif
 }
 
+#ifdef R8_SCANBAND
+void r8_scanx_fill(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+{
+#ifndef R8_PAGE1_ONLY
+    if (fb->format == R8_FMT_PAGE1)
+#endif
+    {
+        r8_s16 lim = s->ybot < ylimit ? s->ybot : ylimit;
+        if (lim > fb->y0 + fb->rows)
+            lim = (r8_s16)(fb->y0 + fb->rows);
+        if (s->y >= fb->y0 && (!judd || s->front)) {
+            if (s->y < lim)
+                r8k_scanband(s, fb, lim, level);
+            return;
+        }
+    }
+    r8_scanx_fill_gen(s, ylimit, judd, fb, level);
+}
+#endif

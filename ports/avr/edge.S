@@ -59,6 +59,7 @@ r8k_edge:
     movw  r30, r24          /* Z = it */
     ld    r24, X+           /* ay */
     ld    r25, X
+.Ledge_body:                  /* (r8k_estart's entry: ax, ay, bx, by, Z = it) */
     sub   r20, r24          /* dy = by - ay */
     sbc   r21, r25
     ldi   r26, hi8(1424)    /* dy >= 1424: wide */
@@ -237,3 +238,176 @@ r8k_edge:
     ldi   r25, 0x08
     rjmp  41b
     .size r8k_edge, .-r8k_edge
+
+/* r8k_estart (src/r8scan.h): scan.c's edge_start, its C reference.
+ *
+ *   void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
+ *
+ * e is &s->l (the left chain: positions backwards) or &s->r (forwards).
+ * Walk from `from` to the first vertex `to` whose row R8_ROW_OF(y) is
+ * below row y (with y < s->ybot one is found within n - 1 steps, so the
+ * reference's guard never stops the walk), set e->vi = to, e->yend =
+ * that row, then the edge's DDA from a = s->vp[from] to b = s->vp[to]
+ * through r8k_edge (above, by RCALL past its loads: the same section).
+ * The rare cases go to the reference's r8_edge_rare(e, a, b, y)
+ * (scan.c): an empty edge (b[1] <= a[1]) and R8_EDGE_WIDE (r8k_edge
+ * leaves *it as it was: a and b are parked in it->val and it->q for
+ * that); an edge whose first row is above y is stepped down here
+ * (R8_INTERP_STEP per row).
+ *
+ * Registers: s r25:r24, e r23:r22, y r21:r20, from r18; r19 = to, r0 =
+ * n, T = the left chain, X = a row, Z = a vertex; then Y = e and
+ * r17:r16 = y (saved), then r8k_edge's registers: r23:r22 = ax, r25:r24
+ * = ay, r19:r18 = bx, r21:r20 = by, Z = it.
+ * r8_scanx offsets: vp 0, n 18, l 25, r 38; r8_edge: x 0, yend 10,
+ * vi 12 (scan.c asserts them). */
+    .section .text.r8k_edge,"ax",@progbits
+    .global r8k_estart
+    .type   r8k_estart, @function
+r8k_estart:
+    movw  r30, r24
+    ldd   r0, Z+18          /* n */
+    adiw  r30, 25           /* &s->l */
+    clt
+    cp    r30, r22
+    cpc   r31, r23
+    brne  .Le_walk
+    set                     /* the left chain */
+.Le_walk:
+    mov   r19, r18          /* to = wrap(from) */
+    brts  2f
+    inc   r19
+    cp    r19, r0
+    brne  3f
+    clr   r19
+    rjmp  3f
+2:  cpse  r19, r1
+    rjmp  4f
+    mov   r19, r0
+4:  dec   r19
+3:  movw  r30, r24          /* Z = s->vp[to] */
+    add   r30, r19
+    adc   r31, r1
+    add   r30, r19
+    adc   r31, r1
+    ld    r26, Z
+    ldd   r27, Z+1
+    movw  r30, r26
+    ldd   r26, Z+2          /* its y */
+    ldd   r27, Z+3
+    adiw  r26, 7            /* R8_ROW_OF: 2048 past 32760 */
+    brvs  5f
+    asr   r27
+    ror   r26
+    asr   r27
+    ror   r26
+    asr   r27
+    ror   r26
+    asr   r27
+    ror   r26
+6:  cp    r20, r26          /* y < row: this edge */
+    cpc   r21, r27
+    brlt  7f
+    mov   r18, r19          /* else on to the next one */
+    rjmp  .Le_walk
+5:  ldi   r26, 0x00
+    ldi   r27, 0x08
+    rjmp  6b
+
+7:  push  r28
+    push  r29
+    push  r16
+    push  r17
+    movw  r28, r22          /* Y = e */
+    movw  r16, r20          /* y */
+    std   Y+10, r26         /* e->yend, e->vi */
+    std   Y+11, r27
+    std   Y+12, r19
+    movw  r20, r30          /* b */
+    movw  r30, r24          /* a = s->vp[from] */
+    add   r30, r18
+    adc   r31, r1
+    add   r30, r18
+    adc   r31, r1
+    ld    r22, Z
+    ldd   r23, Z+1
+    movw  r30, r20          /* bx, by */
+    ld    r18, Z
+    ldd   r19, Z+1
+    ldd   r26, Z+2
+    ldd   r27, Z+3
+    movw  r30, r22
+    st    Y, r22            /* a, b parked (R8_EDGE_WIDE, empty edge) */
+    std   Y+1, r23
+    std   Y+2, r20
+    std   Y+3, r21
+    ld    r22, Z            /* ax, ay */
+    ldd   r23, Z+1
+    ldd   r24, Z+2
+    ldd   r25, Z+3
+    cp    r24, r26
+    cpc   r25, r27
+    brge  .Le_wide          /* by <= ay: empty edge */
+    movw  r20, r26
+    movw  r30, r28          /* it = e */
+    rcall .Ledge_body       /* r8k_edge past its loads; r16, r17, Y kept */
+    cp    r24, r16          /* y0 >= y: done */
+    cpc   r25, r17
+    brlt  .Le_above
+.Le_done:
+    pop   r17
+    pop   r16
+    pop   r29
+    pop   r28
+    ret
+
+.Le_above:
+    cpi   r24, 0x00         /* R8_EDGE_WIDE (0x8000) */
+    ldi   r26, 0x80
+    cpc   r25, r26
+    breq  .Le_wide
+8:  ld    r18, Y            /* R8_INTERP_STEP: val += q */
+    ldd   r19, Y+1
+    ldd   r26, Y+2
+    ldd   r27, Y+3
+    add   r18, r26
+    adc   r19, r27
+    ldd   r20, Y+4          /* err += r */
+    ldd   r21, Y+5
+    ldd   r26, Y+6
+    ldd   r27, Y+7
+    add   r20, r26
+    adc   r21, r27
+    ldd   r26, Y+8          /* err >= den: err -= den, val++ */
+    ldd   r27, Y+9
+    cp    r20, r26
+    cpc   r21, r27
+    brlo  9f
+    sub   r20, r26
+    sbc   r21, r27
+    subi  r18, 0xFF
+    sbci  r19, 0xFF
+9:  st    Y, r18
+    std   Y+1, r19
+    std   Y+4, r20
+    std   Y+5, r21
+    adiw  r24, 1            /* until y0 == y */
+    cp    r24, r16
+    cpc   r25, r17
+    brlt  8b
+    rjmp  .Le_done
+
+.Le_wide:
+    ld    r22, Y            /* a, b back */
+    ldd   r23, Y+1
+    ldd   r20, Y+2
+    ldd   r21, Y+3
+.Le_rare:                     /* r8_edge_rare(e, a, b, y) */
+    movw  r24, r28
+    movw  r18, r16
+    pop   r17
+    pop   r16
+    pop   r29
+    pop   r28
+    jmp   r8_edge_rare
+    .size r8k_estart, .-r8k_estart

@@ -818,6 +818,9 @@ fin:
     std   Z+1, LVH
     std   Z+4, LEL
     std   Z+5, LEH
+    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
+    sbrc  r0, 0
+    rjmp  .Lsf_next
     pop   r29
     pop   r28
     pop   r17
@@ -938,6 +941,282 @@ oneg:
     rjmp  1b
 
     .size r8k_trap, .-r8k_trap
+
+/* r8k_scanband (src/r8scan.h): r8_scanx_fill's page-1 set-up, then
+ * r8k_scanfill; its C reference in src/kern.c.
+ *
+ *   void r8k_scanband(r8_scanx *s, const r8_fb *fb, r8_s16 lim, r8_u8 level);
+ *
+ * s->y in [fb->y0, lim); t (r8k_sft, static) gets page = fb->buf +
+ * ((s->y - fb->y0) >> 3) fb->width (16-bit arithmetic: rows - y0 <
+ * 2048), m = r8_fb_bit[by & 7], k = s->y & 3, w = fb->width and
+ * pat[0..3] = r8_fb_dither_tab[4 min(level, 16) + 0..3]; then on to
+ * r8k_scanfill(s, &r8k_sft, lim).  r8_fb offsets: buf 0, width 2, y0 6. */
+    .global r8k_scanband
+    .type   r8k_scanband, @function
+r8k_scanband:
+    movw  r30, r24          /* y */
+    ldd   r26, Z+21
+    ldd   r27, Z+22
+    mov   r19, r26          /* k = y & 3 */
+    andi  r19, 3
+    sts   r8k_sft+3, r19
+    movw  r30, r22          /* by = y - fb->y0 */
+    ldd   r19, Z+6
+    sub   r26, r19
+    ldd   r19, Z+7
+    sbc   r27, r19
+    ldd   r22, Z+2          /* w */
+    ldd   r23, Z+3
+    sts   r8k_sft+8, r22
+    sts   r8k_sft+9, r23
+    ld    r0, Z             /* buf */
+    ldd   r31, Z+1
+    mov   r30, r0
+    mov   r19, r26          /* m = 1 << (by & 7) */
+    andi  r19, 7
+    ldi   r27, 1
+    rjmp  2f
+1:  lsl   r27
+2:  dec   r19
+    brpl  1b
+    sts   r8k_sft+2, r27
+    lsr   r26               /* page = buf + (by >> 3) w (by < 2048) */
+    lsr   r26
+    lsr   r26
+    mul   r26, r22
+    add   r30, r0
+    adc   r31, r1
+    mul   r26, r23
+    add   r31, r0
+    clr   r1
+    sts   r8k_sft, r30
+    sts   r8k_sft+1, r31
+    cpi   r18, 17           /* the level's 4 rows */
+    brlo  3f
+    ldi   r18, 16
+3:  ldi   r30, lo8(r8_fb_dither_tab)
+    ldi   r31, hi8(r8_fb_dither_tab)
+    lsl   r18
+    lsl   r18
+    add   r30, r18
+    adc   r31, r1
+    lpm   r0, Z+
+    sts   r8k_sft+4, r0
+    lpm   r0, Z+
+    sts   r8k_sft+5, r0
+    lpm   r0, Z+
+    sts   r8k_sft+6, r0
+    lpm   r0, Z
+    sts   r8k_sft+7, r0
+    ldi   r22, lo8(r8k_sft)
+    ldi   r23, hi8(r8k_sft)
+    rjmp  r8k_scanfill
+    .size r8k_scanband, .-r8k_scanband
+
+/* r8k_scanfill (src/r8scan.h): the trapezoid loop of scan.c's
+ * r8_scanx_fill, its C reference in src/kern.c.
+ *
+ *   void r8k_scanfill(r8_scanx *s, r8_trapfill *t, r8_s16 lim);
+ *
+ * From row s->y (< lim) to lim: restart an edge that ended (r8k_estart,
+ * edge.S), fill the rows to the first end of either edge or lim (at
+ * most 255 at a time) as r8k_trap does, and on; s->y = lim at the end.
+ * A one-row trapezoid goes through `one` (its state in memory); longer
+ * ones through the register body above, entered at grp with the stack
+ * as r8k_trap's entry leaves it (the l and r pointers for fin): fin,
+ * seeing r8k_sf+4 set, writes both edges back and comes back here
+ * (.Lsf_next) instead of returning.  r2..r17 are saved at the first such
+ * trapezoid of a call (a call of one-row trapezoids saves none), which
+ * sets that flag.  r8k_sf: s (2 bytes), lim (2), the flag (1).
+ * r8_scanx offsets: y 21, l 25 (x 25, yend 35, vi 37), r 38 (x 38,
+ * yend 48, vi 50) (src/kern.c asserts them). */
+    .global r8k_scanfill
+    .type   r8k_scanfill, @function
+r8k_scanfill:
+    push  r28
+    push  r29
+    sts   r8k_sf, r24
+    sts   r8k_sf+1, r25
+    sts   r8k_sf+2, r20
+    sts   r8k_sf+3, r21
+    sts   r8k_sf+4, r1      /* r2..r17 not saved yet */
+    movw  r28, r22          /* Y = t */
+    movw  r30, r24          /* Z = s, r21:r20 = y */
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+.Lsf_top:
+    ldd   r24, Z+35         /* y >= l->yend: restart l */
+    ldd   r25, Z+36
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  1f
+    movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    ldd   r18, Z+37
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+1:  ldd   r24, Z+48         /* y >= r->yend: restart r */
+    ldd   r25, Z+49
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  2f
+    movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-38)
+    sbci  r23, hi8(-38)
+    ldd   r18, Z+50
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    ldd   r24, Z+48
+    ldd   r25, Z+49
+2:  lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
+    lds   r27, r8k_sf+3
+    cp    r24, r26
+    cpc   r25, r27
+    brlt  3f
+    movw  r24, r26
+3:  ldd   r26, Z+35
+    ldd   r27, Z+36
+    cp    r26, r24
+    cpc   r27, r25
+    brge  4f
+    movw  r24, r26
+4:  movw  r26, r24          /* rows = stop - y (>= 1), at most 255 */
+    sub   r26, r20
+    sbc   r27, r21
+    tst   r27
+    breq  5f
+    ldi   r26, 255
+    movw  r24, r20
+    subi  r24, lo8(-255)
+    sbci  r25, hi8(-255)
+5:  std   Z+21, r24         /* s->y = stop */
+    std   Z+22, r25
+    movw  r22, r30          /* l, r */
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    movw  r20, r30
+    subi  r20, lo8(-38)
+    sbci  r21, hi8(-38)
+    cpi   r26, 1
+    brne  .Lsf_rows
+    movw  r24, r28          /* one row: in memory (r2..r17 untouched) */
+    rcall one
+    rjmp  .Lsf_next
+.Lsf_rows:
+    mov   ROWS, r26
+    lds   r30, r8k_sf+4     /* the first of these rows in this call: */
+    tst   r30               /* save r2..r17 now */
+    brne  6f
+    push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r6
+    push  r7
+    push  r8
+    push  r9
+    push  r10
+    push  r11
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    ldi   r30, 1            /* saved, and fin comes back */
+    sts   r8k_sf+4, r30
+6:  push  r22               /* as r8k_trap's entry: l, r for fin */
+    push  r23
+    push  r20
+    push  r21
+    movw  r30, r22
+    ld    LVL, Z+
+    ld    LVH, Z+
+    ld    LNQL, Z+
+    ld    LNQH, Z+
+    ld    LEL, Z+
+    ld    LEH, Z+
+    ld    LRL, Z+
+    ld    LRH, Z+
+    ld    LDL, Z+
+    ld    LDH, Z
+    com   LNQL
+    com   LNQH
+    movw  r30, r20
+    ld    RVL, Z+
+    ld    RVH, Z+
+    ld    RNQL, Z+
+    ld    RNQH, Z+
+    ld    REL, Z+
+    ld    REH, Z+
+    ld    RRL, Z+
+    ld    RRH, Z+
+    ld    RDL, Z+
+    ld    RDH, Z
+    com   RNQL
+    com   RNQH
+    ldd   M, Y+2
+    ldd   K, Y+3
+    rjmp  grp
+.Lsf_next:                  /* (from fin: both edges written back) */
+    clr   r1
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    lds   r24, r8k_sf+2
+    lds   r25, r8k_sf+3
+    cp    r20, r24
+    cpc   r21, r25
+    brge  7f
+    rjmp  .Lsf_top
+7:  lds   r0, r8k_sf+4
+    tst   r0
+    breq  8f
+    sts   r8k_sf+4, r1
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    pop   r11
+    pop   r10
+    pop   r9
+    pop   r8
+    pop   r7
+    pop   r6
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
+8:  pop   r29
+    pop   r28
+    ret
+    .size r8k_scanfill, .-r8k_scanfill
+
+/* r8k_scanfill's s, lim and flag (fin returns to it when set) */
+    .section .bss.r8k_sf,"aw",@nobits
+    .type   r8k_sf, @object
+    .size   r8k_sf, 5
+r8k_sf:
+    .zero   5
+/* r8k_scanband's r8_trapfill */
+    .section .bss.r8k_sft,"aw",@nobits
+    .type   r8k_sft, @object
+    .size   r8k_sft, 10
+r8k_sft:
+    .zero   10
 
 /* a group's interior [A, B) for its rows (A, B: 2 bytes each), its row
  * g - 1 (left val, err, right val, err), n = g - 1 and the flags of

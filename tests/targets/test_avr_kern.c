@@ -356,6 +356,8 @@ static void test_zsum_random(void)
     if (hit[0] < 300 || hit[1] < 3000)
         unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
 }
+static void test_estart_random(void);
+static void test_scanband_random(void);
 
 int main(void)
 {
@@ -370,5 +372,243 @@ int main(void)
     RUN_TEST(test_cull_random);
     RUN_TEST(test_level_random);
     RUN_TEST(test_zsum_random);
+    RUN_TEST(test_estart_random);
+    RUN_TEST(test_scanband_random);
     return UNITY_END();
+}
+
+/* ---- the scan kernels (src/scankern.c's and scanband.c's references,
+ * renamed, calling the references of r8k_trap and r8k_edge) ---- */
+#define r8k_trap r8k_trap_ref
+#define r8k_edge r8k_edge_ref
+#define r8k_estart r8k_estart_ref
+#define r8k_scanfill r8k_scanfill_ref
+#define r8k_scanband r8k_scanband_ref
+#undef R8_ASM_ESTART
+#undef R8_ASM_SCANFILL
+#include "scankern.c"
+#include "scanband.c"
+#undef r8k_trap
+#undef r8k_edge
+#undef r8k_estart
+#undef r8k_scanfill
+#undef r8k_scanband
+void r8k_estart(r8_scanx *s, r8_edge *e, r8_s16 y, r8_u8 from);
+void r8k_scanband(r8_scanx *s, const r8_fb *fb, r8_s16 lim, r8_u8 level);
+
+/* ---- r8k_estart (edge.S) against scankern.c's reference: random polygons
+ * of 3..9 vertices (screen-sized, with shared rows, wide or far out,
+ * near the 32760 row limit, non-convex and random), a random row y
+ * above the polygon's last (the contract: y < ybot), a random start
+ * position, either chain; the whole r8_scanx compared, the vertices
+ * untouched. ---- */
+#ifndef ESTART_CASES
+#define ESTART_CASES 5000
+#endif
+static void test_estart_random(void)
+{
+    static r8_s16 vr[R8_SCAN_MAXV][2], va[R8_SCAN_MAXV][2];
+    static r8_scanx sr, sa;
+    unsigned long i, n_left = 0, n_walk = 0, n_empty = 0, n_wide = 0, n_step = 0, n_2048 = 0;
+    for (i = 0; i < ESTART_CASES; i++) {
+        unsigned n = 3 + rndn(R8_SCAN_MAXV - 2), k, c = rndn(16);
+        r8_s16 ymax = R8_S16_MIN, ymin = 32767, y, ybot, ytop, cy = rnds(-3000, 3000);
+        r8_u8 from = (r8_u8)rndn(n), *p, left = (r8_u8)rndn(2);
+        r8_edge *er, *ea;
+        for (k = 0; k < n; k++) {
+            r8_s16 x, yy;
+            if (c < 8) {                    /* screen-sized */
+                x = rnds(-400, 2400);
+                yy = rnds(-300, 1300);
+            } else if (c < 11) {            /* rows shared: horizontal edges */
+                x = rnds(-400, 2400);
+                yy = (r8_s16)(16 * rnds(-2, 10) + rnds(-9, 9) * (rndn(3) == 0));
+            } else if (c < 13) {            /* wide: tall, or x far out */
+                x = rndn(2) ? rnds(-16400, 16400) : rnds(-400, 2400);
+                yy = rnds(-1500, 3000);
+            } else if (c < 14) {            /* near the row limit */
+                x = rnds(-400, 2400);
+                yy = rnds(32600, 32767);
+            } else {                        /* anything within +-3000 of cy */
+                x = (r8_s16)rnd();
+                yy = (r8_s16)(cy + rnds(-3000, 3000));
+            }
+            vr[k][0] = x;
+            vr[k][1] = yy;
+            if (yy > ymax)
+                ymax = yy;
+            if (yy < ymin)
+                ymin = yy;
+        }
+        ybot = R8_ROW_OF(ymax);
+        ytop = R8_ROW_OF(ymin);
+        if (ytop >= ybot)
+            continue;                       /* no row: never scanned */
+        y = rnds((r8_s16)(ytop - 2), (r8_s16)(ybot - 1));
+        if (rndn(2))
+            y = rnds((r8_s16)(ybot - 3 > ytop ? ybot - 3 : ytop), (r8_s16)(ybot - 1));
+        memcpy(va, vr, sizeof vr);
+        p = (r8_u8 *)&sr;
+        for (k = 0; k < sizeof sr; k++)
+            p[k] = (r8_u8)rnd();
+        sr.n = (r8_u8)n;
+        for (k = 0; k < n; k++)
+            sr.vp[k] = vr[k];
+        memcpy(&sa, &sr, sizeof sr);
+        for (k = 0; k < n; k++)
+            sa.vp[k] = va[k];
+        er = left ? &sr.l : &sr.r;
+        ea = left ? &sa.l : &sa.r;
+        r8k_estart_ref(&sr, er, y, from);
+        r8k_estart(&sa, ea, y, from);
+        for (k = 0; k < n; k++)             /* (pointers differ: compare through them) */
+            sa.vp[k] = vr[k];
+        if (memcmp(&sa, &sr, sizeof sr) != 0 || memcmp(va, vr, sizeof vr) != 0) {
+            print_case("r8k_estart", i);
+            unity_fail_int(__LINE__, "r8k_estart differs from the reference", (long)y, (long)from);
+        }
+        n_left += left;
+        {
+            r8_u8 to = er->vi, fr = (r8_u8)(left ? (to + 1u == n ? 0 : to + 1u) : (to == 0 ? n - 1u : to - 1u));
+            const r8_s16 *a = vr[fr], *b = vr[to];
+            if (fr != from)
+                n_walk++;
+            if (b[1] <= a[1])
+                n_empty++;
+            else {
+                r8_interp it;
+                r8_s16 y0 = r8k_edge_ref(&it, a, b);
+                if (y0 == R8_EDGE_WIDE)
+                    n_wide++;
+                else if (y0 < y)
+                    n_step++;
+            }
+            if (er->yend == 2048)
+                n_2048++;
+        }
+    }
+    unity_print("r8k_estart: left ");
+    unity_print_long((long)n_left);
+    unity_print(", walked ");
+    unity_print_long((long)n_walk);
+    unity_print(", empty ");
+    unity_print_long((long)n_empty);
+    unity_print(", wide ");
+    unity_print_long((long)n_wide);
+    unity_print(", stepped ");
+    unity_print_long((long)n_step);
+    unity_print(", row 2048 ");
+    unity_print_long((long)n_2048);
+    unity_print("\n");
+    if (n_left < 500 || n_walk < 200 || n_empty < 20 || n_wide < 50 || n_step < 200 || n_2048 < 20)
+        TEST_FAIL_MESSAGE("r8k_estart: a class of cases too rare to mean anything");
+}
+
+/* ---- r8k_scanband (trap.S, with r8k_scanfill) against the reference:
+ * random polygons of 3..7 vertices over and around a page-1 band of 1..4
+ * pages and 8..160 columns (at a random offset between guard bytes),
+ * begun (r8_scanx_begin) at a random row of the band, filled from there
+ * to a random limit at a random level (0..20); the band window, guards
+ * included, and the whole r8_scanx compared.  Counted: trapezoids of
+ * one row, of several, edge restarts, calls of more than one trapezoid,
+ * spans with page groups (7+ rows, 16+ columns). ---- */
+#ifndef SCANBAND_CASES
+#define SCANBAND_CASES 1500
+#endif
+#define SB_WIN (GUARD + 255 + 4 * 160 + GUARD)
+static r8_u8 sb_ref[SB_WIN], sb_asm[SB_WIN];
+static void test_scanband_random(void)
+{
+    static r8_s16 v[7][2];
+    static r8_scanx sr, sa;
+    unsigned long i, n_run = 0, n_restart = 0, n_multi = 0, n_group = 0, n_level = 0;
+    for (i = 0; i < SCANBAND_CASES; i++) {
+        unsigned n = 3 + rndn(5), k, pages = 1 + rndn(4), len, off = rndn(256);
+        r8_s16 w = (r8_s16)(8 + rndn(153)), y0 = rnds(-20, 60), rows = (r8_s16)(8 * pages);
+        r8_s16 lim, ystart, ylimit;
+        r8_u8 level = (r8_u8)rndn(21), b, l_vi, r_vi;
+        r8_fb fr, fa;
+        unsigned c = rndn(4);
+        for (k = 0; k < n; k++) {
+            if (c == 0) {                   /* around the band */
+                v[k][0] = rnds(-40 * 16, (r8_s16)((w + 40) * 16));
+                v[k][1] = rnds((r8_s16)((y0 - 12) * 16), (r8_s16)((y0 + rows + 12) * 16));
+            } else if (c == 1) {            /* tall and wide: page groups */
+                v[k][0] = rnds(-8 * 16, (r8_s16)((w + 8) * 16));
+                v[k][1] = rnds((r8_s16)((y0 - 40) * 16), (r8_s16)((y0 + rows + 40) * 16));
+            } else if (c == 2) {            /* small: many short trapezoids */
+                v[k][0] = (r8_s16)(rnds(0, (r8_s16)(w * 16)) + rnds(-60, 60));
+                v[k][1] = (r8_s16)(rnds((r8_s16)(y0 * 16), (r8_s16)((y0 + rows) * 16)) + rnds(-60, 60));
+            } else {                        /* far out */
+                v[k][0] = rnds(-3000, 3000);
+                v[k][1] = rnds((r8_s16)((y0 - 200) * 16), (r8_s16)((y0 + rows + 200) * 16));
+            }
+        }
+        if (c == 1 && n >= 4) {             /* a convex quad over the band */
+            r8_s16 xl = rnds(-100, (r8_s16)(w * 4)), xr = rnds((r8_s16)(w * 8), (r8_s16)(w * 20));
+            v[0][0] = xl; v[0][1] = (r8_s16)((y0 - 20) * 16 + rnds(0, 15));
+            v[1][0] = xr; v[1][1] = (r8_s16)((y0 - 10) * 16 + rnds(0, 15));
+            v[2][0] = (r8_s16)(xr + rnds(-40, 40)); v[2][1] = (r8_s16)((y0 + rows + 10) * 16);
+            v[3][0] = (r8_s16)(xl + rnds(-40, 40)); v[3][1] = (r8_s16)((y0 + rows + 5) * 16);
+            n = 4;
+        }
+        memset(&sr, 0, sizeof sr);
+        for (k = 0; k < n; k++)
+            sr.vp[k] = v[k];
+        ystart = (r8_s16)(y0 + rndn((unsigned)rows));
+        if (!r8_scanx_begin(&sr, (r8_u8)n, ystart))
+            continue;
+        ylimit = rndn(3) ? (r8_s16)(y0 + rows + 5) : (r8_s16)(sr.y + 1 + rndn(rows));
+        lim = sr.ybot < ylimit ? sr.ybot : ylimit;
+        if (lim > y0 + rows)
+            lim = (r8_s16)(y0 + rows);
+        if (sr.y < y0 || sr.y >= lim)
+            continue;
+        memcpy(&sa, &sr, sizeof sr);
+        len = GUARD + off + pages * (unsigned)w + GUARD;
+        b = (r8_u8)rnd();
+        for (k = 0; k < len; k++) {
+            b = (r8_u8)(b + 151u);
+            sb_ref[k] = b;
+        }
+        memcpy(sb_asm, sb_ref, len);
+        fr.buf = sb_ref + GUARD + off;
+        fr.width = w;
+        fr.height = 200;
+        fr.y0 = y0;
+        fr.rows = rows;
+        fr.format = R8_FMT_PAGE1;
+        fa = fr;
+        fa.buf = sb_asm + GUARD + off;
+        l_vi = sr.l.vi;
+        r_vi = sr.r.vi;
+        r8k_scanband_ref(&sr, &fr, lim, level);
+        r8k_scanband(&sa, &fa, lim, level);
+        if (memcmp(sb_asm, sb_ref, len) != 0 || memcmp(&sa, &sr, sizeof sr) != 0) {
+            print_case("r8k_scanband", i);
+            unity_fail_int(__LINE__, "r8k_scanband differs from the reference", (long)lim, (long)level);
+        }
+        n_run++;
+        if (sr.l.vi != l_vi || sr.r.vi != r_vi)
+            n_restart++;
+        if (sr.l.vi != l_vi && sr.r.vi != r_vi)
+            n_multi++;
+        if (c == 1 && n == 4 && w >= 24)
+            n_group++;
+        if (level > 16)
+            n_level++;
+    }
+    unity_print("r8k_scanband: ");
+    unity_print_long((long)n_run);
+    unity_print(" filled, restarts ");
+    unity_print_long((long)n_restart);
+    unity_print(", both edges ");
+    unity_print_long((long)n_multi);
+    unity_print(", quads over the band ");
+    unity_print_long((long)n_group);
+    unity_print(", level > 16 ");
+    unity_print_long((long)n_level);
+    unity_print("\n");
+    if (n_run < 600 || n_restart < 100 || n_multi < 30 || n_group < 50 || n_level < 40)
+        TEST_FAIL_MESSAGE("r8k_scanband: a class of cases too rare to mean anything");
 }
