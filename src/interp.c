@@ -3,6 +3,39 @@
  * rounded delta, so the last step lands exactly on the end value. */
 #include "r8raster.h"
 #include "r8fixed.h"
+#include "r8int.h"
+
+/* floor(65536 / n), n = 2..256 ([1] unused: n = 1 is the quotient
+ * itself): the divisions of r8_zfill's spans and of the attribute
+ * set-ups (scanattr.c) as products (src/r8int.h). */
+const r8_u16 r8_rcp256[257] R8_FLASH = {
+    0u, 65535u, 32768u, 21845u, 16384u, 13107u, 10922u, 9362u, 8192u, 7281u,
+    6553u, 5957u, 5461u, 5041u, 4681u, 4369u, 4096u, 3855u, 3640u, 3449u,
+    3276u, 3120u, 2978u, 2849u, 2730u, 2621u, 2520u, 2427u, 2340u, 2259u,
+    2184u, 2114u, 2048u, 1985u, 1927u, 1872u, 1820u, 1771u, 1724u, 1680u,
+    1638u, 1598u, 1560u, 1524u, 1489u, 1456u, 1424u, 1394u, 1365u, 1337u,
+    1310u, 1285u, 1260u, 1236u, 1213u, 1191u, 1170u, 1149u, 1129u, 1110u,
+    1092u, 1074u, 1057u, 1040u, 1024u, 1008u, 992u, 978u, 963u, 949u,
+    936u, 923u, 910u, 897u, 885u, 873u, 862u, 851u, 840u, 829u,
+    819u, 809u, 799u, 789u, 780u, 771u, 762u, 753u, 744u, 736u,
+    728u, 720u, 712u, 704u, 697u, 689u, 682u, 675u, 668u, 661u,
+    655u, 648u, 642u, 636u, 630u, 624u, 618u, 612u, 606u, 601u,
+    595u, 590u, 585u, 579u, 574u, 569u, 564u, 560u, 555u, 550u,
+    546u, 541u, 537u, 532u, 528u, 524u, 520u, 516u, 512u, 508u,
+    504u, 500u, 496u, 492u, 489u, 485u, 481u, 478u, 474u, 471u,
+    468u, 464u, 461u, 458u, 455u, 451u, 448u, 445u, 442u, 439u,
+    436u, 434u, 431u, 428u, 425u, 422u, 420u, 417u, 414u, 412u,
+    409u, 407u, 404u, 402u, 399u, 397u, 394u, 392u, 390u, 387u,
+    385u, 383u, 381u, 378u, 376u, 374u, 372u, 370u, 368u, 366u,
+    364u, 362u, 360u, 358u, 356u, 354u, 352u, 350u, 348u, 346u,
+    344u, 343u, 341u, 339u, 337u, 336u, 334u, 332u, 330u, 329u,
+    327u, 326u, 324u, 322u, 321u, 319u, 318u, 316u, 315u, 313u,
+    312u, 310u, 309u, 307u, 306u, 304u, 303u, 302u, 300u, 299u,
+    297u, 296u, 295u, 293u, 292u, 291u, 289u, 288u, 287u, 286u,
+    284u, 283u, 282u, 281u, 280u, 278u, 277u, 276u, 275u, 274u,
+    273u, 271u, 270u, 269u, 268u, 267u, 266u, 265u, 264u, 263u,
+    262u, 261u, 260u, 259u, 258u, 257u, 256u
+};
 
 void r8_interp_init(r8_interp *it, r8_s16 base, r8_s32 num0, r8_s32 step,
                     r8_u16 den)
@@ -69,6 +102,61 @@ void r8_interp_init_mul(r8_interp *it, r8_s16 base, r8_s32 a, r8_s32 b,
     it->err = (r8_u16)rem;
     it->q = r8_sat16(qs);
     it->r = (r8_u16)(step - qs * d);
+}
+
+/* floor(num / n) for n = 1..256, num = un or (neg) -un - 1: the
+ * remainder (0..n-1) in *rem, the quotient returned.  The quotient of
+ * un / n comes from the reciprocal (r8_rcp256: q or q - 1, one
+ * correction), not a division. */
+static r8_s32 fdiv_small(r8_u16 un, r8_u8 neg, r8_u16 n, r8_u16 *rem)
+{
+    r8_u16 q = un, rr = 0;
+    if (n > 1u) {
+        r8_u32 p = un;
+        p *= R8_RDU16(&r8_rcp256[n]);
+        q = (r8_u16)(p >> 16);
+        rr = (r8_u16)(un - q * n);
+        if (rr >= n) {
+            rr = (r8_u16)(rr - n);
+            q++;
+        }
+    }
+    if (neg) {
+        *rem = (r8_u16)(n - 1u - rr);
+        return -(r8_s32)q - 1;
+    }
+    *rem = rr;
+    return (r8_s32)q;
+}
+
+/* (r8raster.h) both numerators fit a u16: two reciprocal products */
+int r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s32 dv, r8_u16 n)
+{
+    r8_u16 m, un, rem;
+    r8_u8 neg = (r8_u8)(dv < 0);
+    r8_s32 q;
+    if (dv <= -(r8_s32)(65536L / R8_SUBPX) || dv >= (r8_s32)(65536L / R8_SUBPX))
+        return 0;
+    m = (r8_u16)(neg ? -dv : dv);
+    un = (r8_u16)(s0 * m);                   /* |s0 * dv| < 65536 */
+    q = fdiv_small((r8_u16)(neg && un ? un - 1u : un), (r8_u8)(neg && un), n, &rem);
+    q += base;
+    if (q > 32767L)
+        q = 32767L;
+    else if (q < -32768L)
+        q = -32768L;
+    it->val = (r8_s16)q;
+    it->err = rem;
+    un = (r8_u16)(m * R8_SUBPX);
+    q = fdiv_small((r8_u16)(neg && un ? un - 1u : un), (r8_u8)(neg && un), n, &rem);
+    if (q > 32767L)
+        q = 32767L;
+    else if (q < -32768L)
+        q = -32768L;
+    it->q = (r8_s16)q;
+    it->r = rem;
+    it->den = n;
+    return 1;
 }
 
 void r8_interp_reset(r8_interp *it, r8_s16 a, r8_s16 b, r8_u16 n)

@@ -24,9 +24,12 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     const r8_s16 *a = c->vp[from];
     const r8_s16 *b = c->vp[to];
     r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
-    r8_u8 sh1 = 0;
+    r8_u8 sh1 = 0, fast;
     if (dy <= 0)
         dy = 1;
+    /* an edge's first row (s0 < R8_SUBPX) and at most 16 rows tall: the
+     * division-free set-up (attr_fast) */
+    fast = (r8_u8)(s0 >= 0 && s0 < R8_SUBPX && dy <= 256);
     if (dy > 32767) {
         dy = (dy + 1) >> 1;
         s0 >>= 1;
@@ -34,11 +37,13 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     }
     if (s->attrs & R8_ATTR_D) {
         dv = (r8_s32)b[2] - a[2];
-        r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        if (!fast || !r8_interp_init_sub(d, a[2], (r8_u16)s0, dv, (r8_u16)dy))
+            r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
     }
     if (s->attrs & R8_ATTR_S) {
         dv = (r8_s32)b[3] - a[3];
-        r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        if (!fast || !r8_interp_init_sub(sh, a[3], (r8_u16)s0, dv, (r8_u16)dy))
+            r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
     }
 }
 
