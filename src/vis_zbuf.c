@@ -5,6 +5,7 @@
  * depth is >= the stored one (so the later of two equal depths wins). */
 #include "r8int.h"
 #include "r8scan.h"
+#include "r8zrows.h"
 
 /* Gouraud shade (8.8) to a dither level 0..16, rounded. */
 r8_u8 r8_vis_level(r8_s16 s)
@@ -197,13 +198,44 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     r8_edge *l = &c->l, *r = &c->r;
     r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, w = fb->width, y = c->y;
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
+    r8_zrows t;
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);
+    t.lx = &l->x;
+    t.rx = &r->x;
+    t.ld = &s->ld;
+    t.rd = &s->rd;
+    t.w = (r8_u16)w;
+    t.pat[0] = R8_FB_DITHER(lv, 0);
+    t.pat[1] = R8_FB_DITHER(lv, 1);
+    t.pat[2] = R8_FB_DITHER(lv, 2);
+    t.pat[3] = R8_FB_DITHER(lv, 3);
     for (; y < lim; y++) {
         r8_s16 xl, xr;
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
+        if (bits16 && y >= fb->y0 && (!judd || c->front)) {
+            /* the rows on which neither edge moves on: r8k_zrows
+             * (src/r8zrows.h), up to a row it leaves to the code below */
+            r8_s16 end = lim;
+            r8_u16 by = (r8_u16)(y - fb->y0);
+            if (l->yend < end)
+                end = l->yend;
+            if (r->yend < end)
+                end = r->yend;
+            if (end > y) {
+                t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
+                t.page = fb->buf + (by >> 3) * (unsigned)w;
+                t.m = R8_FB_BIT(by);
+                t.k = (r8_u8)(y & 3);
+                y = (r8_s16)(end - (r8_s16)r8k_zrows(&t, (r8_u16)(end - y)));
+                if (y >= end) {
+                    y--;          /* the loop's y++: on to row end */
+                    continue;
+                }
+            }
+        }
         xl = l->x.val;
         xr = r->x.val;
         if (xl < xr && y >= fb->y0) {

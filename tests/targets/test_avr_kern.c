@@ -222,6 +222,115 @@ static void test_fill_random(void)
             unity_fail_int(__LINE__, "r8k_fill: a length remainder too rare", 10, (long)rem[i]);
 }
 
+/* ---- r8k_zrows (ports/avr/zfill.S) against its reference (src/zrows.c,
+ * renamed r8k_zrows_ref): random bands of w <= 64 columns and up to 16
+ * rows in band_ref / band_asm (pages at GUARD, depths at ZOFF, every
+ * byte random, guards included), random edges (columns around the band,
+ * now and then left of 0 or 256+ wide: the rows the kernel leaves),
+ * depths anywhere in 0..32767.  All the memory, the return value, the
+ * four interpolators and t's z, page, m, k must end equal. ---- */
+#define r8k_zrows r8k_zrows_ref
+#include "zrows.c"
+#undef r8k_zrows
+r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+
+static void rnd_zinterp(r8_interp *it, r8_s16 lo, r8_s16 hi, r8_s16 qmax, r8_u16 dmax)
+{
+    it->den = (r8_u16)(1u + rndn(dmax));
+    it->val = rnds(lo, hi);
+    it->q = rnds((r8_s16)-qmax, qmax);
+    it->err = (r8_u16)rndn(it->den);
+    it->r = (r8_u16)rndn(it->den);
+}
+
+static int interp_eq(const r8_interp *a, const r8_interp *b)
+{
+    return a->val == b->val && a->q == b->q && a->err == b->err && a->r == b->r &&
+           a->den == b->den;
+}
+
+static r8_u16 zsum(const r8_u8 *p, unsigned n)
+{
+    r8_u16 h = 0;
+    while (n--)
+        h = (r8_u16)(((h << 1) | (h >> 15)) + *p++);
+    return h;
+}
+
+static void test_zrows_random(void)
+{
+    unsigned long i, stops = 0, drawn = 0;
+    r8_u16 sum0;
+    for (i = 0; i < 2500; i++) {
+        r8_zrows ta, tr;
+        r8_interp ia[4], ir[4];
+        r8_u16 w = (r8_u16)(1u + rndn(64)), rows = (r8_u16)(1u + rndn(16)), ra, rr;
+        unsigned j, zoff = (2u * GUARD + 3u * w + 1u) & ~1u;
+        unsigned len = zoff + 2u * rows * w + GUARD, c = rndn(8);
+        r8_u32 v = 0;
+        for (j = 0; j < len; j++) {
+            if (!(j & 3))
+                v = rnd();
+            band_ref[j] = (r8_u8)v;
+            v >>= 8;
+        }
+        if (rndn(2))                   /* depths near each other: both ways */
+            for (j = zoff; j < len; j += 2)
+                band_ref[j + 1] = (r8_u8)(0x40 + (band_ref[j] & 1));
+        memcpy(band_asm, band_ref, len);
+        if (c == 0) {                   /* wide spans: 256+ and the limits */
+            rnd_zinterp(&ir[0], 0, 40, 3, 50);
+            rnd_zinterp(&ir[1], 250, 330, 3, 50);
+        } else if (c == 1) {            /* starts left of 0 now and then */
+            rnd_zinterp(&ir[0], -6, 10, 2, 20);
+            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 8), 2, 20);
+        } else {
+            rnd_zinterp(&ir[0], -2, (r8_s16)(w + 2), 3, 400);
+            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 40), 3, 400);
+        }
+        if (rndn(4) == 0) {             /* extreme depth steps */
+            rnd_zinterp(&ir[2], 0, 32767, 32767, 32767);
+            rnd_zinterp(&ir[3], 0, 32767, 32767, 32767);
+        } else {
+            rnd_zinterp(&ir[2], 16000, 16900, 60, 300);
+            rnd_zinterp(&ir[3], 16000, 16900, 60, 300);
+        }
+        memcpy(ia, ir, sizeof ia);
+        tr.w = w;
+        tr.m = (r8_u8)(1u << rndn(8));
+        tr.k = (r8_u8)rndn(4);
+        for (j = 0; j < 4; j++)
+            tr.pat[j] = (r8_u8)rnd();
+        ta = tr;
+        tr.lx = &ir[0]; tr.rx = &ir[1]; tr.ld = &ir[2]; tr.rd = &ir[3];
+        ta.lx = &ia[0]; ta.rx = &ia[1]; ta.ld = &ia[2]; ta.rd = &ia[3];
+        tr.page = band_ref + GUARD;
+        ta.page = band_asm + GUARD;
+        tr.z = (r8_u16 *)(void *)(band_ref + zoff);
+        ta.z = (r8_u16 *)(void *)(band_asm + zoff);
+        sum0 = zsum(band_ref, len);
+        rr = r8k_zrows_ref(&tr, rows);
+        ra = r8k_zrows(&ta, rows);
+        stops += rr != 0;
+        drawn += zsum(band_ref, len) != sum0;   /* some depth or pixel written */
+        if (ra != rr || memcmp(band_ref, band_asm, len) != 0 || !interp_eq(&ia[0], &ir[0]) ||
+            !interp_eq(&ia[1], &ir[1]) || !interp_eq(&ia[2], &ir[2]) ||
+            !interp_eq(&ia[3], &ir[3]) ||
+            (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
+            ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k) {
+            print_case("r8k_zrows", i);
+            unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
+        }
+    }
+    unity_print("r8k_zrows: rows left to C in ");
+    unity_print_long((long)stops);
+    unity_print(" calls, memory written in ");
+    unity_print_long((long)drawn);
+    unity_print("\n");
+    if (stops < 200 || drawn < 1000)
+        unity_fail_int(__LINE__, "r8k_zrows: too few stops or drawn rows", (long)stops, (long)drawn);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -232,5 +341,6 @@ int main(void)
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
+    RUN_TEST(test_zrows_random);
     return UNITY_END();
 }

@@ -1,0 +1,323 @@
+/* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: the 16-bit z-buffer's
+ * rows between edge changes, with their set-up, in one call.
+ *
+ *   r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+ *
+ * Same memory results as the C reference src/zrows.c.  The value and
+ * error of the four interpolators (lx, rx, ld, rd) stay in r2..r17 for
+ * the whole call and are written back at the end; their q, r, den are
+ * read through the pointers on each row's step.  A span's depth step is
+ * floor((rd - ld) / n) from r8_rcp256[n] (n = 1..255: q or q - 1, one
+ * correction), with an 8-bit error (r < n <= 255).  Per pixel: depth
+ * test, store, page bit set or cleared by bit 7 of the pattern (rotated
+ * left per column), DDA step.
+ *
+ * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
+ * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
+ * m 14, k 15, pat 16..19}.
+ */
+
+#define LXVL r2
+#define LXVH r3
+#define LXEL r4
+#define LXEH r5
+#define RXVL r6
+#define RXVH r7
+#define RXEL r8
+#define RXEH r9
+#define LDVL r10
+#define LDVH r11
+#define LDEL r12
+#define LDEH r13
+#define RDVL r14
+#define RDVH r15
+#define RDEL r16
+#define RDEH r17
+#define ROWL r22
+#define ROWH r23
+
+/* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
+ * through the pointer at Y+off */
+.macro STEP off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        ldd     r18, Z+2
+        ldd     r19, Z+3
+        add     \vl, r18
+        adc     \vh, r19
+        ldd     r18, Z+6
+        ldd     r19, Z+7
+        add     \el, r18
+        adc     \eh, r19
+        ldd     r18, Z+8
+        ldd     r19, Z+9
+        cp      \el, r18
+        cpc     \eh, r19
+        brlo    1f
+        sub     \el, r18
+        sbc     \eh, r19
+        sec
+        adc     \vl, r1
+        adc     \vh, r1
+1:
+.endm
+
+/* load / store val, err through the pointer at Y+off */
+.macro LOADI off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        ld      \vl, Z
+        ldd     \vh, Z+1
+        ldd     \el, Z+4
+        ldd     \eh, Z+5
+.endm
+.macro STOREI off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        st      Z, \vl
+        std     Z+1, \vh
+        std     Z+4, \el
+        std     Z+5, \eh
+.endm
+
+        .section .text.r8k_zrows,"ax",@progbits
+        .global r8k_zrows
+        .type   r8k_zrows, @function
+r8k_zrows:
+        push    r2
+        push    r3
+        push    r4
+        push    r5
+        push    r6
+        push    r7
+        push    r8
+        push    r9
+        push    r10
+        push    r11
+        push    r12
+        push    r13
+        push    r14
+        push    r15
+        push    r16
+        push    r17
+        push    r28
+        push    r29
+        movw    r28, r24
+        LOADI   0, LXVL, LXVH, LXEL, LXEH
+        LOADI   2, RXVL, RXVH, RXEL, RXEH
+        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        LOADI   6, RDVL, RDVH, RDEL, RDEH
+
+.Lrow:
+        mov     r0, ROWL
+        or      r0, ROWH
+        brne    1f
+        rjmp    .Ldone
+1:      cp      LXVL, RXVL              /* xl >= xr: no span */
+        cpc     LXVH, RXVH
+        brlt    2f
+        rjmp    .Lstep
+2:      sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
+        rjmp    .Ldone
+        movw    r24, RXVL               /* n = xr - xl */
+        sub     r24, LXVL
+        sbc     r25, LXVH
+        tst     r25                     /* n > 255: r8_zfill's */
+        breq    3f
+        rjmp    .Ldone
+3:      ldd     r20, Y+12               /* w */
+        ldd     r21, Y+13
+        cp      LXVL, r20               /* xl >= w: nothing drawn */
+        cpc     LXVH, r21
+        brlt    4f
+        rjmp    .Lstep
+4:      cp      r20, RXVL               /* xb = min(w, xr) */
+        cpc     r21, RXVH
+        brlt    5f
+        movw    r20, RXVL
+5:      sub     r20, LXVL               /* columns (1..255) */
+        push    r4
+        push    r5
+        push    r6
+        push    r7
+        mov     r4, r20                 /* r4: columns */
+        ldd     r0, Y+15                /* r5: pat[k] */
+        movw    r30, r28
+        add     r30, r0
+        adc     r31, r1
+        ldd     r5, Z+16
+        mov     r20, LXVL               /* rotated left by xl & 7 */
+        andi    r20, 7
+        breq    7f
+6:      lsl     r5
+        adc     r5, r1
+        dec     r20
+        brne    6b
+7:      movw    r18, RDVL               /* diff = rd - ld; T: diff < 0 */
+        sub     r18, LDVL
+        sbc     r19, LDVH
+        bst     r19, 7
+        brtc    8f
+        com     r18                     /* un = -diff - 1 */
+        com     r19
+8:      ldi     r30, lo8(r8_rcp256)
+        ldi     r31, hi8(r8_rcp256)
+        add     r30, r24
+        adc     r31, r25                /* r25 = 0 */
+        add     r30, r24
+        adc     r31, r25
+        lpm     r20, Z+
+        lpm     r21, Z
+        /* q' = (un * rcp) >> 16 in r31:r30 */
+        mul     r19, r21
+        movw    r30, r0
+        mul     r18, r20
+        mov     r26, r1
+        mul     r18, r21
+        add     r26, r0
+        adc     r30, r1
+        adc     r31, r25
+        mul     r19, r20
+        add     r26, r0
+        adc     r30, r1
+        adc     r31, r25
+        /* rr = un - q' * n (low 16 bits) */
+        mul     r30, r24
+        movw    r20, r0
+        mul     r31, r24
+        add     r21, r0
+        clr     r1
+        sub     r18, r20
+        sbc     r19, r21
+        cp      r18, r24
+        cpc     r19, r25
+        brlo    9f
+        sub     r18, r24
+        adiw    r30, 1
+9:      brtc    10f
+        com     r30                     /* q = -q' - 1, r = n - 1 - rr */
+        com     r31
+        mov     r0, r24
+        dec     r0
+        sub     r0, r18
+        mov     r18, r0
+10:     movw    r20, r30                /* DQ */
+        mov     r25, r18                /* DR */
+        mov     r6, r24                 /* DN */
+        clr     r24                     /* DE */
+        movw    r18, LDVL               /* DV */
+        ldd     r26, Y+10               /* X = page + xl */
+        ldd     r27, Y+11
+        add     r26, LXVL
+        adc     r27, LXVH
+        ldd     r30, Y+8                /* Z = z + xl */
+        ldd     r31, Y+9
+        add     r30, LXVL
+        adc     r31, LXVH
+        add     r30, LXVL
+        adc     r31, LXVH
+        ldd     r7, Y+14                /* M */
+        mov     r1, r4                  /* r1: columns (0 again at the end) */
+        mov     r4, r7                  /* NM */
+        com     r4
+.Lpx:
+        ld      r0, Z
+        cp      r18, r0
+        ldd     r0, Z+1
+        cpc     r19, r0
+        brlo    .Lskip
+        st      Z, r18
+        std     Z+1, r19
+        ld      r0, X
+        lsl     r5
+        brcc    11f
+        inc     r5
+        or      r0, r7
+        st      X, r0
+        rjmp    .Ldda
+11:     and     r0, r4
+        st      X, r0
+        rjmp    .Ldda
+.Lskip:
+        lsl     r5
+        brcc    .Ldda
+        inc     r5
+.Ldda:
+        adiw    r26, 1
+        adiw    r30, 2
+        add     r18, r20
+        adc     r19, r21
+        add     r24, r25
+        brcs    12f
+        cp      r24, r6
+        brlo    13f
+12:     sub     r24, r6
+        subi    r18, 0xFF
+        sbci    r19, 0xFF
+13:     dec     r1
+        brne    .Lpx
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+
+.Lstep:
+        STEP    0, LXVL, LXVH, LXEL, LXEH
+        STEP    2, RXVL, RXVH, RXEL, RXEH
+        STEP    4, LDVL, LDVH, LDEL, LDEH
+        STEP    6, RDVL, RDVH, RDEL, RDEH
+        ldd     r18, Y+12               /* w */
+        ldd     r19, Y+13
+        ldd     r30, Y+8                /* z += w */
+        ldd     r31, Y+9
+        add     r30, r18
+        adc     r31, r19
+        add     r30, r18
+        adc     r31, r19
+        std     Y+8, r30
+        std     Y+9, r31
+        ldd     r20, Y+14               /* m <<= 1; past bit 7: page += w */
+        lsl     r20
+        brne    14f
+        ldi     r20, 1
+        ldd     r30, Y+10
+        ldd     r31, Y+11
+        add     r30, r18
+        adc     r31, r19
+        std     Y+10, r30
+        std     Y+11, r31
+14:     std     Y+14, r20
+        ldd     r20, Y+15               /* k = (k + 1) & 3 */
+        inc     r20
+        andi    r20, 3
+        std     Y+15, r20
+        subi    ROWL, 1
+        sbci    ROWH, 0
+        rjmp    .Lrow
+
+.Ldone:
+        STOREI  0, LXVL, LXVH, LXEL, LXEH
+        STOREI  2, RXVL, RXVH, RXEL, RXEH
+        STOREI  4, LDVL, LDVH, LDEL, LDEH
+        STOREI  6, RDVL, RDVH, RDEL, RDEH
+        movw    r24, ROWL
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        pop     r15
+        pop     r14
+        pop     r13
+        pop     r12
+        pop     r11
+        pop     r10
+        pop     r9
+        pop     r8
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+        pop     r3
+        pop     r2
+        ret
+        .size   r8k_zrows, .-r8k_zrows

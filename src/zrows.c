@@ -1,0 +1,77 @@
+/* zrows.c - r8k_zrows (src/r8zrows.h), the C89 reference of the AVR
+ * kernel ports/avr/zfill.S (chosen by R8_ASM_ZFILL). */
+#include "r8zrows.h"
+#include "r8int.h"
+
+#ifndef R8_ASM_ZFILL
+r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
+{
+    r8_interp *lx = t->lx, *rx = t->rx, *ld = t->ld, *rd = t->rd;
+    for (; rows; rows--) {
+        r8_s16 xl = lx->val, xr = rx->val;
+        if (xl < xr) {
+            r8_u16 n = (r8_u16)(xr - xl);
+            if (xl < 0 || n > 255u)
+                break;                   /* r8_zfill's */
+            if (xl < (r8_s16)t->w) {
+                /* the depth step: floor((rd - ld) / n) by the
+                 * reciprocal, one correction */
+                r8_s16 diff = (r8_s16)(rd->val - ld->val), dv = ld->val, dq;
+                r8_u16 un = diff < 0 ? (r8_u16)~diff : (r8_u16)diff, q, rr;
+                r8_u32 p = un;
+                r8_u8 de = 0, dr, k, pat = t->pat[t->k], m = t->m, nm = (r8_u8)~m;
+                r8_u16 *z = t->z + xl;
+                r8_u8 *bp = t->page + xl;
+                p *= R8_RDU16(&r8_rcp256[n]);
+                q = (r8_u16)(p >> 16);
+                rr = (r8_u16)(un - q * n);
+                if (rr >= n) {
+                    rr = (r8_u16)(rr - n);
+                    q++;
+                }
+                if (diff < 0) {
+                    dq = (r8_s16)~q;
+                    dr = (r8_u8)(n - 1u - rr);
+                } else {
+                    dq = (r8_s16)q;
+                    dr = (r8_u8)rr;
+                }
+                for (k = (r8_u8)(xl & 7); k; k--)      /* pat rotated left */
+                    pat = (r8_u8)((pat << 1) | (pat >> 7));
+                k = (r8_u8)((xr > (r8_s16)t->w ? (r8_s16)t->w : xr) - xl);
+                do {
+                    if ((r8_u16)dv >= *z) {
+                        *z = (r8_u16)dv;
+                        if (pat & 0x80)
+                            *bp |= m;
+                        else
+                            *bp &= nm;
+                    }
+                    z++;
+                    bp++;
+                    pat = (r8_u8)((pat << 1) | (pat >> 7));
+                    dv = (r8_s16)(dv + dq);
+                    if ((r8_u16)de + dr >= n) {
+                        de = (r8_u8)(de + dr - n);
+                        dv++;
+                    } else {
+                        de = (r8_u8)(de + dr);
+                    }
+                } while (--k);
+            }
+        }
+        R8_INTERP_STEP(lx);
+        R8_INTERP_STEP(rx);
+        R8_INTERP_STEP(ld);
+        R8_INTERP_STEP(rd);
+        t->z += t->w;
+        t->m = (r8_u8)(t->m << 1);
+        if (!t->m) {
+            t->m = 1;
+            t->page += t->w;
+        }
+        t->k = (r8_u8)((t->k + 1) & 3);
+    }
+    return rows;
+}
+#endif
