@@ -104,61 +104,6 @@ void r8_interp_init_mul(r8_interp *it, r8_s16 base, r8_s32 a, r8_s32 b,
     it->r = (r8_u16)(step - qs * d);
 }
 
-/* floor(num / n) for n = 1..256, num = un or (neg) -un - 1: the
- * remainder (0..n-1) in *rem, the quotient returned.  The quotient of
- * un / n comes from the reciprocal (r8_rcp256: q or q - 1, one
- * correction), not a division. */
-static r8_s32 fdiv_small(r8_u16 un, r8_u8 neg, r8_u16 n, r8_u16 *rem)
-{
-    r8_u16 q = un, rr = 0;
-    if (n > 1u) {
-        r8_u32 p = un;
-        p *= R8_RDU16(&r8_rcp256[n]);
-        q = (r8_u16)(p >> 16);
-        rr = (r8_u16)(un - q * n);
-        if (rr >= n) {
-            rr = (r8_u16)(rr - n);
-            q++;
-        }
-    }
-    if (neg) {
-        *rem = (r8_u16)(n - 1u - rr);
-        return -(r8_s32)q - 1;
-    }
-    *rem = rr;
-    return (r8_s32)q;
-}
-
-/* (r8raster.h) both numerators fit a u16: two reciprocal products */
-int r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s32 dv, r8_u16 n)
-{
-    r8_u16 m, un, rem;
-    r8_u8 neg = (r8_u8)(dv < 0);
-    r8_s32 q;
-    if (dv <= -(r8_s32)(65536L / R8_SUBPX) || dv >= (r8_s32)(65536L / R8_SUBPX))
-        return 0;
-    m = (r8_u16)(neg ? -dv : dv);
-    un = (r8_u16)(s0 * m);                   /* |s0 * dv| < 65536 */
-    q = fdiv_small((r8_u16)(neg && un ? un - 1u : un), (r8_u8)(neg && un), n, &rem);
-    q += base;
-    if (q > 32767L)
-        q = 32767L;
-    else if (q < -32768L)
-        q = -32768L;
-    it->val = (r8_s16)q;
-    it->err = rem;
-    un = (r8_u16)(m * R8_SUBPX);
-    q = fdiv_small((r8_u16)(neg && un ? un - 1u : un), (r8_u8)(neg && un), n, &rem);
-    if (q > 32767L)
-        q = 32767L;
-    else if (q < -32768L)
-        q = -32768L;
-    it->q = (r8_s16)q;
-    it->r = rem;
-    it->den = n;
-    return 1;
-}
-
 void r8_interp_reset(r8_interp *it, r8_s16 a, r8_s16 b, r8_u16 n)
 {
     r8_interp_init(it, a, 0, (r8_s32)b - a, n);

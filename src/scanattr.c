@@ -37,12 +37,16 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     }
     if (s->attrs & R8_ATTR_D) {
         dv = (r8_s32)b[2] - a[2];
-        if (!fast || !r8_interp_init_sub(d, a[2], (r8_u16)s0, dv, (r8_u16)dy))
+        if (fast && dv > -(65536L / R8_SUBPX) && dv < 65536L / R8_SUBPX)
+            r8_interp_init_sub(d, a[2], (r8_u16)s0, (r8_s16)dv, (r8_u16)dy);
+        else
             r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
     }
     if (s->attrs & R8_ATTR_S) {
         dv = (r8_s32)b[3] - a[3];
-        if (!fast || !r8_interp_init_sub(sh, a[3], (r8_u16)s0, dv, (r8_u16)dy))
+        if (fast && dv > -(65536L / R8_SUBPX) && dv < 65536L / R8_SUBPX)
+            r8_interp_init_sub(sh, a[3], (r8_u16)s0, (r8_s16)dv, (r8_u16)dy);
+        else
             r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
     }
 }

@@ -1,5 +1,6 @@
-/* zrows.c - r8k_zrows (src/r8zrows.h), the C89 reference of the AVR
- * kernel ports/avr/zfill.S (chosen by R8_ASM_ZFILL). */
+/* zrows.c - r8k_zrows (src/r8zrows.h) and r8_interp_init_sub
+ * (r8raster.h), the C89 references of the AVR kernels in
+ * ports/avr/zfill.S (chosen by R8_ASM_ZFILL). */
 #include "r8zrows.h"
 #include "r8int.h"
 
@@ -73,5 +74,57 @@ r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
         t->k = (r8_u8)((t->k + 1) & 3);
     }
     return rows;
+}
+#endif
+
+#ifndef R8_ASM_ZFILL
+/* floor(num / n) for n = 1..256, num = un or (neg) -un - 1: the
+ * remainder (0..n-1) in *rem, the quotient returned.  The quotient of
+ * un / n comes from the reciprocal (r8_rcp256: q or q - 1, one
+ * correction), not a division. */
+static r8_s32 fdiv_small(r8_u16 un, r8_u8 neg, r8_u16 n, r8_u16 *rem)
+{
+    r8_u16 q = un, rr = 0;
+    if (n > 1u) {
+        r8_u32 p = un;
+        p *= R8_RDU16(&r8_rcp256[n]);
+        q = (r8_u16)(p >> 16);
+        rr = (r8_u16)(un - q * n);
+        if (rr >= n) {
+            rr = (r8_u16)(rr - n);
+            q++;
+        }
+    }
+    if (neg) {
+        *rem = (r8_u16)(n - 1u - rr);
+        return -(r8_s32)q - 1;
+    }
+    *rem = rr;
+    return (r8_s32)q;
+}
+
+static r8_s16 sat16(r8_s32 v)
+{
+    if (v > 32767L)
+        return 32767;
+    if (v < -32768L)
+        return -32767 - 1;
+    return (r8_s16)v;
+}
+
+/* (r8raster.h) both numerators fit a u16: two reciprocal products */
+void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n)
+{
+    r8_u16 m = (r8_u16)(dv < 0 ? -dv : dv), un = (r8_u16)(s0 * m), rem;
+    r8_u8 neg = (r8_u8)(dv < 0 && un);
+    r8_s32 q = fdiv_small((r8_u16)(un - neg), neg, n, &rem);
+    it->val = sat16(q + base);
+    it->err = rem;
+    un = (r8_u16)(m * R8_SUBPX);
+    neg = (r8_u8)(dv < 0);
+    q = fdiv_small((r8_u16)(un - neg), neg, n, &rem);
+    it->q = sat16(q);
+    it->r = rem;
+    it->den = n;
 }
 #endif

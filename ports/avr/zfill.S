@@ -1,5 +1,7 @@
 /* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: the 16-bit z-buffer's
- * rows between edge changes, with their set-up, in one call.
+ * rows between edge changes, with their set-up, in one call; and
+ * r8_interp_init_sub (include/r8raster.h), the edges' depth set-up
+ * (below).
  *
  *   r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
  *
@@ -321,3 +323,159 @@ r8k_zrows:
         pop     r2
         ret
         .size   r8k_zrows, .-r8k_zrows
+
+/* void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0,
+ *                         r8_s16 dv, r8_u16 n)       (include/r8raster.h)
+ *
+ * The C reference is src/zrows.c's: for 0 <= s0 < 16, n = 1..256,
+ * |dv| < 4096, it = r8_interp_init_mul(it, base, s0, dv, dv * 16, n):
+ *     val = sat16(base + floor(s0 * dv / n)), err the remainder,
+ *     q = sat16(floor(16 * dv / n)), r its remainder, den = n.
+ * A floor quotient of num = un or -un - 1 (un < 65536) is that of un
+ * (divsmall: r8_rcp256[n], one correction), complemented when negative;
+ * the remainder then n - 1 - rr.  val is summed in 24 bits, then
+ * saturated.
+ * In: r25:24 it, r23:22 base, r21:20 s0, r19:18 dv, r17:16 n. */
+        .section .text.r8_interp_init_sub,"ax",@progbits
+        .global r8_interp_init_sub
+        .type   r8_interp_init_sub, @function
+r8_interp_init_sub:
+        movw    r26, r24                /* X = it */
+        clt
+        sbrs    r19, 7
+        rjmp    1f
+        set                             /* T: dv < 0 */
+        com     r19                     /* m = -dv */
+        neg     r18
+        sbci    r19, 0xFF
+1:      mul     r20, r18                /* un = s0 * m */
+        movw    r24, r0
+        mul     r20, r19
+        add     r25, r0
+        clr     r1
+        clr     r21                     /* r21: 0xFF when s0 * dv < 0 */
+        brtc    2f
+        mov     r0, r24
+        or      r0, r25
+        breq    2f
+        sbiw    r24, 1
+        ldi     r21, 0xFF
+2:      rcall   divsmall
+        tst     r21
+        breq    3f
+        com     r30                     /* q = -q - 1 */
+        com     r31
+        rcall   nrem                    /* rr = n - 1 - rr */
+3:      sbrc    r23, 7                  /* r21:r31:r30 += base (24 bits) */
+        dec     r21
+        add     r30, r22
+        adc     r31, r23
+        adc     r21, r1
+        mov     r0, r31                 /* fits 16 bits: r21 = sign of r31 */
+        lsl     r0
+        sbc     r0, r0
+        cp      r0, r21
+        breq    4f
+        ldi     r30, 0xFF
+        ldi     r31, 0x7F
+        sbrs    r21, 7
+        rjmp    4f
+        ldi     r30, 0x00
+        ldi     r31, 0x80
+4:      st      X+, r30                 /* val */
+        st      X+, r31
+        movw    r22, r24                /* err */
+        movw    r24, r18                /* un = 16 m (- 1 when dv < 0) */
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        brtc    5f
+        sbiw    r24, 1
+5:      rcall   divsmall
+        brtc    7f
+        rcall   nrem
+        sbrc    r31, 7                  /* q >= 32768: -q - 1 < -32768 */
+        rjmp    6f
+        com     r30
+        com     r31
+        rjmp    8f
+6:      ldi     r30, 0x00
+        ldi     r31, 0x80
+        rjmp    8f
+7:      sbrs    r31, 7                  /* q >= 32768: 32767 */
+        rjmp    8f
+        ldi     r30, 0xFF
+        ldi     r31, 0x7F
+8:      st      X+, r30                 /* q */
+        st      X+, r31
+        st      X+, r22                 /* err */
+        st      X+, r23
+        st      X+, r24                 /* r */
+        st      X+, r25
+        st      X+, r16                 /* den */
+        st      X+, r17
+        ret
+
+/* r25:r24 = n - 1 - r25:r24 (n in r17:r16) */
+nrem:
+        mov     r0, r16
+        mov     r1, r17
+        sub     r0, r24
+        sbc     r1, r25
+        movw    r24, r0
+        sbiw    r24, 1
+        clr     r1
+        ret
+
+/* q (r31:r30) = un / n, rr (r25:r24) = un % n for un = r25:r24,
+ * n = r17:r16 (1..256): q' = (un * r8_rcp256[n]) >> 16 is q or q - 1.
+ * Uses r0, r20, r28, r29 (kept); r1 = 0 after. */
+divsmall:
+        push    r28
+        push    r29
+        ldi     r30, lo8(r8_rcp256)
+        ldi     r31, hi8(r8_rcp256)
+        add     r30, r16
+        adc     r31, r17
+        add     r30, r16
+        adc     r31, r17
+        lpm     r28, Z+
+        lpm     r29, Z
+        mul     r25, r29
+        movw    r30, r0
+        mul     r24, r28
+        mov     r20, r1
+        mul     r24, r29
+        add     r20, r0
+        adc     r30, r1
+        brcc    1f
+        inc     r31
+1:      mul     r25, r28
+        add     r20, r0
+        adc     r30, r1
+        brcc    2f
+        inc     r31
+2:      mul     r30, r16                /* rr = un - q' n (16 bits) */
+        movw    r28, r0
+        mul     r31, r16
+        add     r29, r0
+        mul     r30, r17
+        add     r29, r0
+        clr     r1
+        sub     r24, r28
+        sbc     r25, r29
+        cp      r24, r16
+        cpc     r25, r17
+        brlo    3f
+        sub     r24, r16
+        sbc     r25, r17
+        adiw    r30, 1
+3:      pop     r29
+        pop     r28
+        ret
+        .size   r8_interp_init_sub, .-r8_interp_init_sub

@@ -230,9 +230,12 @@ static void test_fill_random(void)
  * depths anywhere in 0..32767.  All the memory, the return value, the
  * four interpolators and t's z, page, m, k must end equal. ---- */
 #define r8k_zrows r8k_zrows_ref
+#define r8_interp_init_sub r8_interp_init_sub_ref
 #include "zrows.c"
 #undef r8k_zrows
+#undef r8_interp_init_sub
 r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
 
 static void rnd_zinterp(r8_interp *it, r8_s16 lo, r8_s16 hi, r8_s16 qmax, r8_u16 dmax)
 {
@@ -331,6 +334,40 @@ static void test_zrows_random(void)
         unity_fail_int(__LINE__, "r8k_zrows: too few stops or drawn rows", (long)stops, (long)drawn);
 }
 
+/* ---- r8_interp_init_sub (zfill.S) against its reference (src/zrows.c):
+ * every s0 (0..15) and the limits of n (1, 2, 255, 256), dv (0, +-1,
+ * +-4095) and base (-32768, 32767: val saturates), then random inputs
+ * in the whole domain; all five fields equal ---- */
+static void check_init_sub(r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n, unsigned long i)
+{
+    r8_interp a, b;
+    memset(&a, 0x5A, sizeof a);
+    memset(&b, 0xA5, sizeof b);
+    r8_interp_init_sub_ref(&b, base, s0, dv, n);
+    r8_interp_init_sub(&a, base, s0, dv, n);
+    if (!interp_eq(&a, &b)) {
+        print_case("r8_interp_init_sub", i);
+        unity_fail_int(__LINE__, "r8_interp_init_sub differs from the reference", (long)a.val, (long)b.val);
+    }
+}
+
+static void test_init_sub_random(void)
+{
+    static const r8_u16 ns[] = { 1, 2, 3, 16, 255, 256 };
+    static const r8_s16 dvs[] = { 0, 1, -1, 4095, -4095, 2048, -2048 };
+    static const r8_s16 bases[] = { -32767 - 1, 32767, 0, 12345 };
+    unsigned long i = 0;
+    unsigned s0, a, b, c;
+    for (s0 = 0; s0 < 16; s0++)
+        for (a = 0; a < 6; a++)
+            for (b = 0; b < 7; b++)
+                for (c = 0; c < 4; c++)
+                    check_init_sub(bases[c], (r8_u16)s0, dvs[b], ns[a], i++);
+    for (i = 0; i < 20000; i++)
+        check_init_sub((r8_s16)rnd(), (r8_u16)rndn(16), rnds(-4095, 4095),
+                       (r8_u16)(1u + rndn(256)), i);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -342,5 +379,6 @@ int main(void)
     RUN_TEST(test_project_random);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_zrows_random);
+    RUN_TEST(test_init_sub_random);
     return UNITY_END();
 }
