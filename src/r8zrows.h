@@ -31,4 +31,13 @@ typedef struct r8_zrows {
  * or is 256 columns or more (r8_zfill draws that row). */
 r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
 
+/* The attribute k (2: depth, 3: shade) of the edge from vertex a down
+ * to vertex b (x, y in 12.4, then the attributes) at row y, when that
+ * is the edge's first row and the edge at most 256 subpixels tall:
+ * r8_interp_init_sub(it, a[k], s0, b[k] - a[k], n), s0 = y * 16 + 8 -
+ * a[1], n = b[1] - a[1] (<= 0: 1); returns 1.  0 (it untouched) when
+ * not (y outside 0..2047, s0 outside 0..15, n > 256, or |b[k] - a[k]| >=
+ * 4096): the caller's general set-up then. */
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
+
 #endif

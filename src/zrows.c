@@ -128,3 +128,19 @@ void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16
     it->den = n;
 }
 #endif
+
+#ifndef R8_ASM_ZFILL
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k)
+{
+    r8_s16 ay = a[1], by = b[1];
+    /* 16 bits, exact for 0 <= y < 2048: s0 then lies in (-32760, 65528] */
+    r8_u16 s0 = (r8_u16)((r8_u16)y * R8_SUBPX + 8u - (r8_u16)ay);
+    r8_u16 n = by > ay ? (r8_u16)(by - ay) : 1u;
+    r8_s32 dv = (r8_s32)b[k] - a[k];
+    if ((r8_u16)y >= 2048u || s0 >= R8_SUBPX || n > 256u ||
+        dv <= -(65536L / R8_SUBPX) || dv >= 65536L / R8_SUBPX)
+        return 0;
+    r8_interp_init_sub(it, a[k], s0, (r8_s16)dv, n);
+    return 1;
+}
+#endif

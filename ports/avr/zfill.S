@@ -421,6 +421,92 @@ r8_interp_init_sub:
         st      X+, r17
         ret
 
+/* int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b,
+ *                   r8_s16 y, r8_u8 k)                 (src/r8zrows.h)
+ * In: r25:24 it, r23:22 a, r21:20 b, r19:18 y, r16 k.  The checks of
+ * src/zrows.c's reference, then r8_interp_init_sub(it, a[k], s0, dv, n)
+ * (r17:r16 kept around it); returns 1, or 0 with it untouched. */
+        .global r8_attr_first
+        .type   r8_attr_first, @function
+r8_attr_first:
+        cpi     r19, 8                  /* y < 2048 (unsigned) */
+        brsh    .Lafail
+        movw    r30, r22                /* X = ay */
+        ldd     r26, Z+2
+        ldd     r27, Z+3
+        add     r30, r16                /* r23:r22 = a[k] */
+        adc     r31, r1
+        add     r30, r16
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        lsl     r18                     /* s0 = 16 y + 8 - ay */
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        subi    r18, 0xF8
+        sbci    r19, 0xFF
+        sub     r18, r26
+        sbc     r19, r27
+        tst     r19                     /* s0 < 16 */
+        brne    .Lafail
+        cpi     r18, 16
+        brsh    .Lafail
+        movw    r30, r20                /* n = by - ay, or 1 */
+        ldd     r20, Z+2
+        ldd     r21, Z+3
+        cp      r26, r20
+        cpc     r27, r21
+        brlt    1f
+        ldi     r20, 1
+        ldi     r21, 0
+        rjmp    2f
+.Lafail:                                /* (here: in reach of every branch) */
+        ldi     r24, 0
+        ldi     r25, 0
+        ret
+1:      sub     r20, r26
+        sbc     r21, r27
+2:      cpi     r21, 1                  /* n <= 256 */
+        brlo    3f
+        brne    .Lafail
+        cpi     r20, 0
+        brne    .Lafail
+3:      add     r30, r16                /* dv = b[k] - a[k] */
+        adc     r31, r1
+        add     r30, r16
+        adc     r31, r1
+        ld      r26, Z
+        ldd     r27, Z+1
+        sub     r26, r22
+        sbc     r27, r23
+        brvs    .Lafail                 /* |dv| >= 32768 */
+        cpi     r26, 0x00               /* dv < 4096 */
+        ldi     r30, 0x10
+        cpc     r27, r30
+        brge    .Lafail
+        cpi     r26, 0x01               /* dv >= -4095 */
+        ldi     r30, 0xF0
+        cpc     r27, r30
+        brlt    .Lafail
+        push    r16
+        push    r17
+        movw    r16, r20                /* n */
+        mov     r20, r18                /* s0 */
+        ldi     r21, 0
+        movw    r18, r26                /* dv */
+        rcall   r8_interp_init_sub
+        pop     r17
+        pop     r16
+        ldi     r24, 1
+        ldi     r25, 0
+        ret
+        .size   r8_attr_first, .-r8_attr_first
+
 /* r25:r24 = n - 1 - r25:r24 (n in r17:r16) */
 nrem:
         mov     r0, r16

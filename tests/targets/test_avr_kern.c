@@ -231,9 +231,12 @@ static void test_fill_random(void)
  * four interpolators and t's z, page, m, k must end equal. ---- */
 #define r8k_zrows r8k_zrows_ref
 #define r8_interp_init_sub r8_interp_init_sub_ref
+#define r8_attr_first r8_attr_first_ref
 #include "zrows.c"
 #undef r8k_zrows
 #undef r8_interp_init_sub
+#undef r8_attr_first
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
 r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
 void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
 
@@ -368,6 +371,52 @@ static void test_init_sub_random(void)
                        (r8_u16)(1u + rndn(256)), i);
 }
 
+/* ---- r8_attr_first (zfill.S) against its reference (src/zrows.c):
+ * edges placed around each of its limits (y 0 / 2047 / 2048 / < 0, s0
+ * -1 / 0 / 15 / 16, n 1 / 256 / 257, by <= ay, dv +-4095 / +-4096 and
+ * 16-bit overflow) and random; the return value and all of it (left as
+ * it was on 0) equal; both outcomes counted ---- */
+static void test_attr_first_random(void)
+{
+    unsigned long i, taken = 0;
+    for (i = 0; i < 20000; i++) {
+        r8_s16 a[4], b[4], y;
+        r8_interp ia, ir;
+        r8_u8 k = (r8_u8)(2 + rndn(2));
+        int ra, rr;
+        unsigned c = rndn(8);
+        y = c == 0 ? rnds(-3, 3) : c == 1 ? rnds(2044, 2050) : c == 2 ? (r8_s16)rnd() : rnds(0, 200);
+        a[0] = (r8_s16)rnd();
+        b[0] = (r8_s16)rnd();
+        a[1] = (r8_s16)((r8_u16)y * 16u + 8u - (r8_u16)rnds(-2, 17));      /* s0 around 0..15 */
+        if (rndn(8) == 0)
+            a[1] = (r8_s16)rnd();
+        c = rndn(8);
+        b[1] = (r8_s16)(a[1] + (c == 0 ? rnds(-300, 0) : c == 1 ? rnds(254, 258) : rnds(1, 300)));
+        if (rndn(8) == 0)
+            b[1] = (r8_s16)rnd();
+        a[2] = rnds(0, 32767);
+        a[3] = rnds(0, 4096);
+        c = rndn(8);
+        b[k] = (r8_s16)(a[k] + (c == 0 ? rnds(4094, 4097) : c == 1 ? rnds(-4097, -4094) : rnds(-5000, 5000)));
+        if (rndn(8) == 0)
+            b[k] = (r8_s16)rnd();
+        b[5 - k] = (r8_s16)rnd();
+        a[5 - k] = (r8_s16)rnd();
+        memset(&ia, 0x5A, sizeof ia);
+        memset(&ir, 0x5A, sizeof ir);
+        rr = r8_attr_first_ref(&ir, a, b, y, k);
+        ra = r8_attr_first(&ia, a, b, y, k);
+        taken += rr != 0;
+        if (ra != rr || memcmp(&ia, &ir, sizeof ia) != 0) {
+            print_case("r8_attr_first", i);
+            unity_fail_int(__LINE__, "r8_attr_first differs from the reference", (long)ra, (long)rr);
+        }
+    }
+    if (taken < 3000 || taken > 17000)
+        unity_fail_int(__LINE__, "r8_attr_first: one outcome too rare", 3000, (long)taken);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -380,5 +429,6 @@ int main(void)
     RUN_TEST(test_fill_random);
     RUN_TEST(test_zrows_random);
     RUN_TEST(test_init_sub_random);
+    RUN_TEST(test_attr_first_random);
     return UNITY_END();
 }
