@@ -7,6 +7,17 @@
 
 #include "r8raster.h"
 
+/* r8_zfill's rows and the edges' first-row attribute set-up go through
+ * r8k_zrows and r8_attr_first with the AVR kernels (R8_ASM_ZFILL) and
+ * on the host (the C references, which the frames there then check);
+ * the 6502 and the Z80 (and the AVR without the kernels) keep the
+ * general C, smaller. */
+#if defined(R8_ASM_ZFILL) || !(defined(__AVR__) || defined(__CC65__) || defined(__SDCC))
+#define R8_ZROWS 1
+#else
+#define R8_ZROWS 0
+#endif
+
 /* The kernel's state.  Layout fixed (zfill.S's offsets): pointers and
  * u16 are 2 bytes on the AVR, no padding. */
 typedef struct r8_zrows {

@@ -48,9 +48,11 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     r8_u8 to = e->vi, from = back(c, to, dir);
     const r8_s16 *a = c->vp[from];
     const r8_s16 *b = c->vp[to];
+#if R8_ZROWS
     if ((!(s->attrs & R8_ATTR_D) || r8_attr_first(d, a, b, y, 2)) &&
         (!(s->attrs & R8_ATTR_S) || r8_attr_first(sh, a, b, y, 3)))
         return;
+#endif
     attr_any(a, b, s->attrs, y, d, sh);
 }
 

@@ -153,6 +153,39 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
 }
 
 
+/* floor(65536 / n), n = 2..256 ([1] unused: n = 1 is the quotient
+ * itself): the per-span division of r8_zfill as a product, and the
+ * attribute set-ups' of src/zrows.c and ports/avr/zfill.S
+ * (src/r8int.h). */
+const r8_u16 r8_rcp256[257] R8_FLASH = {
+    0u, 65535u, 32768u, 21845u, 16384u, 13107u, 10922u, 9362u, 8192u, 7281u,
+    6553u, 5957u, 5461u, 5041u, 4681u, 4369u, 4096u, 3855u, 3640u, 3449u,
+    3276u, 3120u, 2978u, 2849u, 2730u, 2621u, 2520u, 2427u, 2340u, 2259u,
+    2184u, 2114u, 2048u, 1985u, 1927u, 1872u, 1820u, 1771u, 1724u, 1680u,
+    1638u, 1598u, 1560u, 1524u, 1489u, 1456u, 1424u, 1394u, 1365u, 1337u,
+    1310u, 1285u, 1260u, 1236u, 1213u, 1191u, 1170u, 1149u, 1129u, 1110u,
+    1092u, 1074u, 1057u, 1040u, 1024u, 1008u, 992u, 978u, 963u, 949u,
+    936u, 923u, 910u, 897u, 885u, 873u, 862u, 851u, 840u, 829u,
+    819u, 809u, 799u, 789u, 780u, 771u, 762u, 753u, 744u, 736u,
+    728u, 720u, 712u, 704u, 697u, 689u, 682u, 675u, 668u, 661u,
+    655u, 648u, 642u, 636u, 630u, 624u, 618u, 612u, 606u, 601u,
+    595u, 590u, 585u, 579u, 574u, 569u, 564u, 560u, 555u, 550u,
+    546u, 541u, 537u, 532u, 528u, 524u, 520u, 516u, 512u, 508u,
+    504u, 500u, 496u, 492u, 489u, 485u, 481u, 478u, 474u, 471u,
+    468u, 464u, 461u, 458u, 455u, 451u, 448u, 445u, 442u, 439u,
+    436u, 434u, 431u, 428u, 425u, 422u, 420u, 417u, 414u, 412u,
+    409u, 407u, 404u, 402u, 399u, 397u, 394u, 392u, 390u, 387u,
+    385u, 383u, 381u, 378u, 376u, 374u, 372u, 370u, 368u, 366u,
+    364u, 362u, 360u, 358u, 356u, 354u, 352u, 350u, 348u, 346u,
+    344u, 343u, 341u, 339u, 337u, 336u, 334u, 332u, 330u, 329u,
+    327u, 326u, 324u, 322u, 321u, 319u, 318u, 316u, 315u, 313u,
+    312u, 310u, 309u, 307u, 306u, 304u, 303u, 302u, 300u, 299u,
+    297u, 296u, 295u, 293u, 292u, 291u, 289u, 288u, 287u, 286u,
+    284u, 283u, 282u, 281u, 280u, 278u, 277u, 276u, 275u, 274u,
+    273u, 271u, 270u, 269u, 268u, 267u, 266u, 265u, 264u, 263u,
+    262u, 261u, 260u, 259u, 258u, 257u, 256u
+};
+
 /* d from base over n pixels by diff, with no rounding offset: the same
  * q, r, den as r8_interp_init(d, base, 0, diff, n) for |diff| < 32768,
  * the quotient from the reciprocal (one correction) for n <= 256. */
@@ -277,9 +310,8 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     r8_edge *l = &c->l, *r = &c->r;
     r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, y = c->y;
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
+#if R8_ZROWS
     r8_zrows t;
-    if (lim > fb->y0 + fb->rows)
-        lim = (r8_s16)(fb->y0 + fb->rows);
     t.lx = &l->x;
     t.rx = &r->x;
     t.ld = &s->ld;
@@ -289,10 +321,14 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     t.pat[1] = R8_FB_DITHER(lv, 1);
     t.pat[2] = R8_FB_DITHER(lv, 2);
     t.pat[3] = R8_FB_DITHER(lv, 3);
+#endif
+    if (lim > fb->y0 + fb->rows)
+        lim = (r8_s16)(fb->y0 + fb->rows);
     while (y < lim) {
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
+#if R8_ZROWS
         if (bits16 && y >= fb->y0 && (!judd || c->front)) {
             /* the rows on which neither edge moves on: r8k_zrows
              * (src/r8zrows.h), up to a row it leaves to zfill_row */
@@ -312,6 +348,7 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
                     continue;
             }
         }
+#endif
         if (y >= fb->y0)
             zfill_row(st, s, fb, y, lv, bits16);
         R8_INTERP_STEP(&l->x);

@@ -1,10 +1,12 @@
 /* zrows.c - r8k_zrows (src/r8zrows.h) and r8_interp_init_sub
  * (r8raster.h), the C89 references of the AVR kernels in
- * ports/avr/zfill.S (chosen by R8_ASM_ZFILL). */
+ * ports/avr/zfill.S (chosen by R8_ASM_ZFILL).  r8k_zrows and
+ * r8_attr_first are compiled where R8_ZROWS (src/r8zrows.h) uses them,
+ * or with R8_ZROWS_REF (the AVR kernel test). */
 #include "r8zrows.h"
 #include "r8int.h"
 
-#ifndef R8_ASM_ZFILL
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
 r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
 {
     r8_interp *lx = t->lx, *rx = t->rx, *ld = t->ld, *rd = t->rd;
@@ -129,7 +131,7 @@ void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16
 }
 #endif
 
-#ifndef R8_ASM_ZFILL
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k)
 {
     r8_s16 ay = a[1], by = b[1];

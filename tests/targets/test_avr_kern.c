@@ -229,6 +229,7 @@ static void test_fill_random(void)
  * now and then left of 0 or 256+ wide: the rows the kernel leaves),
  * depths anywhere in 0..32767.  All the memory, the return value, the
  * four interpolators and t's z, page, m, k must end equal. ---- */
+#define R8_ZROWS_REF 1
 #define r8k_zrows r8k_zrows_ref
 #define r8_interp_init_sub r8_interp_init_sub_ref
 #define r8_attr_first r8_attr_first_ref
