@@ -15,32 +15,9 @@ static r8_u8 back(const r8_scanx *s, r8_u8 i, int dir)
     return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
 }
 
-/* The general attribute set-up: any row, any edge height. */
-static void attr_any(const r8_s16 *a, const r8_s16 *b, r8_u8 attrs, r8_s16 y,
-                     r8_interp *d, r8_interp *sh)
-{
-    r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
-    r8_u8 sh1 = 0;
-    if (dy <= 0)
-        dy = 1;
-    if (dy > 32767) {
-        dy = (dy + 1) >> 1;
-        s0 >>= 1;
-        sh1 = 1;
-    }
-    if (attrs & R8_ATTR_D) {
-        dv = (r8_s32)b[2] - a[2];
-        r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
-    }
-    if (attrs & R8_ATTR_S) {
-        dv = (r8_s32)b[3] - a[3];
-        r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
-    }
-}
-
 /* Attribute interpolator for the edge of e (its upper vertex is the one
- * before e->vi in direction dir), at row y: at an edge's first row,
- * r8_attr_first (src/r8zrows.h), without a division. */
+ * before e->vi in direction dir), at row y.  At an edge's first row
+ * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division. */
 static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
                        r8_interp *d, r8_interp *sh)
 {
@@ -53,7 +30,25 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
         (!(s->attrs & R8_ATTR_S) || r8_attr_first(sh, a, b, y, 3)))
         return;
 #endif
-    attr_any(a, b, s->attrs, y, d, sh);
+    {
+        r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
+        r8_u8 sh1 = 0;
+        if (dy <= 0)
+            dy = 1;
+        if (dy > 32767) {
+            dy = (dy + 1) >> 1;
+            s0 >>= 1;
+            sh1 = 1;
+        }
+        if (s->attrs & R8_ATTR_D) {
+            dv = (r8_s32)b[2] - a[2];
+            r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        }
+        if (s->attrs & R8_ATTR_S) {
+            dv = (r8_s32)b[3] - a[3];
+            r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        }
+    }
 }
 
 void r8_scan_attrs(r8_scan *s)

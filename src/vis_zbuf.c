@@ -152,7 +152,6 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
     }
 }
 
-
 /* floor(65536 / n), n = 2..256 ([1] unused: n = 1 is the quotient
  * itself): the per-span division of r8_zfill as a product, and the
  * attribute set-ups' of src/zrows.c and ports/avr/zfill.S
@@ -224,91 +223,12 @@ static void span_step(r8_interp *d, r8_s16 base, r8_s16 diff, r8_u16 n)
     d->den = n;
 }
 
-/* One row y of r8_zfill's face (the rows r8k_zrows leaves, and the
- * 8-bit z-buffer's): the span [l, r) from depth ld to rd. */
-static void zfill_row(r8_state *st, r8_scan *s, r8_fb *fb, r8_s16 y, r8_u8 lv, int bits16)
-{
-    r8_scanx *c = &s->c;
-    r8_edge *l = &c->l, *r = &c->r;
-    r8_s16 w = fb->width, xl, xr;
-    xl = l->x.val;
-    xr = r->x.val;
-    if (xl < xr && y >= fb->y0) {
-        /* r8_vis_zbuf's span [xl, xr) from depth ld to rd */
-        r8_s16 xa = xl, xb = xr > w ? w : xr;
-        r8_interp d;
-        if (xa < 0) {
-            xa = 0;
-            r8_interp_init_mul(&d, s->ld.val, -xl, (r8_s32)s->rd.val - s->ld.val,
-                               (r8_s32)s->rd.val - s->ld.val, (r8_u16)(xr - xl));
-        } else {
-            span_step(&d, s->ld.val, (r8_s16)(s->rd.val - s->ld.val), (r8_u16)(xr - xl));
-        }
-        if (xa < xb) {
-            /* the loop on locals: the interpolator, the row's page
-             * byte and bit, the dither pattern and its bit for x */
-            r8_u16 by = (r8_u16)(y - fb->y0);
-            r8_u8 *bp = fb->buf + (by >> 3) * (unsigned)w + xa;
-            r8_u8 m = R8_FB_BIT(by), nm = (r8_u8)~m;
-            r8_u8 pat = R8_FB_DITHER(lv, y), mb = R8_FB_BIT(7 - (xa & 7));
-            r8_s16 dv = d.val, dq = d.q;
-            r8_u16 de = d.err, dr = d.r, dn = d.den, k = (r8_u16)(xb - xa);
-            if (bits16) {
-                r8_u16 *z = (r8_u16 *)(void *)st->depth + by * (unsigned)w + xa;
-                do {
-                    if ((r8_u16)dv >= *z) {
-                        *z = (r8_u16)dv;
-                        if (pat & mb)
-                            *bp |= m;
-                        else
-                            *bp &= nm;
-                    }
-                    z++;
-                    bp++;
-                    mb = (r8_u8)(mb >> 1);
-                    if (!mb)
-                        mb = 0x80;
-                    dv = (r8_s16)(dv + dq);
-                    de = (r8_u16)(de + dr);
-                    if (de >= dn) {
-                        de = (r8_u16)(de - dn);
-                        dv++;
-                    }
-                } while (--k);
-            } else {
-                r8_u8 *z = st->depth + by * (unsigned)w + xa;
-                do {
-                    r8_u8 d8 = (r8_u8)(dv >> 7);
-                    if (d8 >= *z) {
-                        *z = d8;
-                        if (pat & mb)
-                            *bp |= m;
-                        else
-                            *bp &= nm;
-                    }
-                    z++;
-                    bp++;
-                    mb = (r8_u8)(mb >> 1);
-                    if (!mb)
-                        mb = 0x80;
-                    dv = (r8_s16)(dv + dq);
-                    de = (r8_u16)(de + dr);
-                    if (de >= dn) {
-                        de = (r8_u16)(de - dn);
-                        dv++;
-                    }
-                } while (--k);
-            }
-        }
-    }
-}
-
 void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
 {
     r8_scan *s = &a->s;
     r8_scanx *c = &s->c;
     r8_edge *l = &c->l, *r = &c->r;
-    r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, y = c->y;
+    r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, w = fb->width, y = c->y;
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
 #if R8_ZROWS
     r8_zrows t;
@@ -316,7 +236,7 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     t.rx = &r->x;
     t.ld = &s->ld;
     t.rd = &s->rd;
-    t.w = (r8_u16)fb->width;
+    t.w = (r8_u16)w;
     t.pat[0] = R8_FB_DITHER(lv, 0);
     t.pat[1] = R8_FB_DITHER(lv, 1);
     t.pat[2] = R8_FB_DITHER(lv, 2);
@@ -324,14 +244,15 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
 #endif
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);
-    while (y < lim) {
+    for (; y < lim; y++) {
+        r8_s16 xl, xr;
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
 #if R8_ZROWS
         if (bits16 && y >= fb->y0 && (!judd || c->front)) {
             /* the rows on which neither edge moves on: r8k_zrows
-             * (src/r8zrows.h), up to a row it leaves to zfill_row */
+             * (src/r8zrows.h), up to a row it leaves to the code below */
             r8_s16 end = lim;
             r8_u16 by = (r8_u16)(y - fb->y0);
             if (l->yend < end)
@@ -339,23 +260,92 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
             if (r->yend < end)
                 end = r->yend;
             if (end > y) {
-                t.z = (r8_u16 *)(void *)st->depth + by * t.w;
-                t.page = fb->buf + (by >> 3) * t.w;
+                t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
+                t.page = fb->buf + (by >> 3) * (unsigned)w;
                 t.m = R8_FB_BIT(by);
                 t.k = (r8_u8)(y & 3);
                 y = (r8_s16)(end - (r8_s16)r8k_zrows(&t, (r8_u16)(end - y)));
-                if (y >= end)
+                if (y >= end) {
+                    y--;          /* the loop's y++: on to row end */
                     continue;
+                }
             }
         }
 #endif
-        if (y >= fb->y0)
-            zfill_row(st, s, fb, y, lv, bits16);
+        xl = l->x.val;
+        xr = r->x.val;
+        if (xl < xr && y >= fb->y0) {
+            /* r8_vis_zbuf's span [xl, xr) from depth ld to rd */
+            r8_s16 xa = xl, xb = xr > w ? w : xr;
+            r8_interp d;
+            if (xa < 0) {
+                xa = 0;
+                r8_interp_init_mul(&d, s->ld.val, -xl, (r8_s32)s->rd.val - s->ld.val,
+                                   (r8_s32)s->rd.val - s->ld.val, (r8_u16)(xr - xl));
+            } else {
+                span_step(&d, s->ld.val, (r8_s16)(s->rd.val - s->ld.val), (r8_u16)(xr - xl));
+            }
+            if (xa < xb) {
+                /* the loop on locals: the interpolator, the row's page
+                 * byte and bit, the dither pattern and its bit for x */
+                r8_u16 by = (r8_u16)(y - fb->y0);
+                r8_u8 *bp = fb->buf + (by >> 3) * (unsigned)w + xa;
+                r8_u8 m = R8_FB_BIT(by), nm = (r8_u8)~m;
+                r8_u8 pat = R8_FB_DITHER(lv, y), mb = R8_FB_BIT(7 - (xa & 7));
+                r8_s16 dv = d.val, dq = d.q;
+                r8_u16 de = d.err, dr = d.r, dn = d.den, k = (r8_u16)(xb - xa);
+                if (bits16) {
+                    r8_u16 *z = (r8_u16 *)(void *)st->depth + by * (unsigned)w + xa;
+                    do {
+                        if ((r8_u16)dv >= *z) {
+                            *z = (r8_u16)dv;
+                            if (pat & mb)
+                                *bp |= m;
+                            else
+                                *bp &= nm;
+                        }
+                        z++;
+                        bp++;
+                        mb = (r8_u8)(mb >> 1);
+                        if (!mb)
+                            mb = 0x80;
+                        dv = (r8_s16)(dv + dq);
+                        de = (r8_u16)(de + dr);
+                        if (de >= dn) {
+                            de = (r8_u16)(de - dn);
+                            dv++;
+                        }
+                    } while (--k);
+                } else {
+                    r8_u8 *z = st->depth + by * (unsigned)w + xa;
+                    do {
+                        r8_u8 d8 = (r8_u8)(dv >> 7);
+                        if (d8 >= *z) {
+                            *z = d8;
+                            if (pat & mb)
+                                *bp |= m;
+                            else
+                                *bp &= nm;
+                        }
+                        z++;
+                        bp++;
+                        mb = (r8_u8)(mb >> 1);
+                        if (!mb)
+                            mb = 0x80;
+                        dv = (r8_s16)(dv + dq);
+                        de = (r8_u16)(de + dr);
+                        if (de >= dn) {
+                            de = (r8_u16)(de - dn);
+                            dv++;
+                        }
+                    } while (--k);
+                }
+            }
+        }
         R8_INTERP_STEP(&l->x);
         R8_INTERP_STEP(&r->x);
         R8_INTERP_STEP(&s->ld);
         R8_INTERP_STEP(&s->rd);
-        y++;
     }
     c->y = y;
 }

@@ -12,7 +12,8 @@
  * floor((rd - ld) / n) from r8_rcp256[n] (n = 1..255: q or q - 1, one
  * correction), with an 8-bit error (r < n <= 255).  Per pixel: depth
  * test, store, page bit set or cleared by bit 7 of the pattern (rotated
- * left per column), DDA step.
+ * left per column), DDA step; the drawn and the skipped pixel each with
+ * its own copy of the step (no jump back into a shared tail).
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
@@ -148,8 +149,10 @@ r8k_zrows:
         add     r30, r0
         adc     r31, r1
         ldd     r5, Z+16
-        mov     r20, LXVL               /* rotated left by xl & 7 */
-        andi    r20, 7
+        mov     r20, LXVL               /* rotated left by xl & 7: */
+        sbrc    r20, 2                  /* 4 (swap), then xl & 3 */
+        swap    r5
+        andi    r20, 3
         breq    7f
 6:      lsl     r5
         adc     r5, r1
@@ -228,26 +231,17 @@ r8k_zrows:
         ldd     r0, Z+1
         cpc     r19, r0
         brlo    .Lskip
-        st      Z, r18
-        std     Z+1, r19
+        st      Z+, r18                 /* nearer or equal: depth, pixel */
+        st      Z+, r19
         ld      r0, X
         lsl     r5
         brcc    11f
         inc     r5
         or      r0, r7
-        st      X, r0
-        rjmp    .Ldda
+        rjmp    15f
 11:     and     r0, r4
-        st      X, r0
-        rjmp    .Ldda
-.Lskip:
-        lsl     r5
-        brcc    .Ldda
-        inc     r5
-.Ldda:
-        adiw    r26, 1
-        adiw    r30, 2
-        add     r18, r20
+15:     st      X+, r0
+        add     r18, r20                /* the DDA (twice: no jump) */
         adc     r19, r21
         add     r24, r25
         brcs    12f
@@ -258,6 +252,25 @@ r8k_zrows:
         sbci    r19, 0xFF
 13:     dec     r1
         brne    .Lpx
+        rjmp    .Lpxend
+.Lskip:
+        lsl     r5
+        brcc    16f
+        inc     r5
+16:     adiw    r26, 1
+        adiw    r30, 2
+        add     r18, r20
+        adc     r19, r21
+        add     r24, r25
+        brcs    17f
+        cp      r24, r6
+        brlo    18f
+17:     sub     r24, r6
+        subi    r18, 0xFF
+        sbci    r19, 0xFF
+18:     dec     r1
+        brne    .Lpx
+.Lpxend:
         pop     r7
         pop     r6
         pop     r5
