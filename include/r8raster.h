@@ -37,6 +37,10 @@ void r8_interp_init(r8_interp *it, r8_s16 base, r8_s32 num0, r8_s32 step,
  * quotient fits 16 bits. */
 void r8_interp_init_mul(r8_interp *it, r8_s16 base, r8_s32 a, r8_s32 b,
                         r8_s32 step, r8_u16 den);
+/* r8_interp_init_mul(it, base, s0, dv, dv * R8_SUBPX, n) without a
+ * division (an edge's attribute at its first row), for
+ * 0 <= s0 < R8_SUBPX, n = 1..256, |dv| < 65536 / R8_SUBPX. */
+void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
 #define R8_INTERP_STEP(it) do { (it)->val = (r8_s16)((it)->val + (it)->q); \
     (it)->err = (r8_u16)((it)->err + (it)->r); \
     if ((it)->err >= (it)->den) { (it)->err = (r8_u16)((it)->err - (it)->den); (it)->val++; } } while (0)

@@ -22,10 +22,11 @@
 # AVR assembly kernels (include/r8kern.h): ports/avr/trap.S, xform.S,
 # edge.S, project.S, fill.S, facecull.S, facelevel.S and facez.S go into both AVR archives, whose library
 # objects are compiled with -DR8_ASM_TRAP -DR8_ASM_XFORM -DR8_ASM_EDGE
-# -DR8_ASM_PROJECT -DR8_ASM_FILL -DR8_ASM_CULL -DR8_ASM_LEVEL -DR8_ASM_ZSUM (src/kern.c then leaves its C references out); the
+# -DR8_ASM_PROJECT -DR8_ASM_FILL -DR8_ASM_CULL -DR8_ASM_LEVEL -DR8_ASM_ZSUM (src/kern.c then leaves its C references out),
+# and zfill.S with -DR8_ASM_ZFILL (src/r8zrows.h: src/zrows.c's reference); the
 # host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
-# project fill facecull facelevel facez) with those only, for before/after figures; as an environment
+# project fill facecull facelevel facez zfill) with those only, for before/after figures; as an environment
 # variable it also reaches make bench (`AVR_ASM=0 make bench`).
 # build/x/avr-kernels.txt records the choice and AVR_CFLAGS, so changing
 # either rebuilds the AVR objects.
@@ -111,12 +112,13 @@ Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KALL   := trap xform edge project fill facecull facelevel facez
+AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
 AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP -DR8_ASM_SCANFILL) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
               $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE -DR8_ASM_ESTART) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
-              $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM)
+              $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM) \
+              $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p
@@ -313,7 +315,7 @@ $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 # test under other names, without R8_ASM_*), whatever AVR_ASM says
 XKERN := $(XB)/avr1284/tests/avr_kern.elf
 XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/unity_target.o
-$(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
+$(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c src/zrows.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c
 	$(XENV) bash ports/xbuild.sh avr1284 $@ $(basename $@).wrap.c $(XKERN_OBJS) -- -Isrc -Itests/unity -Itests/targets

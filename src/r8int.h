@@ -278,4 +278,8 @@ void r8_tex_face(r8_state *st, r8_tact *t, r8_u16 g, r8_u8 oi, r8_u8 n);
 void r8_tex_draw(r8_state *st, r8_tact *t, r8_s16 ylimit, r8_fb *fb);
 r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg);
 
+/* floor(65536 / n) for n = 2..256, in flash (vis_zbuf.c): the quotients
+ * of a u16 by n = 1..256 as a product and one correction */
+extern const r8_u16 r8_rcp256[257] R8_FLASH;
+
 #endif

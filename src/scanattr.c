@@ -5,6 +5,7 @@
 #include "r8raster.h"
 #include "r8fixed.h"
 #include "r8scan.h"
+#include "r8zrows.h"
 
 /* previous position on the polygon going the other way */
 static r8_u8 back(const r8_scanx *s, r8_u8 i, int dir)
@@ -15,7 +16,8 @@ static r8_u8 back(const r8_scanx *s, r8_u8 i, int dir)
 }
 
 /* Attribute interpolator for the edge of e (its upper vertex is the one
- * before e->vi in direction dir), at row y. */
+ * before e->vi in direction dir), at row y.  At an edge's first row
+ * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division. */
 static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
                        r8_interp *d, r8_interp *sh)
 {
@@ -23,22 +25,29 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     r8_u8 to = e->vi, from = back(c, to, dir);
     const r8_s16 *a = c->vp[from];
     const r8_s16 *b = c->vp[to];
-    r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
-    r8_u8 sh1 = 0;
-    if (dy <= 0)
-        dy = 1;
-    if (dy > 32767) {
-        dy = (dy + 1) >> 1;
-        s0 >>= 1;
-        sh1 = 1;
-    }
-    if (s->attrs & R8_ATTR_D) {
-        dv = (r8_s32)b[2] - a[2];
-        r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
-    }
-    if (s->attrs & R8_ATTR_S) {
-        dv = (r8_s32)b[3] - a[3];
-        r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+#if R8_ZROWS
+    if ((!(s->attrs & R8_ATTR_D) || r8_attr_first(d, a, b, y, 2)) &&
+        (!(s->attrs & R8_ATTR_S) || r8_attr_first(sh, a, b, y, 3)))
+        return;
+#endif
+    {
+        r8_s32 s0 = r8_mul16(y, R8_SUBPX) + 8 - a[1], dy = (r8_s32)b[1] - a[1], dv;
+        r8_u8 sh1 = 0;
+        if (dy <= 0)
+            dy = 1;
+        if (dy > 32767) {
+            dy = (dy + 1) >> 1;
+            s0 >>= 1;
+            sh1 = 1;
+        }
+        if (s->attrs & R8_ATTR_D) {
+            dv = (r8_s32)b[2] - a[2];
+            r8_interp_init_mul(d, a[2], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        }
+        if (s->attrs & R8_ATTR_S) {
+            dv = (r8_s32)b[3] - a[3];
+            r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
+        }
     }
 }
 

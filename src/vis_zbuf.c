@@ -5,6 +5,7 @@
  * depth is >= the stored one (so the later of two equal depths wins). */
 #include "r8int.h"
 #include "r8scan.h"
+#include "r8zrows.h"
 
 /* Gouraud shade (8.8) to a dither level 0..16, rounded. */
 r8_u8 r8_vis_level(r8_s16 s)
@@ -151,9 +152,11 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
     }
 }
 
-/* floor(65536 / n), n = 2..256 (rcp[1] unused: n = 1 is the quotient
- * itself): the per-span division of r8_zfill as a product. */
-static const r8_u16 rcp[257] R8_FLASH = {
+/* floor(65536 / n), n = 2..256 ([1] unused: n = 1 is the quotient
+ * itself): the per-span division of r8_zfill as a product, and the
+ * attribute set-ups' of src/zrows.c and ports/avr/zfill.S
+ * (src/r8int.h). */
+const r8_u16 r8_rcp256[257] R8_FLASH = {
     0u, 65535u, 32768u, 21845u, 16384u, 13107u, 10922u, 9362u, 8192u, 7281u,
     6553u, 5957u, 5461u, 5041u, 4681u, 4369u, 4096u, 3855u, 3640u, 3449u,
     3276u, 3120u, 2978u, 2849u, 2730u, 2621u, 2520u, 2427u, 2340u, 2259u,
@@ -200,7 +203,7 @@ static void span_step(r8_interp *d, r8_s16 base, r8_s16 diff, r8_u16 n)
         rr = 0;
     } else {
         p = un;
-        p *= R8_RDU16(&rcp[n]);
+        p *= R8_RDU16(&r8_rcp256[n]);
         q = (r8_u16)(p >> 16);                           /* q or q - 1 */
         rr = (r8_u16)(un - q * n);
         if (rr >= n) {
@@ -227,6 +230,18 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     r8_edge *l = &c->l, *r = &c->r;
     r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, w = fb->width, y = c->y;
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
+#if R8_ZROWS
+    r8_zrows t;
+    t.lx = &l->x;
+    t.rx = &r->x;
+    t.ld = &s->ld;
+    t.rd = &s->rd;
+    t.w = (r8_u16)w;
+    t.pat[0] = R8_FB_DITHER(lv, 0);
+    t.pat[1] = R8_FB_DITHER(lv, 1);
+    t.pat[2] = R8_FB_DITHER(lv, 2);
+    t.pat[3] = R8_FB_DITHER(lv, 3);
+#endif
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);
     for (; y < lim; y++) {
@@ -234,6 +249,29 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
+#if R8_ZROWS
+        if (bits16 && y >= fb->y0 && (!judd || c->front)) {
+            /* the rows on which neither edge moves on: r8k_zrows
+             * (src/r8zrows.h), up to a row it leaves to the code below */
+            r8_s16 end = lim;
+            r8_u16 by = (r8_u16)(y - fb->y0);
+            if (l->yend < end)
+                end = l->yend;
+            if (r->yend < end)
+                end = r->yend;
+            if (end > y) {
+                t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
+                t.page = fb->buf + (by >> 3) * (unsigned)w;
+                t.m = R8_FB_BIT(by);
+                t.k = (r8_u8)(y & 3);
+                y = (r8_s16)(end - (r8_s16)r8k_zrows(&t, (r8_u16)(end - y)));
+                if (y >= end) {
+                    y--;          /* the loop's y++: on to row end */
+                    continue;
+                }
+            }
+        }
+#endif
         xl = l->x.val;
         xr = r->x.val;
         if (xl < xr && y >= fb->y0) {

@@ -338,6 +338,39 @@ static void test_lines_at_extremes(void)
     check_line(-32767, 32767, 32767, -32767);
 }
 
+/* r8_interp_init_sub (reciprocal products) against r8_interp_init_mul
+ * (divisions): every field equal, at the ends of each range and on
+ * random inputs. */
+static void check_sub(r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n)
+{
+    r8_interp a, b;
+    r8_interp_init_sub(&b, base, s0, dv, n);
+    r8_interp_init_mul(&a, base, (r8_s32)s0, dv, (r8_s32)dv * R8_SUBPX, n);
+    TEST_ASSERT_EQUAL_INT(a.val, b.val);
+    TEST_ASSERT_EQUAL_INT(a.q, b.q);
+    TEST_ASSERT_EQUAL_UINT(a.err, b.err);
+    TEST_ASSERT_EQUAL_UINT(a.r, b.r);
+    TEST_ASSERT_EQUAL_UINT(a.den, b.den);
+}
+
+static void test_interp_init_sub_matches_mul(void)
+{
+    static const r8_u16 ns[] = { 1, 2, 3, 7, 15, 16, 17, 100, 163, 255, 256 };
+    static const r8_s16 dvs[] = { 0, 1, -1, 2, -2, 17, -17, 4094, -4094, 4095, -4095 };
+    static const r8_s16 bases[] = { 0, 32767, -32768, 1000 };
+    r8_u16 s0, i, j, k;
+    for (s0 = 0; s0 < R8_SUBPX; s0++)
+        for (i = 0; i < sizeof ns / sizeof ns[0]; i++)
+            for (j = 0; j < sizeof dvs / sizeof dvs[0]; j++)
+                for (k = 0; k < sizeof bases / sizeof bases[0]; k++)
+                    check_sub(bases[k], s0, dvs[j], ns[i]);
+    for (i = 0; i < 200 * N_TRIALS; i++) {
+        r8_s16 dv = (r8_s16)(rnd(8191) - 4095);
+        check_sub((r8_s16)(rnd(32767) - rnd(32767)), (r8_u16)rnd(R8_SUBPX), dv,
+                  (r8_u16)(rnd(256) + 1));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -350,5 +383,6 @@ int main(void)
     RUN_TEST(test_scan_far_coordinates);
     RUN_TEST(test_lines_all_octants_both_ways);
     RUN_TEST(test_lines_at_extremes);
+    RUN_TEST(test_interp_init_sub_matches_mul);
     return UNITY_END();
 }

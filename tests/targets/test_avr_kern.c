@@ -359,6 +359,202 @@ static void test_zsum_random(void)
 static void test_estart_random(void);
 static void test_scanband_random(void);
 
+/* ---- r8k_zrows (ports/avr/zfill.S) against its reference (src/zrows.c,
+ * renamed r8k_zrows_ref): random bands of w <= 64 columns and up to 16
+ * rows in band_ref / band_asm (pages at GUARD, depths at ZOFF, every
+ * byte random, guards included), random edges (columns around the band,
+ * now and then left of 0 or 256+ wide: the rows the kernel leaves),
+ * depths anywhere in 0..32767.  All the memory, the return value, the
+ * four interpolators and t's z, page, m, k must end equal. ---- */
+#define R8_ZROWS_REF 1
+#define r8k_zrows r8k_zrows_ref
+#define r8_interp_init_sub r8_interp_init_sub_ref
+#define r8_attr_first r8_attr_first_ref
+#include "zrows.c"
+#undef r8k_zrows
+#undef r8_interp_init_sub
+#undef r8_attr_first
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
+r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
+
+static void rnd_zinterp(r8_interp *it, r8_s16 lo, r8_s16 hi, r8_s16 qmax, r8_u16 dmax)
+{
+    it->den = (r8_u16)(1u + rndn(dmax));
+    it->val = rnds(lo, hi);
+    it->q = rnds((r8_s16)-qmax, qmax);
+    it->err = (r8_u16)rndn(it->den);
+    it->r = (r8_u16)rndn(it->den);
+}
+
+static int interp_eq(const r8_interp *a, const r8_interp *b)
+{
+    return a->val == b->val && a->q == b->q && a->err == b->err && a->r == b->r &&
+           a->den == b->den;
+}
+
+static r8_u16 zsum(const r8_u8 *p, unsigned n)
+{
+    r8_u16 h = 0;
+    while (n--)
+        h = (r8_u16)(((h << 1) | (h >> 15)) + *p++);
+    return h;
+}
+
+static void test_zrows_random(void)
+{
+    unsigned long i, stops = 0, drawn = 0;
+    r8_u16 sum0;
+    for (i = 0; i < 1500; i++) {
+        r8_zrows ta, tr;
+        r8_interp ia[4], ir[4];
+        r8_u16 w = (r8_u16)(1u + rndn(64)), rows = (r8_u16)(1u + rndn(16)), ra, rr;
+        unsigned j, zoff = (2u * GUARD + 3u * w + 1u) & ~1u;
+        unsigned len = zoff + 2u * rows * w + GUARD, c = rndn(8);
+        r8_u32 v = 0;
+        for (j = 0; j < len; j++) {
+            if (!(j & 3))
+                v = rnd();
+            band_ref[j] = (r8_u8)v;
+            v >>= 8;
+        }
+        if (rndn(2))                   /* depths near each other: both ways */
+            for (j = zoff; j < len; j += 2)
+                band_ref[j + 1] = (r8_u8)(0x40 + (band_ref[j] & 1));
+        memcpy(band_asm, band_ref, len);
+        if (c == 0) {                   /* wide spans: 256+ and the limits */
+            rnd_zinterp(&ir[0], 0, 40, 3, 50);
+            rnd_zinterp(&ir[1], 250, 330, 3, 50);
+        } else if (c == 1) {            /* starts left of 0 now and then */
+            rnd_zinterp(&ir[0], -6, 10, 2, 20);
+            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 8), 2, 20);
+        } else {
+            rnd_zinterp(&ir[0], -2, (r8_s16)(w + 2), 3, 400);
+            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 40), 3, 400);
+        }
+        if (rndn(4) == 0) {             /* extreme depth steps */
+            rnd_zinterp(&ir[2], 0, 32767, 32767, 32767);
+            rnd_zinterp(&ir[3], 0, 32767, 32767, 32767);
+        } else {
+            rnd_zinterp(&ir[2], 16000, 16900, 60, 300);
+            rnd_zinterp(&ir[3], 16000, 16900, 60, 300);
+        }
+        memcpy(ia, ir, sizeof ia);
+        tr.w = w;
+        tr.m = (r8_u8)(1u << rndn(8));
+        tr.k = (r8_u8)rndn(4);
+        for (j = 0; j < 4; j++)
+            tr.pat[j] = (r8_u8)rnd();
+        ta = tr;
+        tr.lx = &ir[0]; tr.rx = &ir[1]; tr.ld = &ir[2]; tr.rd = &ir[3];
+        ta.lx = &ia[0]; ta.rx = &ia[1]; ta.ld = &ia[2]; ta.rd = &ia[3];
+        tr.page = band_ref + GUARD;
+        ta.page = band_asm + GUARD;
+        tr.z = (r8_u16 *)(void *)(band_ref + zoff);
+        ta.z = (r8_u16 *)(void *)(band_asm + zoff);
+        sum0 = zsum(band_ref, len);
+        rr = r8k_zrows_ref(&tr, rows);
+        ra = r8k_zrows(&ta, rows);
+        stops += rr != 0;
+        drawn += zsum(band_ref, len) != sum0;   /* some depth or pixel written */
+        if (ra != rr || memcmp(band_ref, band_asm, len) != 0 || !interp_eq(&ia[0], &ir[0]) ||
+            !interp_eq(&ia[1], &ir[1]) || !interp_eq(&ia[2], &ir[2]) ||
+            !interp_eq(&ia[3], &ir[3]) ||
+            (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
+            ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k) {
+            print_case("r8k_zrows", i);
+            unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
+        }
+    }
+    unity_print("r8k_zrows: rows left to C in ");
+    unity_print_long((long)stops);
+    unity_print(" calls, memory written in ");
+    unity_print_long((long)drawn);
+    unity_print("\n");
+    if (stops < 150 || drawn < 500)
+        unity_fail_int(__LINE__, "r8k_zrows: too few stops or drawn rows", (long)stops, (long)drawn);
+}
+
+/* ---- r8_interp_init_sub (zfill.S) against its reference (src/zrows.c):
+ * every s0 (0..15) and the limits of n (1, 2, 255, 256), dv (0, +-1,
+ * +-4095) and base (-32768, 32767: val saturates), then random inputs
+ * in the whole domain (8000); all five fields equal ---- */
+static void check_init_sub(r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n, unsigned long i)
+{
+    r8_interp a, b;
+    memset(&a, 0x5A, sizeof a);
+    memset(&b, 0xA5, sizeof b);
+    r8_interp_init_sub_ref(&b, base, s0, dv, n);
+    r8_interp_init_sub(&a, base, s0, dv, n);
+    if (!interp_eq(&a, &b)) {
+        print_case("r8_interp_init_sub", i);
+        unity_fail_int(__LINE__, "r8_interp_init_sub differs from the reference", (long)a.val, (long)b.val);
+    }
+}
+
+static void test_init_sub_random(void)
+{
+    static const r8_u16 ns[] = { 1, 2, 3, 16, 255, 256 };
+    static const r8_s16 dvs[] = { 0, 1, -1, 4095, -4095, 2048, -2048 };
+    static const r8_s16 bases[] = { -32767 - 1, 32767, 0, 12345 };
+    unsigned long i = 0;
+    unsigned s0, a, b, c;
+    for (s0 = 0; s0 < 16; s0++)
+        for (a = 0; a < 6; a++)
+            for (b = 0; b < 7; b++)
+                for (c = 0; c < 4; c++)
+                    check_init_sub(bases[c], (r8_u16)s0, dvs[b], ns[a], i++);
+    for (i = 0; i < 8000; i++)
+        check_init_sub((r8_s16)rnd(), (r8_u16)rndn(16), rnds(-4095, 4095),
+                       (r8_u16)(1u + rndn(256)), i);
+}
+
+/* ---- r8_attr_first (zfill.S) against its reference (src/zrows.c):
+ * edges placed around each of its limits (y 0 / 2047 / 2048 / < 0, s0
+ * -1 / 0 / 15 / 16, n 1 / 256 / 257, by <= ay, dv +-4095 / +-4096 and
+ * 16-bit overflow) and random, 8000; the return value and all of it (left as
+ * it was on 0) equal; both outcomes counted ---- */
+static void test_attr_first_random(void)
+{
+    unsigned long i, taken = 0;
+    for (i = 0; i < 8000; i++) {
+        r8_s16 a[4], b[4], y;
+        r8_interp ia, ir;
+        r8_u8 k = (r8_u8)(2 + rndn(2));
+        int ra, rr;
+        unsigned c = rndn(8);
+        y = c == 0 ? rnds(-3, 3) : c == 1 ? rnds(2044, 2050) : c == 2 ? (r8_s16)rnd() : rnds(0, 200);
+        a[0] = (r8_s16)rnd();
+        b[0] = (r8_s16)rnd();
+        a[1] = (r8_s16)((r8_u16)y * 16u + 8u - (r8_u16)rnds(-2, 17));      /* s0 around 0..15 */
+        if (rndn(8) == 0)
+            a[1] = (r8_s16)rnd();
+        c = rndn(8);
+        b[1] = (r8_s16)(a[1] + (c == 0 ? rnds(-300, 0) : c == 1 ? rnds(254, 258) : rnds(1, 300)));
+        if (rndn(8) == 0)
+            b[1] = (r8_s16)rnd();
+        a[2] = rnds(0, 32767);
+        a[3] = rnds(0, 4096);
+        c = rndn(8);
+        b[k] = (r8_s16)(a[k] + (c == 0 ? rnds(4094, 4097) : c == 1 ? rnds(-4097, -4094) : rnds(-5000, 5000)));
+        if (rndn(8) == 0)
+            b[k] = (r8_s16)rnd();
+        b[5 - k] = (r8_s16)rnd();
+        a[5 - k] = (r8_s16)rnd();
+        memset(&ia, 0x5A, sizeof ia);
+        memset(&ir, 0x5A, sizeof ir);
+        rr = r8_attr_first_ref(&ir, a, b, y, k);
+        ra = r8_attr_first(&ia, a, b, y, k);
+        taken += rr != 0;
+        if (ra != rr || memcmp(&ia, &ir, sizeof ia) != 0) {
+            print_case("r8_attr_first", i);
+            unity_fail_int(__LINE__, "r8_attr_first differs from the reference", (long)ra, (long)rr);
+        }
+    }
+    if (taken < 1000 || taken > 7000)
+        unity_fail_int(__LINE__, "r8_attr_first: one outcome too rare", 3000, (long)taken);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -374,6 +570,9 @@ int main(void)
     RUN_TEST(test_zsum_random);
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
+    RUN_TEST(test_zrows_random);
+    RUN_TEST(test_init_sub_random);
+    RUN_TEST(test_attr_first_random);
     return UNITY_END();
 }
 

@@ -1,0 +1,580 @@
+/* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: the 16-bit z-buffer's
+ * rows between edge changes, with their set-up, in one call; and
+ * r8_interp_init_sub (include/r8raster.h), the edges' depth set-up
+ * (below).
+ *
+ *   r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+ *
+ * Same memory results as the C reference src/zrows.c.  The value and
+ * error of the four interpolators (lx, rx, ld, rd) stay in r2..r17 for
+ * the whole call and are written back at the end; their q, r, den are
+ * read through the pointers on each row's step.  A span's depth step is
+ * floor((rd - ld) / n) from r8_rcp256[n] (n = 1..255: q or q - 1, one
+ * correction), with an 8-bit error (r < n <= 255).  Per pixel: depth
+ * test, store, page bit set or cleared by bit 7 of the pattern (rotated
+ * left per column), DDA step; the drawn and the skipped pixel each with
+ * its own copy of the step (no jump back into a shared tail).
+ *
+ * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
+ * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
+ * m 14, k 15, pat 16..19}.
+ */
+
+#define LXVL r2
+#define LXVH r3
+#define LXEL r4
+#define LXEH r5
+#define RXVL r6
+#define RXVH r7
+#define RXEL r8
+#define RXEH r9
+#define LDVL r10
+#define LDVH r11
+#define LDEL r12
+#define LDEH r13
+#define RDVL r14
+#define RDVH r15
+#define RDEL r16
+#define RDEH r17
+#define ROWL r22
+#define ROWH r23
+
+/* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
+ * through the pointer at Y+off */
+.macro STEP off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        ldd     r18, Z+2
+        ldd     r19, Z+3
+        add     \vl, r18
+        adc     \vh, r19
+        ldd     r18, Z+6
+        ldd     r19, Z+7
+        add     \el, r18
+        adc     \eh, r19
+        ldd     r18, Z+8
+        ldd     r19, Z+9
+        cp      \el, r18
+        cpc     \eh, r19
+        brlo    1f
+        sub     \el, r18
+        sbc     \eh, r19
+        sec
+        adc     \vl, r1
+        adc     \vh, r1
+1:
+.endm
+
+/* load / store val, err through the pointer at Y+off */
+.macro LOADI off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        ld      \vl, Z
+        ldd     \vh, Z+1
+        ldd     \el, Z+4
+        ldd     \eh, Z+5
+.endm
+.macro STOREI off, vl, vh, el, eh
+        ldd     r30, Y+\off
+        ldd     r31, Y+\off+1
+        st      Z, \vl
+        std     Z+1, \vh
+        std     Z+4, \el
+        std     Z+5, \eh
+.endm
+
+        .section .text.r8k_zrows,"ax",@progbits
+        .global r8k_zrows
+        .type   r8k_zrows, @function
+r8k_zrows:
+        push    r2
+        push    r3
+        push    r4
+        push    r5
+        push    r6
+        push    r7
+        push    r8
+        push    r9
+        push    r10
+        push    r11
+        push    r12
+        push    r13
+        push    r14
+        push    r15
+        push    r16
+        push    r17
+        push    r28
+        push    r29
+        movw    r28, r24
+        LOADI   0, LXVL, LXVH, LXEL, LXEH
+        LOADI   2, RXVL, RXVH, RXEL, RXEH
+        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        LOADI   6, RDVL, RDVH, RDEL, RDEH
+
+.Lrow:
+        mov     r0, ROWL
+        or      r0, ROWH
+        brne    1f
+        rjmp    .Ldone
+1:      cp      LXVL, RXVL              /* xl >= xr: no span */
+        cpc     LXVH, RXVH
+        brlt    2f
+        rjmp    .Lstep
+2:      sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
+        rjmp    .Ldone
+        movw    r24, RXVL               /* n = xr - xl */
+        sub     r24, LXVL
+        sbc     r25, LXVH
+        tst     r25                     /* n > 255: r8_zfill's */
+        breq    3f
+        rjmp    .Ldone
+3:      ldd     r20, Y+12               /* w */
+        ldd     r21, Y+13
+        cp      LXVL, r20               /* xl >= w: nothing drawn */
+        cpc     LXVH, r21
+        brlt    4f
+        rjmp    .Lstep
+4:      cp      r20, RXVL               /* xb = min(w, xr) */
+        cpc     r21, RXVH
+        brlt    5f
+        movw    r20, RXVL
+5:      sub     r20, LXVL               /* columns (1..255) */
+        push    r4
+        push    r5
+        push    r6
+        push    r7
+        mov     r4, r20                 /* r4: columns */
+        ldd     r0, Y+15                /* r5: pat[k] */
+        movw    r30, r28
+        add     r30, r0
+        adc     r31, r1
+        ldd     r5, Z+16
+        mov     r20, LXVL               /* rotated left by xl & 7: */
+        sbrc    r20, 2                  /* 4 (swap), then xl & 3 */
+        swap    r5
+        andi    r20, 3
+        breq    7f
+6:      lsl     r5
+        adc     r5, r1
+        dec     r20
+        brne    6b
+7:      movw    r18, RDVL               /* diff = rd - ld; T: diff < 0 */
+        sub     r18, LDVL
+        sbc     r19, LDVH
+        bst     r19, 7
+        brtc    8f
+        com     r18                     /* un = -diff - 1 */
+        com     r19
+8:      ldi     r30, lo8(r8_rcp256)
+        ldi     r31, hi8(r8_rcp256)
+        add     r30, r24
+        adc     r31, r25                /* r25 = 0 */
+        add     r30, r24
+        adc     r31, r25
+        lpm     r20, Z+
+        lpm     r21, Z
+        /* q' = (un * rcp) >> 16 in r31:r30 */
+        mul     r19, r21
+        movw    r30, r0
+        mul     r18, r20
+        mov     r26, r1
+        mul     r18, r21
+        add     r26, r0
+        adc     r30, r1
+        adc     r31, r25
+        mul     r19, r20
+        add     r26, r0
+        adc     r30, r1
+        adc     r31, r25
+        /* rr = un - q' * n (low 16 bits) */
+        mul     r30, r24
+        movw    r20, r0
+        mul     r31, r24
+        add     r21, r0
+        clr     r1
+        sub     r18, r20
+        sbc     r19, r21
+        cp      r18, r24
+        cpc     r19, r25
+        brlo    9f
+        sub     r18, r24
+        adiw    r30, 1
+9:      brtc    10f
+        com     r30                     /* q = -q' - 1, r = n - 1 - rr */
+        com     r31
+        mov     r0, r24
+        dec     r0
+        sub     r0, r18
+        mov     r18, r0
+10:     movw    r20, r30                /* DQ */
+        mov     r25, r18                /* DR */
+        mov     r6, r24                 /* DN */
+        clr     r24                     /* DE */
+        movw    r18, LDVL               /* DV */
+        ldd     r26, Y+10               /* X = page + xl */
+        ldd     r27, Y+11
+        add     r26, LXVL
+        adc     r27, LXVH
+        ldd     r30, Y+8                /* Z = z + xl */
+        ldd     r31, Y+9
+        add     r30, LXVL
+        adc     r31, LXVH
+        add     r30, LXVL
+        adc     r31, LXVH
+        ldd     r7, Y+14                /* M */
+        mov     r1, r4                  /* r1: columns (0 again at the end) */
+        mov     r4, r7                  /* NM */
+        com     r4
+.Lpx:
+        ld      r0, Z
+        cp      r18, r0
+        ldd     r0, Z+1
+        cpc     r19, r0
+        brlo    .Lskip
+        st      Z+, r18                 /* nearer or equal: depth, pixel */
+        st      Z+, r19
+        ld      r0, X
+        lsl     r5
+        brcc    11f
+        inc     r5
+        or      r0, r7
+        rjmp    15f
+11:     and     r0, r4
+15:     st      X+, r0
+        add     r18, r20                /* the DDA (twice: no jump) */
+        adc     r19, r21
+        add     r24, r25
+        brcs    12f
+        cp      r24, r6
+        brlo    13f
+12:     sub     r24, r6
+        subi    r18, 0xFF
+        sbci    r19, 0xFF
+13:     dec     r1
+        brne    .Lpx
+        rjmp    .Lpxend
+.Lskip:
+        lsl     r5
+        brcc    16f
+        inc     r5
+16:     adiw    r26, 1
+        adiw    r30, 2
+        add     r18, r20
+        adc     r19, r21
+        add     r24, r25
+        brcs    17f
+        cp      r24, r6
+        brlo    18f
+17:     sub     r24, r6
+        subi    r18, 0xFF
+        sbci    r19, 0xFF
+18:     dec     r1
+        brne    .Lpx
+.Lpxend:
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+
+.Lstep:
+        STEP    0, LXVL, LXVH, LXEL, LXEH
+        STEP    2, RXVL, RXVH, RXEL, RXEH
+        STEP    4, LDVL, LDVH, LDEL, LDEH
+        STEP    6, RDVL, RDVH, RDEL, RDEH
+        ldd     r18, Y+12               /* w */
+        ldd     r19, Y+13
+        ldd     r30, Y+8                /* z += w */
+        ldd     r31, Y+9
+        add     r30, r18
+        adc     r31, r19
+        add     r30, r18
+        adc     r31, r19
+        std     Y+8, r30
+        std     Y+9, r31
+        ldd     r20, Y+14               /* m <<= 1; past bit 7: page += w */
+        lsl     r20
+        brne    14f
+        ldi     r20, 1
+        ldd     r30, Y+10
+        ldd     r31, Y+11
+        add     r30, r18
+        adc     r31, r19
+        std     Y+10, r30
+        std     Y+11, r31
+14:     std     Y+14, r20
+        ldd     r20, Y+15               /* k = (k + 1) & 3 */
+        inc     r20
+        andi    r20, 3
+        std     Y+15, r20
+        subi    ROWL, 1
+        sbci    ROWH, 0
+        rjmp    .Lrow
+
+.Ldone:
+        STOREI  0, LXVL, LXVH, LXEL, LXEH
+        STOREI  2, RXVL, RXVH, RXEL, RXEH
+        STOREI  4, LDVL, LDVH, LDEL, LDEH
+        STOREI  6, RDVL, RDVH, RDEL, RDEH
+        movw    r24, ROWL
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        pop     r15
+        pop     r14
+        pop     r13
+        pop     r12
+        pop     r11
+        pop     r10
+        pop     r9
+        pop     r8
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+        pop     r3
+        pop     r2
+        ret
+        .size   r8k_zrows, .-r8k_zrows
+
+/* void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0,
+ *                         r8_s16 dv, r8_u16 n)       (include/r8raster.h)
+ *
+ * The C reference is src/zrows.c's: for 0 <= s0 < 16, n = 1..256,
+ * |dv| < 4096, it = r8_interp_init_mul(it, base, s0, dv, dv * 16, n):
+ *     val = sat16(base + floor(s0 * dv / n)), err the remainder,
+ *     q = sat16(floor(16 * dv / n)), r its remainder, den = n.
+ * A floor quotient of num = un or -un - 1 (un < 65536) is that of un
+ * (divsmall: r8_rcp256[n], one correction), complemented when negative;
+ * the remainder then n - 1 - rr.  val is summed in 24 bits, then
+ * saturated.
+ * In: r25:24 it, r23:22 base, r21:20 s0, r19:18 dv, r17:16 n. */
+        .section .text.r8_interp_init_sub,"ax",@progbits
+        .global r8_interp_init_sub
+        .type   r8_interp_init_sub, @function
+r8_interp_init_sub:
+        movw    r26, r24                /* X = it */
+        clt
+        sbrs    r19, 7
+        rjmp    1f
+        set                             /* T: dv < 0 */
+        com     r19                     /* m = -dv */
+        neg     r18
+        sbci    r19, 0xFF
+1:      mul     r20, r18                /* un = s0 * m */
+        movw    r24, r0
+        mul     r20, r19
+        add     r25, r0
+        clr     r1
+        clr     r21                     /* r21: 0xFF when s0 * dv < 0 */
+        brtc    2f
+        mov     r0, r24
+        or      r0, r25
+        breq    2f
+        sbiw    r24, 1
+        ldi     r21, 0xFF
+2:      rcall   divsmall
+        tst     r21
+        breq    3f
+        com     r30                     /* q = -q - 1 */
+        com     r31
+        rcall   nrem                    /* rr = n - 1 - rr */
+3:      sbrc    r23, 7                  /* r21:r31:r30 += base (24 bits) */
+        dec     r21
+        add     r30, r22
+        adc     r31, r23
+        adc     r21, r1
+        mov     r0, r31                 /* fits 16 bits: r21 = sign of r31 */
+        lsl     r0
+        sbc     r0, r0
+        cp      r0, r21
+        breq    4f
+        ldi     r30, 0xFF
+        ldi     r31, 0x7F
+        sbrs    r21, 7
+        rjmp    4f
+        ldi     r30, 0x00
+        ldi     r31, 0x80
+4:      st      X+, r30                 /* val */
+        st      X+, r31
+        movw    r22, r24                /* err */
+        movw    r24, r18                /* un = 16 m (- 1 when dv < 0) */
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        lsl     r24
+        rol     r25
+        brtc    5f
+        sbiw    r24, 1
+5:      rcall   divsmall
+        brtc    7f
+        rcall   nrem
+        sbrc    r31, 7                  /* q >= 32768: -q - 1 < -32768 */
+        rjmp    6f
+        com     r30
+        com     r31
+        rjmp    8f
+6:      ldi     r30, 0x00
+        ldi     r31, 0x80
+        rjmp    8f
+7:      sbrs    r31, 7                  /* q >= 32768: 32767 */
+        rjmp    8f
+        ldi     r30, 0xFF
+        ldi     r31, 0x7F
+8:      st      X+, r30                 /* q */
+        st      X+, r31
+        st      X+, r22                 /* err */
+        st      X+, r23
+        st      X+, r24                 /* r */
+        st      X+, r25
+        st      X+, r16                 /* den */
+        st      X+, r17
+        ret
+
+/* int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b,
+ *                   r8_s16 y, r8_u8 k)                 (src/r8zrows.h)
+ * In: r25:24 it, r23:22 a, r21:20 b, r19:18 y, r16 k.  The checks of
+ * src/zrows.c's reference, then r8_interp_init_sub(it, a[k], s0, dv, n)
+ * (r17:r16 kept around it); returns 1, or 0 with it untouched. */
+        .global r8_attr_first
+        .type   r8_attr_first, @function
+r8_attr_first:
+        cpi     r19, 8                  /* y < 2048 (unsigned) */
+        brsh    .Lafail
+        movw    r30, r22                /* X = ay */
+        ldd     r26, Z+2
+        ldd     r27, Z+3
+        add     r30, r16                /* r23:r22 = a[k] */
+        adc     r31, r1
+        add     r30, r16
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        lsl     r18                     /* s0 = 16 y + 8 - ay */
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        subi    r18, 0xF8
+        sbci    r19, 0xFF
+        sub     r18, r26
+        sbc     r19, r27
+        tst     r19                     /* s0 < 16 */
+        brne    .Lafail
+        cpi     r18, 16
+        brsh    .Lafail
+        movw    r30, r20                /* n = by - ay, or 1 */
+        ldd     r20, Z+2
+        ldd     r21, Z+3
+        cp      r26, r20
+        cpc     r27, r21
+        brlt    1f
+        ldi     r20, 1
+        ldi     r21, 0
+        rjmp    2f
+.Lafail:                                /* (here: in reach of every branch) */
+        ldi     r24, 0
+        ldi     r25, 0
+        ret
+1:      sub     r20, r26
+        sbc     r21, r27
+2:      cpi     r21, 1                  /* n <= 256 */
+        brlo    3f
+        brne    .Lafail
+        cpi     r20, 0
+        brne    .Lafail
+3:      add     r30, r16                /* dv = b[k] - a[k] */
+        adc     r31, r1
+        add     r30, r16
+        adc     r31, r1
+        ld      r26, Z
+        ldd     r27, Z+1
+        sub     r26, r22
+        sbc     r27, r23
+        brvs    .Lafail                 /* |dv| >= 32768 */
+        cpi     r26, 0x00               /* dv < 4096 */
+        ldi     r30, 0x10
+        cpc     r27, r30
+        brge    .Lafail
+        cpi     r26, 0x01               /* dv >= -4095 */
+        ldi     r30, 0xF0
+        cpc     r27, r30
+        brlt    .Lafail
+        push    r16
+        push    r17
+        movw    r16, r20                /* n */
+        mov     r20, r18                /* s0 */
+        ldi     r21, 0
+        movw    r18, r26                /* dv */
+        rcall   r8_interp_init_sub
+        pop     r17
+        pop     r16
+        ldi     r24, 1
+        ldi     r25, 0
+        ret
+        .size   r8_attr_first, .-r8_attr_first
+
+/* r25:r24 = n - 1 - r25:r24 (n in r17:r16) */
+nrem:
+        mov     r0, r16
+        mov     r1, r17
+        sub     r0, r24
+        sbc     r1, r25
+        movw    r24, r0
+        sbiw    r24, 1
+        clr     r1
+        ret
+
+/* q (r31:r30) = un / n, rr (r25:r24) = un % n for un = r25:r24,
+ * n = r17:r16 (1..256): q' = (un * r8_rcp256[n]) >> 16 is q or q - 1.
+ * Uses r0, r20, r28, r29 (kept); r1 = 0 after. */
+divsmall:
+        push    r28
+        push    r29
+        ldi     r30, lo8(r8_rcp256)
+        ldi     r31, hi8(r8_rcp256)
+        add     r30, r16
+        adc     r31, r17
+        add     r30, r16
+        adc     r31, r17
+        lpm     r28, Z+
+        lpm     r29, Z
+        mul     r25, r29
+        movw    r30, r0
+        mul     r24, r28
+        mov     r20, r1
+        mul     r24, r29
+        add     r20, r0
+        adc     r30, r1
+        brcc    1f
+        inc     r31
+1:      mul     r25, r28
+        add     r20, r0
+        adc     r30, r1
+        brcc    2f
+        inc     r31
+2:      mul     r30, r16                /* rr = un - q' n (16 bits) */
+        movw    r28, r0
+        mul     r31, r16
+        add     r29, r0
+        mul     r30, r17
+        add     r29, r0
+        clr     r1
+        sub     r24, r28
+        sbc     r25, r29
+        cp      r24, r16
+        cpc     r25, r17
+        brlo    3f
+        sub     r24, r16
+        sbc     r25, r17
+        adiw    r30, 1
+3:      pop     r29
+        pop     r28
+        ret
+        .size   r8_interp_init_sub, .-r8_interp_init_sub

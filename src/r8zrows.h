@@ -1,0 +1,54 @@
+/* r8zrows.h - the 16-bit z-buffer's row kernel (r8_zfill's rows on
+ * which neither edge moves on to its next vertex), shared by
+ * src/vis_zbuf.c, its C89 reference src/zrows.c and the AVR assembly
+ * ports/avr/zfill.S (R8_ASM_ZFILL). */
+#ifndef R8ZROWS_H
+#define R8ZROWS_H
+
+#include "r8raster.h"
+
+/* r8_zfill's rows and the edges' first-row attribute set-up go through
+ * r8k_zrows and r8_attr_first with the AVR kernels (R8_ASM_ZFILL) and
+ * on the host (the C references, which the frames there then check);
+ * the 6502 and the Z80 (and the AVR without the kernels) keep the
+ * general C, smaller. */
+#if defined(R8_ASM_ZFILL) || !(defined(__AVR__) || defined(__CC65__) || defined(__SDCC))
+#define R8_ZROWS 1
+#else
+#define R8_ZROWS 0
+#endif
+
+/* The kernel's state.  Layout fixed (zfill.S's offsets): pointers and
+ * u16 are 2 bytes on the AVR, no padding. */
+typedef struct r8_zrows {
+    r8_interp *lx, *rx;   /* 0, 2: the edges' columns */
+    r8_interp *ld, *rd;   /* 4, 6: the edges' depths */
+    r8_u16 *z;            /* 8: the depth row of the current row */
+    r8_u8 *page;          /* 10: its page row (SSD1306 layout) */
+    r8_u16 w;             /* 12: columns (<= 32767) */
+    r8_u8 m;              /* 14: the row's bit in the page */
+    r8_u8 k;              /* 15: the row's dither phase, y & 3 */
+    r8_u8 pat[4];         /* 16: the level's dither pattern of rows k = 0..3 */
+} r8_zrows;
+
+/* Up to `rows` rows from the current one: on each, the span
+ * [lx->val, rx->val) clipped to [0, w), depth from ld->val at column
+ * lx->val to rd->val at rx->val (r8_zfill's exact stepwise interpolator,
+ * steps from the reciprocal table), is drawn where its depth is >= the
+ * stored one (the depth stored, the page bit set where pat[k] has bit
+ * 7 - (x & 7), else cleared); then the four interpolators step, z and
+ * page, m, k move to the next row.  Returns the rows not done: it stops
+ * before a row whose span (lx->val < rx->val) starts left of column 0
+ * or is 256 columns or more (r8_zfill draws that row). */
+r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+
+/* The attribute k (2: depth, 3: shade) of the edge from vertex a down
+ * to vertex b (x, y in 12.4, then the attributes) at row y, when that
+ * is the edge's first row and the edge at most 256 subpixels tall:
+ * r8_interp_init_sub(it, a[k], s0, b[k] - a[k], n), s0 = y * 16 + 8 -
+ * a[1], n = b[1] - a[1] (<= 0: 1); returns 1.  0 (it untouched) when
+ * not (y outside 0..2047, s0 outside 0..15, n > 256, or |b[k] - a[k]| >=
+ * 4096): the caller's general set-up then. */
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
+
+#endif

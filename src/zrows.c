@@ -1,0 +1,148 @@
+/* zrows.c - r8k_zrows (src/r8zrows.h) and r8_interp_init_sub
+ * (r8raster.h), the C89 references of the AVR kernels in
+ * ports/avr/zfill.S (chosen by R8_ASM_ZFILL).  r8k_zrows and
+ * r8_attr_first are compiled where R8_ZROWS (src/r8zrows.h) uses them,
+ * or with R8_ZROWS_REF (the AVR kernel test). */
+#include "r8zrows.h"
+#include "r8int.h"
+
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
+{
+    r8_interp *lx = t->lx, *rx = t->rx, *ld = t->ld, *rd = t->rd;
+    for (; rows; rows--) {
+        r8_s16 xl = lx->val, xr = rx->val;
+        if (xl < xr) {
+            r8_u16 n = (r8_u16)(xr - xl);
+            if (xl < 0 || n > 255u)
+                break;                   /* r8_zfill's */
+            if (xl < (r8_s16)t->w) {
+                /* the depth step: floor((rd - ld) / n) by the
+                 * reciprocal, one correction */
+                r8_s16 diff = (r8_s16)(rd->val - ld->val), dv = ld->val, dq;
+                r8_u16 un = diff < 0 ? (r8_u16)~diff : (r8_u16)diff, q, rr;
+                r8_u32 p = un;
+                r8_u8 de = 0, dr, k, pat = t->pat[t->k], m = t->m, nm = (r8_u8)~m;
+                r8_u16 *z = t->z + xl;
+                r8_u8 *bp = t->page + xl;
+                p *= R8_RDU16(&r8_rcp256[n]);
+                q = (r8_u16)(p >> 16);
+                rr = (r8_u16)(un - q * n);
+                if (rr >= n) {
+                    rr = (r8_u16)(rr - n);
+                    q++;
+                }
+                if (diff < 0) {
+                    dq = (r8_s16)~q;
+                    dr = (r8_u8)(n - 1u - rr);
+                } else {
+                    dq = (r8_s16)q;
+                    dr = (r8_u8)rr;
+                }
+                for (k = (r8_u8)(xl & 7); k; k--)      /* pat rotated left */
+                    pat = (r8_u8)((pat << 1) | (pat >> 7));
+                k = (r8_u8)((xr > (r8_s16)t->w ? (r8_s16)t->w : xr) - xl);
+                do {
+                    if ((r8_u16)dv >= *z) {
+                        *z = (r8_u16)dv;
+                        if (pat & 0x80)
+                            *bp |= m;
+                        else
+                            *bp &= nm;
+                    }
+                    z++;
+                    bp++;
+                    pat = (r8_u8)((pat << 1) | (pat >> 7));
+                    dv = (r8_s16)(dv + dq);
+                    if ((r8_u16)de + dr >= n) {
+                        de = (r8_u8)(de + dr - n);
+                        dv++;
+                    } else {
+                        de = (r8_u8)(de + dr);
+                    }
+                } while (--k);
+            }
+        }
+        R8_INTERP_STEP(lx);
+        R8_INTERP_STEP(rx);
+        R8_INTERP_STEP(ld);
+        R8_INTERP_STEP(rd);
+        t->z += t->w;
+        t->m = (r8_u8)(t->m << 1);
+        if (!t->m) {
+            t->m = 1;
+            t->page += t->w;
+        }
+        t->k = (r8_u8)((t->k + 1) & 3);
+    }
+    return rows;
+}
+#endif
+
+#ifndef R8_ASM_ZFILL
+/* floor(num / n) for n = 1..256, num = un or (neg) -un - 1: the
+ * remainder (0..n-1) in *rem, the quotient returned.  The quotient of
+ * un / n comes from the reciprocal (r8_rcp256: q or q - 1, one
+ * correction), not a division. */
+static r8_s32 fdiv_small(r8_u16 un, r8_u8 neg, r8_u16 n, r8_u16 *rem)
+{
+    r8_u16 q = un, rr = 0;
+    if (n > 1u) {
+        r8_u32 p = un;
+        p *= R8_RDU16(&r8_rcp256[n]);
+        q = (r8_u16)(p >> 16);
+        rr = (r8_u16)(un - q * n);
+        if (rr >= n) {
+            rr = (r8_u16)(rr - n);
+            q++;
+        }
+    }
+    if (neg) {
+        *rem = (r8_u16)(n - 1u - rr);
+        return -(r8_s32)q - 1;
+    }
+    *rem = rr;
+    return (r8_s32)q;
+}
+
+static r8_s16 sat16(r8_s32 v)
+{
+    if (v > 32767L)
+        return 32767;
+    if (v < -32768L)
+        return -32767 - 1;
+    return (r8_s16)v;
+}
+
+/* (r8raster.h) both numerators fit a u16: two reciprocal products */
+void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n)
+{
+    r8_u16 m = (r8_u16)(dv < 0 ? -dv : dv), un = (r8_u16)(s0 * m), rem;
+    r8_u8 neg = (r8_u8)(dv < 0 && un);
+    r8_s32 q = fdiv_small((r8_u16)(un - neg), neg, n, &rem);
+    it->val = sat16(q + base);
+    it->err = rem;
+    un = (r8_u16)(m * R8_SUBPX);
+    neg = (r8_u8)(dv < 0);
+    q = fdiv_small((r8_u16)(un - neg), neg, n, &rem);
+    it->q = sat16(q);
+    it->r = rem;
+    it->den = n;
+}
+#endif
+
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k)
+{
+    r8_s16 ay = a[1], by = b[1];
+    /* 16 bits, exact for 0 <= y < 2048: s0 then lies in (-32760, 65528] */
+    r8_u16 s0 = (r8_u16)((r8_u16)y * R8_SUBPX + 8u - (r8_u16)ay);
+    r8_u16 n = by > ay ? (r8_u16)(by - ay) : 1u;
+    r8_s32 dv = (r8_s32)b[k] - a[k];
+    if ((r8_u16)y >= 2048u || s0 >= R8_SUBPX || n > 256u ||
+        dv <= -(65536L / R8_SUBPX) || dv >= 65536L / R8_SUBPX)
+        return 0;
+    r8_interp_init_sub(it, a[k], s0, (r8_s16)dv, n);
+    return 1;
+}
+#endif
