@@ -5,6 +5,8 @@
 # that crashes, times out or prints no result line adds "0 passed, 1
 # failed".  Binaries that did not fit the target hold "SKIP: reason" and
 # are listed and counted as skipped (not as passed).
+# AVR programs stop after 5 G cycles or 300 s (the kernel test, with
+# every kernel, runs about 2.2 G cycles: ~25 s).
 # ucsim runs the Z80 at ~50 M ticks/s; the whole Z80 set takes about 75 s
 # (test_raster uses fewer random cases on 16-bit int); a run over XTEST_TIMEOUT seconds
 # (default 300 from mk/targets.mk) is stopped and listed as skipped for time, never passed;
@@ -29,7 +31,7 @@ for bin in "$@"; do
   ran=$((ran+1))
   out=$(mktemp)
   case $tgt in
-    avr*)  timeout 120 build/emu/avrsim -q -l 2000000000 -m /dev/null -o "$out" atmega1284p "$bin"; rc=$? ;;
+    avr*)  timeout 300 build/emu/avrsim -q -l 5000000000 -m /dev/null -o "$out" atmega1284p "$bin"; rc=$? ;;
     6502)  python3 emu/sim65run.py -t 120 -m /dev/null -o "$out" "$bin"; rc=$? ;;
     z80)   python3 emu/sz80run.py -G -t "${XTEST_TIMEOUT:-300}" -m /dev/null -o "$out" "$bin"; rc=$?
            if [ $rc = 124 ]; then
