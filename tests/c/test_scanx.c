@@ -7,6 +7,7 @@
  * bands of 8 and 16 rows, row limits inside bands, Judd's test on and
  * off, every level; band bytes around the fill compared too. */
 #include <stddef.h>
+#include <string.h>
 #include "unity.h"
 #include "r8kern.h"
 #include "r8raster.h"
@@ -78,6 +79,10 @@ static void test_scanx(void)
         int judd = (int)(rnd16() & 1u);
         r8_s16 y0, y, lim;
         rows_band = (rnd16() & 1u) ? 16u : 8u;
+        /* whole structs are compared below: vp[n..] and padding too */
+        memset(&sa, 0, sizeof sa);
+        memset(&sb, 0, sizeof sb);
+        memset(&sc, 0, sizeof sc);
         polygon(&sa, &n);
         for (k = 0; k < n; k++)
             sb.vp[k] = sc.vp[k] = sa.vp[k];
