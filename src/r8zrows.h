@@ -23,24 +23,34 @@
 typedef struct r8_zrows {
     r8_interp *lx, *rx;   /* 0, 2: the edges' columns */
     r8_interp *ld, *rd;   /* 4, 6: the edges' depths */
-    r8_u16 *z;            /* 8: the depth row of the current row */
+    r8_u16 *z;            /* 8: the depth row of row y */
     r8_u8 *page;          /* 10: its page row (SSD1306 layout) */
     r8_u16 w;             /* 12: columns (<= 32767) */
-    r8_u8 m;              /* 14: the row's bit in the page */
-    r8_u8 k;              /* 15: the row's dither phase, y & 3 */
+    r8_u8 m;              /* 14: row y's bit in the page */
+    r8_u8 k;              /* 15: row y's dither phase, y & 3 */
     r8_u8 pat[4];         /* 16: the level's dither pattern of rows k = 0..3 */
+    r8_scan *s;           /* 20: the polygon (lx .. rd point into it) */
+    const r8_s16 *lyend;  /* 22: &s->c.l.yend */
+    const r8_s16 *ryend;  /* 24: &s->c.r.yend */
+    r8_s16 y;             /* 26: the current row */
+    r8_s16 lim;           /* 28: the first row not done (<= s->c.ybot) */
+    r8_s16 end;           /* 30: (the kernel's) */
 } r8_zrows;
 
-/* Up to `rows` rows from the current one: on each, the span
+/* r8_zfill's rows from y up to lim (judd's test decided or off): on
+ * each, when y reaches an edge's yend, r8_scan_row_attrs(s, y, 0) moves
+ * the edges on (the interpolators in s re-read after); then the span
  * [lx->val, rx->val) clipped to [0, w), depth from ld->val at column
- * lx->val to rd->val at rx->val (r8_zfill's exact stepwise interpolator,
- * steps from the reciprocal table), is drawn where its depth is >= the
- * stored one (the depth stored, the page bit set where pat[k] has bit
- * 7 - (x & 7), else cleared); then the four interpolators step, z and
- * page, m, k move to the next row.  Returns the rows not done: it stops
- * before a row whose span (lx->val < rx->val) starts left of column 0
- * or is 256 columns or more (r8_zfill draws that row). */
-r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+ * lx->val to rd->val at rx->val (r8_zfill's exact stepwise
+ * interpolator, steps from the reciprocal table), is drawn where its
+ * depth is >= the stored one (the depth stored, the page bit set where
+ * pat[k] has bit 7 - (x & 7), else cleared); then the four
+ * interpolators step, z and page, m, k move to the next row and y++.
+ * Returns 1 when y reached lim; 2 when it stopped before drawing row y
+ * (its edges moved on), whose span (lx->val < rx->val) starts left of
+ * column 0 or is 256 columns or more: the caller draws that row; 0
+ * when r8_scan_row_attrs said the polygon is over.  y is left in t->y. */
+int r8k_zrows(r8_zrows *t);
 
 /* The attribute k (2: depth, 3: shade) of the edge from vertex a down
  * to vertex b (x, y in 12.4, then the attributes) at row y, when that

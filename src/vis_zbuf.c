@@ -232,6 +232,7 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
 #if R8_ZROWS
     r8_zrows t;
+    int kstop = 0;
     t.lx = &l->x;
     t.rx = &r->x;
     t.ld = &s->ld;
@@ -241,37 +242,45 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     t.pat[1] = R8_FB_DITHER(lv, 1);
     t.pat[2] = R8_FB_DITHER(lv, 2);
     t.pat[3] = R8_FB_DITHER(lv, 3);
+    t.s = s;
+    t.lyend = &l->yend;
+    t.ryend = &r->yend;
 #endif
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);
+#if R8_ZROWS
+    t.lim = lim;
+#endif
     for (; y < lim; y++) {
         r8_s16 xl, xr;
+#if R8_ZROWS
+        if (kstop) {
+            kstop = 0;            /* the kernel's row: its edges moved on */
+        } else if (bits16 && y >= fb->y0 && (!judd || c->front)) {
+            /* the rows from y on: r8k_zrows (src/r8zrows.h), up to lim
+             * or a row it leaves to the code below */
+            r8_u16 by = (r8_u16)(y - fb->y0);
+            int rc;
+            t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
+            t.page = fb->buf + (by >> 3) * (unsigned)w;
+            t.m = R8_FB_BIT(by);
+            t.k = (r8_u8)(y & 3);
+            t.y = y;
+            rc = r8k_zrows(&t);
+            y = t.y;
+            if (rc != 2) {
+                if (rc)
+                    c->y = y;     /* lim */
+                return;           /* (0: a back face, over) */
+            }
+            kstop = 1;
+            y--;                  /* the loop's y++: row y below */
+            continue;
+        } else
+#endif
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
-#if R8_ZROWS
-        if (bits16 && y >= fb->y0 && (!judd || c->front)) {
-            /* the rows on which neither edge moves on: r8k_zrows
-             * (src/r8zrows.h), up to a row it leaves to the code below */
-            r8_s16 end = lim;
-            r8_u16 by = (r8_u16)(y - fb->y0);
-            if (l->yend < end)
-                end = l->yend;
-            if (r->yend < end)
-                end = r->yend;
-            if (end > y) {
-                t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
-                t.page = fb->buf + (by >> 3) * (unsigned)w;
-                t.m = R8_FB_BIT(by);
-                t.k = (r8_u8)(y & 3);
-                y = (r8_s16)(end - (r8_s16)r8k_zrows(&t, (r8_u16)(end - y)));
-                if (y >= end) {
-                    y--;          /* the loop's y++: on to row end */
-                    continue;
-                }
-            }
-        }
-#endif
         xl = l->x.val;
         xr = r->x.val;
         if (xl < xr && y >= fb->y0) {

@@ -5,17 +5,29 @@
  * or with R8_ZROWS_REF (the AVR kernel test). */
 #include "r8zrows.h"
 #include "r8int.h"
+#include "r8scan.h"
 
 #if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
-r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
+int r8k_zrows(r8_zrows *t)
 {
     r8_interp *lx = t->lx, *rx = t->rx, *ld = t->ld, *rd = t->rd;
-    for (; rows; rows--) {
-        r8_s16 xl = lx->val, xr = rx->val;
+    r8_s16 y = t->y;
+    for (; y < t->lim; y++) {
+        r8_s16 xl, xr;
+        if (y >= *t->lyend || y >= *t->ryend) {
+            if (!r8_scan_row_attrs(t->s, y, 0)) {
+                t->y = y;
+                return 0;
+            }
+        }
+        xl = lx->val;
+        xr = rx->val;
         if (xl < xr) {
             r8_u16 n = (r8_u16)(xr - xl);
-            if (xl < 0 || n > 255u)
-                break;                   /* r8_zfill's */
+            if (xl < 0 || n > 255u) {
+                t->y = y;
+                return 2;                /* r8_zfill's */
+            }
             if (xl < (r8_s16)t->w) {
                 /* the depth step: floor((rd - ld) / n) by the
                  * reciprocal, one correction */
@@ -75,7 +87,8 @@ r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows)
         }
         t->k = (r8_u8)((t->k + 1) & 3);
     }
-    return rows;
+    t->y = y;
+    return 1;
 }
 #endif
 

@@ -36,8 +36,8 @@
 #define RDVH r15
 #define RDEL r16
 #define RDEH r17
-#define ROWL r22
-#define ROWH r23
+#define YL_ r22
+#define YH_ r23
 
 /* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
  * through the pointer at Y+off */
@@ -110,24 +110,94 @@ r8k_zrows:
         LOADI   2, RXVL, RXVH, RXEL, RXEH
         LOADI   4, LDVL, LDVH, LDEL, LDEH
         LOADI   6, RDVL, RDVH, RDEL, RDEH
+        ldd     YL_, Y+26               /* y */
+        ldd     YH_, Y+27
+
+.Lcheck:                                /* y < lim, else done */
+        ldd     r18, Y+28
+        ldd     r19, Y+29
+        cp      YL_, r18
+        cpc     YH_, r19
+        brlt    1f
+        ldi     r24, 1
+        rjmp    .Lout
+1:      ldd     r30, Y+22               /* an edge ends at y: move on */
+        ldd     r31, Y+23
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldd     r30, Y+24
+        ldd     r31, Y+25
+        ld      r26, Z
+        ldd     r27, Z+1
+        cp      YL_, r20
+        cpc     YH_, r21
+        brge    2f
+        cp      YL_, r26
+        cpc     YH_, r27
+        brge    2f
+        rjmp    .Lend
+2:      std     Y+26, YL_
+        std     Y+27, YH_
+        STOREI  0, LXVL, LXVH, LXEL, LXEH
+        STOREI  2, RXVL, RXVH, RXEL, RXEH
+        STOREI  4, LDVL, LDVH, LDEL, LDEH
+        STOREI  6, RDVL, RDVH, RDEL, RDEH
+        ldd     r24, Y+20               /* r8_scan_row_attrs(s, y, 0) */
+        ldd     r25, Y+21
+        ldi     r20, 0
+        ldi     r21, 0
+        call    r8_scan_row_attrs
+        or      r24, r25
+        brne    3f
+        ldi     r24, 0                  /* over (interpolators stored) */
+        rjmp    .Lret
+3:      LOADI   0, LXVL, LXVH, LXEL, LXEH
+        LOADI   2, RXVL, RXVH, RXEL, RXEH
+        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        LOADI   6, RDVL, RDVH, RDEL, RDEH
+        ldd     YL_, Y+26
+        ldd     YH_, Y+27
+        ldd     r18, Y+28
+        ldd     r19, Y+29
+        ldd     r30, Y+22
+        ldd     r31, Y+23
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldd     r30, Y+24
+        ldd     r31, Y+25
+        ld      r26, Z
+        ldd     r27, Z+1
+.Lend:                                  /* end = min(lim, yends), > y */
+        cp      r20, r18
+        cpc     r21, r19
+        brge    4f
+        movw    r18, r20
+4:      cp      r26, r18
+        cpc     r27, r19
+        brge    5f
+        movw    r18, r26
+5:      cp      YL_, r18
+        cpc     YH_, r19
+        brlt    6f
+        movw    r18, YL_
+        subi    r18, 0xFF
+        sbci    r19, 0xFF
+6:      std     Y+30, r18
+        std     Y+31, r19
 
 .Lrow:
-        mov     r0, ROWL
-        or      r0, ROWH
-        brne    1f
-        rjmp    .Ldone
-1:      cp      LXVL, RXVL              /* xl >= xr: no span */
+        cp      LXVL, RXVL              /* xl >= xr: no span */
         cpc     LXVH, RXVH
         brlt    2f
         rjmp    .Lstep
 2:      sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
-        rjmp    .Ldone
+        rjmp    .Lstop
         movw    r24, RXVL               /* n = xr - xl */
         sub     r24, LXVL
         sbc     r25, LXVH
         tst     r25                     /* n > 255: r8_zfill's */
         breq    3f
-        rjmp    .Ldone
+        rjmp    .Lstop
 3:      ldd     r20, Y+12               /* w */
         ldd     r21, Y+13
         cp      LXVL, r20               /* xl >= w: nothing drawn */
@@ -208,8 +278,9 @@ r8k_zrows:
         mov     r18, r0
 10:     movw    r20, r30                /* DQ */
         mov     r25, r18                /* DR */
-        mov     r6, r24                 /* DN */
-        clr     r24                     /* DE */
+        mov     r6, r24                 /* -DN: 256 - n */
+        neg     r6
+        mov     r24, r6                 /* DE + 256 - n (DE = 0) */
         movw    r18, LDVL               /* DV */
         ldd     r26, Y+10               /* X = page + xl */
         ldd     r27, Y+11
@@ -234,20 +305,17 @@ r8k_zrows:
         st      Z+, r18                 /* nearer or equal: depth, pixel */
         st      Z+, r19
         ld      r0, X
+        and     r0, r4
         lsl     r5
         brcc    11f
         inc     r5
         or      r0, r7
-        rjmp    15f
-11:     and     r0, r4
-15:     st      X+, r0
-        add     r18, r20                /* the DDA (twice: no jump) */
-        adc     r19, r21
-        add     r24, r25
-        brcs    12f
-        cp      r24, r6
-        brlo    13f
-12:     sub     r24, r6
+11:     st      X+, r0
+        add     r18, r20                /* the DDA (twice: no jump); the */
+        adc     r19, r21                /* error kept as e + 256 - n: */
+        add     r24, r25                /* carry when e + r >= n */
+        brcc    13f
+        add     r24, r6
         subi    r18, 0xFF
         sbci    r19, 0xFF
 13:     dec     r1
@@ -262,10 +330,8 @@ r8k_zrows:
         add     r18, r20
         adc     r19, r21
         add     r24, r25
-        brcs    17f
-        cp      r24, r6
-        brlo    18f
-17:     sub     r24, r6
+        brcc    18f
+        add     r24, r6
         subi    r18, 0xFF
         sbci    r19, 0xFF
 18:     dec     r1
@@ -306,16 +372,27 @@ r8k_zrows:
         inc     r20
         andi    r20, 3
         std     Y+15, r20
-        subi    ROWL, 1
-        sbci    ROWH, 0
+        subi    YL_, 0xFF               /* y++; on below end */
+        sbci    YH_, 0xFF
+        ldd     r18, Y+30
+        ldd     r19, Y+31
+        cp      YL_, r18
+        cpc     YH_, r19
+        brge    15f
         rjmp    .Lrow
+15:     rjmp    .Lcheck
 
-.Ldone:
+.Lstop:
+        ldi     r24, 2                  /* row y: the caller's */
+.Lout:
+        std     Y+26, YL_
+        std     Y+27, YH_
         STOREI  0, LXVL, LXVH, LXEL, LXEH
         STOREI  2, RXVL, RXVH, RXEL, RXEH
         STOREI  4, LDVL, LDVH, LDEL, LDEH
         STOREI  6, RDVL, RDVH, RDEL, RDEH
-        movw    r24, ROWL
+.Lret:
+        ldi     r25, 0
         pop     r29
         pop     r28
         pop     r17

@@ -360,12 +360,15 @@ static void test_estart_random(void);
 static void test_scanband_random(void);
 
 /* ---- r8k_zrows (ports/avr/zfill.S) against its reference (src/zrows.c,
- * renamed r8k_zrows_ref): random bands of w <= 64 columns and up to 16
- * rows in band_ref / band_asm (pages at GUARD, depths at ZOFF, every
- * byte random, guards included), random edges (columns around the band,
- * now and then left of 0 or 256+ wide: the rows the kernel leaves),
- * depths anywhere in 0..32767.  All the memory, the return value, the
- * four interpolators and t's z, page, m, k must end equal. ---- */
+ * renamed r8k_zrows_ref): random triangles and quads scanned with depth
+ * (r8_scan_begin; both runs from one copy of the scan, edges moved on
+ * by the library's r8_scan_row_attrs) over random bands of w <= 64
+ * columns and up to 16 rows starting at row y0 in band_ref / band_asm
+ * (pages at GUARD, depths at zoff, every byte random), vertices around
+ * the band, now and then left of 0 or spans 256+ wide (the rows the
+ * kernel leaves: the test steps past them as r8_zfill does and calls
+ * again), depths anywhere in 0..32767.  The return values, rows, all
+ * the memory, the scans and t's z, page, m, k must end equal. ---- */
 #define R8_ZROWS_REF 1
 #define r8k_zrows r8k_zrows_ref
 #define r8_interp_init_sub r8_interp_init_sub_ref
@@ -375,17 +378,8 @@ static void test_scanband_random(void);
 #undef r8_interp_init_sub
 #undef r8_attr_first
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
-r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+int r8k_zrows(r8_zrows *t);
 void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
-
-static void rnd_zinterp(r8_interp *it, r8_s16 lo, r8_s16 hi, r8_s16 qmax, r8_u16 dmax)
-{
-    it->den = (r8_u16)(1u + rndn(dmax));
-    it->val = rnds(lo, hi);
-    it->q = rnds((r8_s16)-qmax, qmax);
-    it->err = (r8_u16)rndn(it->den);
-    it->r = (r8_u16)rndn(it->den);
-}
 
 static int interp_eq(const r8_interp *a, const r8_interp *b)
 {
@@ -401,16 +395,43 @@ static r8_u16 zsum(const r8_u8 *p, unsigned n)
     return h;
 }
 
+/* t's row state for row y of the band at y0 */
+static void zrows_at(r8_zrows *t, r8_u8 *band, unsigned zoff, r8_u16 w, r8_s16 y0, r8_s16 y)
+{
+    r8_u16 by = (r8_u16)(y - y0);
+    t->y = y;
+    t->z = (r8_u16 *)(void *)(band + zoff) + by * w;
+    t->page = band + GUARD + (by >> 3) * w;
+    t->m = (r8_u8)(1u << (by & 7));
+    t->k = (r8_u8)(y & 3);
+}
+
+static void zrows_bind(r8_zrows *t, r8_scan *s)
+{
+    t->lx = &s->c.l.x;
+    t->rx = &s->c.r.x;
+    t->ld = &s->ld;
+    t->rd = &s->rd;
+    t->s = s;
+    t->lyend = &s->c.l.yend;
+    t->ryend = &s->c.r.yend;
+}
+
+static r8_svert zverts[4];
+static const r8_u16 zidx[4] = { 0, 1, 2, 3 };
+static r8_scan zscan_ref, zscan_asm;
+
 static void test_zrows_random(void)
 {
-    unsigned long i, stops = 0, drawn = 0;
+    unsigned long i, stops = 0, drawn = 0, moves = 0, calls = 0;
     r8_u16 sum0;
-    for (i = 0; i < 1500; i++) {
+    for (i = 0; i < 3000; i++) {
         r8_zrows ta, tr;
-        r8_interp ia[4], ir[4];
-        r8_u16 w = (r8_u16)(1u + rndn(64)), rows = (r8_u16)(1u + rndn(16)), ra, rr;
+        r8_u16 w = (r8_u16)(1u + rndn(64)), rows = (r8_u16)(1u + rndn(16));
+        r8_s16 y0 = (r8_s16)rndn(40), lim, y;
         unsigned j, zoff = (2u * GUARD + 3u * w + 1u) & ~1u;
-        unsigned len = zoff + 2u * rows * w + GUARD, c = rndn(8);
+        unsigned len = zoff + 2u * rows * w + GUARD, c = rndn(8), nv = 3u + rndn(2);
+        int rr, ra;
         r8_u32 v = 0;
         for (j = 0; j < len; j++) {
             if (!(j & 3))
@@ -422,57 +443,81 @@ static void test_zrows_random(void)
             for (j = zoff; j < len; j += 2)
                 band_ref[j + 1] = (r8_u8)(0x40 + (band_ref[j] & 1));
         memcpy(band_asm, band_ref, len);
-        if (c == 0) {                   /* wide spans: 256+ and the limits */
-            rnd_zinterp(&ir[0], 0, 40, 3, 50);
-            rnd_zinterp(&ir[1], 250, 330, 3, 50);
-        } else if (c == 1) {            /* starts left of 0 now and then */
-            rnd_zinterp(&ir[0], -6, 10, 2, 20);
-            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 8), 2, 20);
-        } else {
-            rnd_zinterp(&ir[0], -2, (r8_s16)(w + 2), 3, 400);
-            rnd_zinterp(&ir[1], -2, (r8_s16)(w + 40), 3, 400);
+        for (j = 0; j < nv; j++) {
+            r8_svert *p = &zverts[j];
+            if (c == 0)                 /* wide spans: 256+ and the limits */
+                p->x = j & 1 ? rnds(250 * 16, 330 * 16) : rnds(0, 40 * 16);
+            else if (c == 1)            /* starts left of 0 now and then */
+                p->x = rnds(-6 * 16, (r8_s16)((w + 8) * 16));
+            else
+                p->x = rnds(-2 * 16, (r8_s16)((w + 40) * 16));
+            p->y = rnds((r8_s16)(y0 * 16 - 40), (r8_s16)((y0 + rows) * 16 + 40));
+            p->d = rndn(4) == 0 ? rnds(0, 32767) : rnds(16000, 16900);
+            p->s = 0;
         }
-        if (rndn(4) == 0) {             /* extreme depth steps */
-            rnd_zinterp(&ir[2], 0, 32767, 32767, 32767);
-            rnd_zinterp(&ir[3], 0, 32767, 32767, 32767);
-        } else {
-            rnd_zinterp(&ir[2], 16000, 16900, 60, 300);
-            rnd_zinterp(&ir[3], 16000, 16900, 60, 300);
+        if (nv == 4 && c != 0) {       /* a convex quad: a box's corners */
+            r8_s16 xa = zverts[0].x, xb = zverts[1].x, ya = zverts[0].y, yb = zverts[1].y;
+            zverts[0].x = xa; zverts[0].y = ya;
+            zverts[1].x = xb; zverts[1].y = ya;
+            zverts[2].x = xb; zverts[2].y = yb;
+            zverts[3].x = xa; zverts[3].y = yb;
         }
-        memcpy(ia, ir, sizeof ia);
-        tr.w = w;
-        tr.m = (r8_u8)(1u << rndn(8));
-        tr.k = (r8_u8)rndn(4);
+        memset(&zscan_ref, 0, sizeof zscan_ref);
+        if (!r8_scan_begin(&zscan_ref, zverts, zidx, (r8_u8)nv, R8_ATTR_D, y0))
+            continue;
+        lim = zscan_ref.c.ybot < (r8_s16)(y0 + rows) ? zscan_ref.c.ybot : (r8_s16)(y0 + rows);
+        y = zscan_ref.c.y;
+        if (y < y0 || y >= lim)
+            continue;
+        memcpy(&zscan_asm, &zscan_ref, sizeof zscan_ref);
+        zrows_bind(&tr, &zscan_ref);
+        zrows_bind(&ta, &zscan_asm);
+        tr.w = ta.w = w;
+        tr.lim = ta.lim = lim;
         for (j = 0; j < 4; j++)
-            tr.pat[j] = (r8_u8)rnd();
-        ta = tr;
-        tr.lx = &ir[0]; tr.rx = &ir[1]; tr.ld = &ir[2]; tr.rd = &ir[3];
-        ta.lx = &ia[0]; ta.rx = &ia[1]; ta.ld = &ia[2]; ta.rd = &ia[3];
-        tr.page = band_ref + GUARD;
-        ta.page = band_asm + GUARD;
-        tr.z = (r8_u16 *)(void *)(band_ref + zoff);
-        ta.z = (r8_u16 *)(void *)(band_asm + zoff);
+            tr.pat[j] = ta.pat[j] = (r8_u8)rnd();
         sum0 = zsum(band_ref, len);
-        rr = r8k_zrows_ref(&tr, rows);
-        ra = r8k_zrows(&ta, rows);
-        stops += rr != 0;
-        drawn += zsum(band_ref, len) != sum0;   /* some depth or pixel written */
-        if (ra != rr || memcmp(band_ref, band_asm, len) != 0 || !interp_eq(&ia[0], &ir[0]) ||
-            !interp_eq(&ia[1], &ir[1]) || !interp_eq(&ia[2], &ir[2]) ||
-            !interp_eq(&ia[3], &ir[3]) ||
-            (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
-            ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k) {
-            print_case("r8k_zrows", i);
-            unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
+        for (;;) {
+            r8_s16 le = zscan_ref.c.l.yend, re = zscan_ref.c.r.yend;
+            zrows_at(&tr, band_ref, zoff, w, y0, y);
+            zrows_at(&ta, band_asm, zoff, w, y0, y);
+            rr = r8k_zrows_ref(&tr);
+            ra = r8k_zrows(&ta);
+            calls++;
+            moves += zscan_ref.c.l.yend != le || zscan_ref.c.r.yend != re;
+            if (ra != rr || ta.y != tr.y || memcmp(band_ref, band_asm, len) != 0 ||
+                memcmp(&zscan_ref, &zscan_asm, sizeof zscan_ref) != 0 ||
+                (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
+                ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k) {
+                print_case("r8k_zrows", i);
+                unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
+                return;
+            }
+            if (rr != 2)
+                break;
+            stops++;                    /* r8_zfill's row: stepped past */
+            R8_INTERP_STEP(&zscan_ref.c.l.x);
+            R8_INTERP_STEP(&zscan_ref.c.r.x);
+            R8_INTERP_STEP(&zscan_ref.ld);
+            R8_INTERP_STEP(&zscan_ref.rd);
+            memcpy(&zscan_asm, &zscan_ref, sizeof zscan_ref);
+            y = (r8_s16)(tr.y + 1);
+            if (y >= lim)
+                break;
         }
+        drawn += zsum(band_ref, len) != sum0;   /* some depth or pixel written */
     }
-    unity_print("r8k_zrows: rows left to C in ");
+    unity_print("r8k_zrows: ");
+    unity_print_long((long)calls);
+    unity_print(" calls, rows left to C ");
     unity_print_long((long)stops);
-    unity_print(" calls, memory written in ");
+    unity_print(", edges moved on in ");
+    unity_print_long((long)moves);
+    unity_print(", memory written in ");
     unity_print_long((long)drawn);
     unity_print("\n");
-    if (stops < 150 || drawn < 500)
-        unity_fail_int(__LINE__, "r8k_zrows: too few stops or drawn rows", (long)stops, (long)drawn);
+    if (stops < 100 || drawn < 330 || moves < 500)
+        unity_fail_int(__LINE__, "r8k_zrows: too few stops, moves or drawn bands", (long)stops, (long)drawn);
 }
 
 /* ---- r8_interp_init_sub (zfill.S) against its reference (src/zrows.c):
