@@ -28,13 +28,14 @@ typedef struct r8_zrows {
     r8_u16 w;             /* 12: columns (<= 32767) */
     r8_u8 m;              /* 14: row y's bit in the page */
     r8_u8 k;              /* 15: row y's dither phase, y & 3 */
-    r8_u8 pat[4];         /* 16: the level's dither pattern of rows k = 0..3 */
-    r8_scan *s;           /* 20: the polygon (lx .. rd point into it) */
-    const r8_s16 *lyend;  /* 22: &s->c.l.yend */
-    const r8_s16 *ryend;  /* 24: &s->c.r.yend */
-    r8_s16 y;             /* 26: the current row */
-    r8_s16 lim;           /* 28: the first row not done (<= s->c.ybot) */
-    r8_s16 end;           /* 30: (the kernel's) */
+    const r8_u8 *pat;     /* 16: the level's dither patterns (flash: */
+                          /* &r8_fb_dither_tab[4 level]), row k's pat[k] */
+    r8_scan *s;           /* 18: the polygon (lx .. rd point into it) */
+    const r8_s16 *lyend;  /* 20: &s->c.l.yend */
+    const r8_s16 *ryend;  /* 22: &s->c.r.yend */
+    r8_s16 y;             /* 24: the current row */
+    r8_s16 lim;           /* 26: the first row not done (<= s->c.ybot) */
+    r8_s16 end;           /* 28: (the kernel's) */
 } r8_zrows;
 
 /* r8_zfill's rows from y up to lim (judd's test decided or off): on
@@ -44,7 +45,7 @@ typedef struct r8_zrows {
  * lx->val to rd->val at rx->val (r8_zfill's exact stepwise
  * interpolator, steps from the reciprocal table), is drawn where its
  * depth is >= the stored one (the depth stored, the page bit set where
- * pat[k] has bit 7 - (x & 7), else cleared); then the four
+ * pat[k] (flash) has bit 7 - (x & 7), else cleared); then the four
  * interpolators step, z and page, m, k move to the next row and y++.
  * Returns 1 when y reached lim; 2 when it stopped before drawing row y
  * (its edges moved on), whose span (lx->val < rx->val) starts left of

@@ -15,16 +15,18 @@ static r8_u8 back(const r8_scanx *s, r8_u8 i, int dir)
     return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
 }
 
-/* Attribute interpolator for the edge of e (its upper vertex is the one
- * before e->vi in direction dir), at row y.  At an edge's first row
- * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division. */
-static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
-                       r8_interp *d, r8_interp *sh)
+#if defined(__GNUC__)
+#define ATTR_NOINLINE __attribute__((noinline))
+#else
+#define ATTR_NOINLINE
+#endif
+
+/* Attribute interpolators d, sh for the edge from a down to b at row y,
+ * the general set-up (kept out of line: attr_start's common path then
+ * saves few registers). */
+static ATTR_NOINLINE void attr_gen(const r8_scan *s, const r8_s16 *a, const r8_s16 *b, r8_s16 y,
+                                   r8_interp *d, r8_interp *sh)
 {
-    const r8_scanx *c = &s->c;
-    r8_u8 to = e->vi, from = back(c, to, dir);
-    const r8_s16 *a = c->vp[from];
-    const r8_s16 *b = c->vp[to];
 #if R8_ZROWS
     if ((!(s->attrs & R8_ATTR_D) || r8_attr_first(d, a, b, y, 2)) &&
         (!(s->attrs & R8_ATTR_S) || r8_attr_first(sh, a, b, y, 3)))
@@ -49,6 +51,24 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
             r8_interp_init_mul(sh, a[3], s0, dv, dv * (R8_SUBPX >> sh1), (r8_u16)dy);
         }
     }
+}
+
+/* Attribute interpolator for the edge of e (its upper vertex is the one
+ * before e->vi in direction dir), at row y.  At an edge's first row
+ * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division;
+ * depth alone (the z-buffers) straight from here. */
+static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
+                       r8_interp *d, r8_interp *sh)
+{
+    const r8_scanx *c = &s->c;
+    r8_u8 to = e->vi, from = back(c, to, dir);
+    const r8_s16 *a = c->vp[from];
+    const r8_s16 *b = c->vp[to];
+#if R8_ZROWS
+    if (s->attrs == R8_ATTR_D && r8_attr_first(d, a, b, y, 2))
+        return;
+#endif
+    attr_gen(s, a, b, y, d, sh);
 }
 
 void r8_scan_attrs(r8_scan *s)

@@ -7,6 +7,12 @@
 #include "r8scan.h"
 #include "r8zrows.h"
 
+#if defined(__GNUC__)
+#define ZF_NOINLINE __attribute__((noinline))
+#else
+#define ZF_NOINLINE
+#endif
+
 /* Gouraud shade (8.8) to a dither level 0..16, rounded. */
 r8_u8 r8_vis_level(r8_s16 s)
 {
@@ -223,61 +229,20 @@ static void span_step(r8_interp *d, r8_s16 base, r8_s16 diff, r8_u16 n)
     d->den = n;
 }
 
-void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
+/* r8_zfill's rows in C: all of them where R8_ZROWS is 0, else the rows
+ * r8k_zrows leaves (kept out of line: the kernel's path then saves few
+ * registers) */
+static ZF_NOINLINE void zfill_gen(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
 {
     r8_scan *s = &a->s;
     r8_scanx *c = &s->c;
     r8_edge *l = &c->l, *r = &c->r;
     r8_s16 lim = c->ybot < ylimit ? c->ybot : ylimit, w = fb->width, y = c->y;
     r8_u8 lv = a->level > 16 ? 16 : a->level, judd = st->judd;
-#if R8_ZROWS
-    r8_zrows t;
-    int kstop = 0;
-    t.lx = &l->x;
-    t.rx = &r->x;
-    t.ld = &s->ld;
-    t.rd = &s->rd;
-    t.w = (r8_u16)w;
-    t.pat[0] = R8_FB_DITHER(lv, 0);
-    t.pat[1] = R8_FB_DITHER(lv, 1);
-    t.pat[2] = R8_FB_DITHER(lv, 2);
-    t.pat[3] = R8_FB_DITHER(lv, 3);
-    t.s = s;
-    t.lyend = &l->yend;
-    t.ryend = &r->yend;
-#endif
     if (lim > fb->y0 + fb->rows)
         lim = (r8_s16)(fb->y0 + fb->rows);
-#if R8_ZROWS
-    t.lim = lim;
-#endif
     for (; y < lim; y++) {
         r8_s16 xl, xr;
-#if R8_ZROWS
-        if (kstop) {
-            kstop = 0;            /* the kernel's row: its edges moved on */
-        } else if (bits16 && y >= fb->y0 && (!judd || c->front)) {
-            /* the rows from y on: r8k_zrows (src/r8zrows.h), up to lim
-             * or a row it leaves to the code below */
-            r8_u16 by = (r8_u16)(y - fb->y0);
-            int rc;
-            t.z = (r8_u16 *)(void *)st->depth + by * (unsigned)w;
-            t.page = fb->buf + (by >> 3) * (unsigned)w;
-            t.m = R8_FB_BIT(by);
-            t.k = (r8_u8)(y & 3);
-            t.y = y;
-            rc = r8k_zrows(&t);
-            y = t.y;
-            if (rc != 2) {
-                if (rc)
-                    c->y = y;     /* lim */
-                return;           /* (0: a back face, over) */
-            }
-            kstop = 1;
-            y--;                  /* the loop's y++: row y below */
-            continue;
-        } else
-#endif
         if (y >= l->yend || y >= r->yend || (judd && !c->front))
             if (!r8_scan_row_attrs(s, y, judd))
                 return;           /* a back face: over */
@@ -357,6 +322,54 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
         R8_INTERP_STEP(&s->rd);
     }
     c->y = y;
+}
+
+void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
+{
+#if R8_ZROWS
+    r8_scan *s = &a->s;
+    r8_scanx *c = &s->c;
+    r8_s16 y = c->y;
+    if (bits16 && y >= fb->y0 && (!st->judd || c->front)) {
+        /* the rows from y on: r8k_zrows (src/r8zrows.h), up to lim or a
+         * row it leaves to zfill_gen (whose edges it has moved on) */
+        r8_zrows t;
+        r8_u16 w = fb->width, by = (r8_u16)(y - fb->y0);
+        r8_u8 lv = a->level > 16 ? 16 : a->level;
+        int rc;
+        t.lim = c->ybot < ylimit ? c->ybot : ylimit;
+        if (t.lim > fb->y0 + fb->rows)
+            t.lim = (r8_s16)(fb->y0 + fb->rows);
+        t.lx = &c->l.x;
+        t.rx = &c->r.x;
+        t.ld = &s->ld;
+        t.rd = &s->rd;
+        t.w = w;
+        t.pat = &r8_fb_dither_tab[(unsigned)lv << 2];
+        t.s = s;
+        t.lyend = &c->l.yend;
+        t.ryend = &c->r.yend;
+        t.y = y;
+        t.z = (r8_u16 *)(void *)st->depth + by * w;
+        t.page = fb->buf + (by >> 3) * w;
+        t.m = R8_FB_BIT(by);
+        t.k = (r8_u8)(y & 3);
+        while ((rc = r8k_zrows(&t)) == 2) {
+            /* row t.y in C, then on from the next */
+            c->y = t.y;
+            zfill_gen(st, a, (r8_s16)(t.y + 1), fb, bits16);
+            by = (r8_u16)(++t.y - fb->y0);
+            t.z = (r8_u16 *)(void *)st->depth + by * w;
+            t.page = fb->buf + (by >> 3) * w;
+            t.m = R8_FB_BIT(by);
+            t.k = (r8_u8)(t.y & 3);
+        }
+        if (rc)
+            c->y = t.y;           /* lim */
+        return;                   /* (0: a back face, over) */
+    }
+#endif
+    zfill_gen(st, a, ylimit, fb, bits16);
 }
 
 /* The 4x4-block z-buffer, two designs (docs/visibility.md):

@@ -34,7 +34,7 @@ int r8k_zrows(r8_zrows *t)
                 r8_s16 diff = (r8_s16)(rd->val - ld->val), dv = ld->val, dq;
                 r8_u16 un = diff < 0 ? (r8_u16)~diff : (r8_u16)diff, q, rr;
                 r8_u32 p = un;
-                r8_u8 de = 0, dr, k, pat = t->pat[t->k], m = t->m, nm = (r8_u8)~m;
+                r8_u8 de = 0, dr, k, pat = R8_RDU8(&t->pat[t->k]), m = t->m, nm = (r8_u8)~m;
                 r8_u16 *z = t->z + xl;
                 r8_u8 *bp = t->page + xl;
                 p *= R8_RDU16(&r8_rcp256[n]);

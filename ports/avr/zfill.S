@@ -3,7 +3,7 @@
  * r8_interp_init_sub (include/r8raster.h), the edges' depth set-up
  * (below).
  *
- *   r8_u16 r8k_zrows(r8_zrows *t, r8_u16 rows);
+ *   int r8k_zrows(r8_zrows *t);
  *
  * Same memory results as the C reference src/zrows.c.  The value and
  * error of the four interpolators (lx, rx, ld, rd) stay in r2..r17 for
@@ -17,7 +17,7 @@
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
- * m 14, k 15, pat 16..19}.
+ * m 14, k 15, pat 16, s 18, lyend 20, ryend 22, y 24, lim 26, end 28}.
  */
 
 #define LXVL r2
@@ -110,23 +110,23 @@ r8k_zrows:
         LOADI   2, RXVL, RXVH, RXEL, RXEH
         LOADI   4, LDVL, LDVH, LDEL, LDEH
         LOADI   6, RDVL, RDVH, RDEL, RDEH
-        ldd     YL_, Y+26               /* y */
-        ldd     YH_, Y+27
+        ldd     YL_, Y+24               /* y */
+        ldd     YH_, Y+25
 
 .Lcheck:                                /* y < lim, else done */
-        ldd     r18, Y+28
-        ldd     r19, Y+29
+        ldd     r18, Y+26
+        ldd     r19, Y+27
         cp      YL_, r18
         cpc     YH_, r19
         brlt    1f
         ldi     r24, 1
         rjmp    .Lout
-1:      ldd     r30, Y+22               /* an edge ends at y: move on */
-        ldd     r31, Y+23
+1:      ldd     r30, Y+20               /* an edge ends at y: move on */
+        ldd     r31, Y+21
         ld      r20, Z
         ldd     r21, Z+1
-        ldd     r30, Y+24
-        ldd     r31, Y+25
+        ldd     r30, Y+22
+        ldd     r31, Y+23
         ld      r26, Z
         ldd     r27, Z+1
         cp      YL_, r20
@@ -136,14 +136,14 @@ r8k_zrows:
         cpc     YH_, r27
         brge    2f
         rjmp    .Lend
-2:      std     Y+26, YL_
-        std     Y+27, YH_
+2:      std     Y+24, YL_
+        std     Y+25, YH_
         STOREI  0, LXVL, LXVH, LXEL, LXEH
         STOREI  2, RXVL, RXVH, RXEL, RXEH
         STOREI  4, LDVL, LDVH, LDEL, LDEH
         STOREI  6, RDVL, RDVH, RDEL, RDEH
-        ldd     r24, Y+20               /* r8_scan_row_attrs(s, y, 0) */
-        ldd     r25, Y+21
+        ldd     r24, Y+18               /* r8_scan_row_attrs(s, y, 0) */
+        ldd     r25, Y+19
         ldi     r20, 0
         ldi     r21, 0
         call    r8_scan_row_attrs
@@ -155,16 +155,16 @@ r8k_zrows:
         LOADI   2, RXVL, RXVH, RXEL, RXEH
         LOADI   4, LDVL, LDVH, LDEL, LDEH
         LOADI   6, RDVL, RDVH, RDEL, RDEH
-        ldd     YL_, Y+26
-        ldd     YH_, Y+27
-        ldd     r18, Y+28
-        ldd     r19, Y+29
-        ldd     r30, Y+22
-        ldd     r31, Y+23
+        ldd     YL_, Y+24
+        ldd     YH_, Y+25
+        ldd     r18, Y+26
+        ldd     r19, Y+27
+        ldd     r30, Y+20
+        ldd     r31, Y+21
         ld      r20, Z
         ldd     r21, Z+1
-        ldd     r30, Y+24
-        ldd     r31, Y+25
+        ldd     r30, Y+22
+        ldd     r31, Y+23
         ld      r26, Z
         ldd     r27, Z+1
 .Lend:                                  /* end = min(lim, yends), > y */
@@ -182,8 +182,8 @@ r8k_zrows:
         movw    r18, YL_
         subi    r18, 0xFF
         sbci    r19, 0xFF
-6:      std     Y+30, r18
-        std     Y+31, r19
+6:      std     Y+28, r18
+        std     Y+29, r19
 
 .Lrow:
         cp      LXVL, RXVL              /* xl >= xr: no span */
@@ -214,11 +214,12 @@ r8k_zrows:
         push    r6
         push    r7
         mov     r4, r20                 /* r4: columns */
-        ldd     r0, Y+15                /* r5: pat[k] */
-        movw    r30, r28
+        ldd     r0, Y+15                /* r5: pat[k] (flash) */
+        ldd     r30, Y+16
+        ldd     r31, Y+17
         add     r30, r0
         adc     r31, r1
-        ldd     r5, Z+16
+        lpm     r5, Z
         mov     r20, LXVL               /* rotated left by xl & 7: */
         sbrc    r20, 2                  /* 4 (swap), then xl & 3 */
         swap    r5
@@ -374,8 +375,8 @@ r8k_zrows:
         std     Y+15, r20
         subi    YL_, 0xFF               /* y++; on below end */
         sbci    YH_, 0xFF
-        ldd     r18, Y+30
-        ldd     r19, Y+31
+        ldd     r18, Y+28
+        ldd     r19, Y+29
         cp      YL_, r18
         cpc     YH_, r19
         brge    15f
@@ -385,8 +386,8 @@ r8k_zrows:
 .Lstop:
         ldi     r24, 2                  /* row y: the caller's */
 .Lout:
-        std     Y+26, YL_
-        std     Y+27, YH_
+        std     Y+24, YL_
+        std     Y+25, YH_
         STOREI  0, LXVL, LXVH, LXEL, LXEH
         STOREI  2, RXVL, RXVH, RXEL, RXEH
         STOREI  4, LDVL, LDVH, LDEL, LDEH
