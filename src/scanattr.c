@@ -15,18 +15,16 @@ static r8_u8 back(const r8_scanx *s, r8_u8 i, int dir)
     return (r8_u8)(i == 0 ? s->n - 1 : i - 1);
 }
 
-#if defined(__GNUC__)
-#define ATTR_NOINLINE __attribute__((noinline))
-#else
-#define ATTR_NOINLINE
-#endif
-
-/* Attribute interpolators d, sh for the edge from a down to b at row y,
- * the general set-up (kept out of line: attr_start's common path then
- * saves few registers). */
-static ATTR_NOINLINE void attr_gen(const r8_scan *s, const r8_s16 *a, const r8_s16 *b, r8_s16 y,
-                                   r8_interp *d, r8_interp *sh)
+/* Attribute interpolator for the edge of e (its upper vertex is the one
+ * before e->vi in direction dir), at row y.  At an edge's first row
+ * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division. */
+static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
+                       r8_interp *d, r8_interp *sh)
 {
+    const r8_scanx *c = &s->c;
+    r8_u8 to = e->vi, from = back(c, to, dir);
+    const r8_s16 *a = c->vp[from];
+    const r8_s16 *b = c->vp[to];
 #if R8_ZROWS
     if ((!(s->attrs & R8_ATTR_D) || r8_attr_first(d, a, b, y, 2)) &&
         (!(s->attrs & R8_ATTR_S) || r8_attr_first(sh, a, b, y, 3)))
@@ -53,29 +51,22 @@ static ATTR_NOINLINE void attr_gen(const r8_scan *s, const r8_s16 *a, const r8_s
     }
 }
 
-/* Attribute interpolator for the edge of e (its upper vertex is the one
- * before e->vi in direction dir), at row y.  At an edge's first row
- * (where R8_ZROWS, src/r8zrows.h): r8_attr_first, without a division;
- * depth alone (the z-buffers) straight from here. */
-static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
-                       r8_interp *d, r8_interp *sh)
-{
-    const r8_scanx *c = &s->c;
-    r8_u8 to = e->vi, from = back(c, to, dir);
-    const r8_s16 *a = c->vp[from];
-    const r8_s16 *b = c->vp[to];
+/* attr_start with its depth-only path written in the caller (where
+ * R8_ZROWS: a call and its register saves fewer per edge) */
 #if R8_ZROWS
-    if (s->attrs == R8_ATTR_D && r8_attr_first(d, a, b, y, 2))
-        return;
+#define ATTR_START(s, e, dir, y, d, sh) do { \
+    if ((s)->attrs != R8_ATTR_D || \
+        !r8_attr_first(d, (s)->c.vp[back(&(s)->c, (e)->vi, dir)], (s)->c.vp[(e)->vi], y, 2)) \
+        attr_start(s, e, dir, y, d, sh); } while (0)
+#else
+#define ATTR_START(s, e, dir, y, d, sh) attr_start(s, e, dir, y, d, sh)
 #endif
-    attr_gen(s, a, b, y, d, sh);
-}
 
 void r8_scan_attrs(r8_scan *s)
 {
     if (s->attrs) {
-        attr_start(s, &s->c.l, -1, s->c.y, &s->ld, &s->ls);
-        attr_start(s, &s->c.r, 1, s->c.y, &s->rd, &s->rs);
+        ATTR_START(s, &s->c.l, -1, s->c.y, &s->ld, &s->ls);
+        ATTR_START(s, &s->c.r, 1, s->c.y, &s->rd, &s->rs);
     }
 }
 
@@ -109,9 +100,9 @@ int r8_scan_row_attrs(r8_scan *s, r8_s16 y, int judd)
         return 0;
     if (s->attrs) {
         if (l->vi != lv)
-            attr_start(s, l, -1, y, &s->ld, &s->ls);
+            ATTR_START(s, l, -1, y, &s->ld, &s->ls);
         if (r->vi != rv)
-            attr_start(s, r, 1, y, &s->rd, &s->rs);
+            ATTR_START(s, r, 1, y, &s->rd, &s->rs);
     }
     return 1;
 }
