@@ -423,73 +423,137 @@ r8k_zrows:
  *     val = sat16(base + floor(s0 * dv / n)), err the remainder,
  *     q = sat16(floor(16 * dv / n)), r its remainder, den = n.
  * A floor quotient of num = un or -un - 1 (un < 65536) is that of un
- * (divsmall: r8_rcp256[n], one correction), complemented when negative;
- * the remainder then n - 1 - rr.  val is summed in 24 bits, then
- * saturated.
- * In: r25:24 it, r23:22 base, r21:20 s0, r19:18 dv, r17:16 n. */
+ * (DIVN: r8_rcp256[n], read once for both, one correction),
+ * complemented when negative; the remainder then n - 1 - rr.  val is
+ * summed in 24 bits, then saturated.
+ * In: r25:24 it, r23:22 base, r21:20 s0, r19:18 dv, r17:16 n; on to
+ * isub (X it, r23:22 base, r18 s0, r25:24 dv, r21:20 n). */
         .section .text.r8_interp_init_sub,"ax",@progbits
         .global r8_interp_init_sub
         .type   r8_interp_init_sub, @function
 r8_interp_init_sub:
         movw    r26, r24                /* X = it */
+        mov     r0, r20
+        movw    r24, r18                /* dv */
+        movw    r20, r16                /* n */
+        mov     r18, r0                 /* s0 */
+
+/* q (r31:r30) = un / n, rr (r29:r28) = un % n for un = r29:r28,
+ * n = r21:r20 (1..256), rcp = r17:r16 = r8_rcp256[n]: q' = (un * rcp)
+ * >> 16 is q or q - 1.  Uses r18, r0; r1 = 0 after. */
+.macro DIVN
+        mul     r29, r17
+        movw    r30, r0
+        mul     r28, r16
+        mov     r18, r1
+        mul     r28, r17
+        add     r18, r0
+        adc     r30, r1
+        brcc    1f
+        inc     r31
+1:      mul     r29, r16
+        add     r18, r0
+        adc     r30, r1
+        brcc    2f
+        inc     r31
+2:      mul     r30, r20                /* rr = un - q' n (16 bits) */
+        sub     r28, r0
+        sbc     r29, r1
+        mul     r31, r20
+        sub     r29, r0
+        mul     r30, r21
+        sub     r29, r0
+        clr     r1
+        cp      r28, r20
+        cpc     r29, r21
+        brlo    3f
+        sub     r28, r20
+        sbc     r29, r21
+        adiw    r30, 1
+3:
+.endm
+/* r29:r28 = n - 1 - r29:r28 (n in r21:r20) */
+.macro NREM
+        mov     r0, r20
+        mov     r1, r21
+        sub     r0, r28
+        sbc     r1, r29
+        movw    r28, r0
+        sbiw    r28, 1
+        clr     r1
+.endm
+
+isub:
+        push    r16
+        push    r17
+        push    r28
+        push    r29
         clt
-        sbrs    r19, 7
+        sbrs    r25, 7
         rjmp    1f
         set                             /* T: dv < 0 */
-        com     r19                     /* m = -dv */
-        neg     r18
-        sbci    r19, 0xFF
-1:      mul     r20, r18                /* un = s0 * m */
-        movw    r24, r0
-        mul     r20, r19
-        add     r25, r0
+        com     r25                     /* m = -dv */
+        neg     r24
+        sbci    r25, 0xFF
+1:      ldi     r30, lo8(r8_rcp256)     /* rcp = r8_rcp256[n] */
+        ldi     r31, hi8(r8_rcp256)
+        add     r30, r20
+        adc     r31, r21
+        add     r30, r20
+        adc     r31, r21
+        lpm     r16, Z+
+        lpm     r17, Z
+        mul     r18, r24                /* un = s0 * m */
+        movw    r28, r0
+        mul     r18, r25
+        add     r29, r0
         clr     r1
-        clr     r21                     /* r21: 0xFF when s0 * dv < 0 */
+        clr     r19                     /* r19: 0xFF when s0 * dv < 0 */
         brtc    2f
-        mov     r0, r24
-        or      r0, r25
+        mov     r0, r28
+        or      r0, r29
         breq    2f
+        sbiw    r28, 1
+        ldi     r19, 0xFF
+2:      swap    r24                     /* r25:24 = 16 m (- 1 when dv < 0) */
+        swap    r25                     /* (m < 4096) */
+        mov     r0, r24
+        andi    r24, 0xF0
+        andi    r25, 0xF0
+        mov     r18, r0
+        andi    r18, 0x0F
+        or      r25, r18
+        brtc    3f
         sbiw    r24, 1
-        ldi     r21, 0xFF
-2:      rcall   divsmall
-        tst     r21
-        breq    3f
+3:      DIVN
+        tst     r19
+        breq    4f
         com     r30                     /* q = -q - 1 */
         com     r31
-        rcall   nrem                    /* rr = n - 1 - rr */
-3:      sbrc    r23, 7                  /* r21:r31:r30 += base (24 bits) */
-        dec     r21
+        NREM                            /* rr = n - 1 - rr */
+4:      sbrc    r23, 7                  /* r19:r31:r30 += base (24 bits) */
+        dec     r19
         add     r30, r22
         adc     r31, r23
-        adc     r21, r1
-        mov     r0, r31                 /* fits 16 bits: r21 = sign of r31 */
+        adc     r19, r1
+        mov     r0, r31                 /* fits 16 bits: r19 = sign of r31 */
         lsl     r0
         sbc     r0, r0
-        cp      r0, r21
-        breq    4f
+        cp      r0, r19
+        breq    5f
         ldi     r30, 0xFF
         ldi     r31, 0x7F
-        sbrs    r21, 7
-        rjmp    4f
+        sbrs    r19, 7
+        rjmp    5f
         ldi     r30, 0x00
         ldi     r31, 0x80
-4:      st      X+, r30                 /* val */
+5:      st      X+, r30                 /* val */
         st      X+, r31
-        movw    r22, r24                /* err */
-        movw    r24, r18                /* un = 16 m (- 1 when dv < 0) */
-        lsl     r24
-        rol     r25
-        lsl     r24
-        rol     r25
-        lsl     r24
-        rol     r25
-        lsl     r24
-        rol     r25
-        brtc    5f
-        sbiw    r24, 1
-5:      rcall   divsmall
+        movw    r22, r28                /* err */
+        movw    r28, r24
+        DIVN
         brtc    7f
-        rcall   nrem
+        NREM
         sbrc    r31, 7                  /* q >= 32768: -q - 1 < -32768 */
         rjmp    6f
         com     r30
@@ -506,17 +570,24 @@ r8_interp_init_sub:
         st      X+, r31
         st      X+, r22                 /* err */
         st      X+, r23
-        st      X+, r24                 /* r */
-        st      X+, r25
-        st      X+, r16                 /* den */
-        st      X+, r17
+        st      X+, r28                 /* r */
+        st      X+, r29
+        st      X+, r20                 /* den */
+        st      X+, r21
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        ldi     r24, 1                  /* (r8_attr_first's 1) */
+        ldi     r25, 0
         ret
+        .size   r8_interp_init_sub, .-r8_interp_init_sub
 
 /* int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b,
  *                   r8_s16 y, r8_u8 k)                 (src/r8zrows.h)
  * In: r25:24 it, r23:22 a, r21:20 b, r19:18 y, r16 k.  The checks of
  * src/zrows.c's reference, then r8_interp_init_sub(it, a[k], s0, dv, n)
- * (r17:r16 kept around it); returns 1, or 0 with it untouched. */
+ * (isub, which returns the 1); or 0 with it untouched. */
         .global r8_attr_first
         .type   r8_attr_first, @function
 r8_attr_first:
@@ -584,75 +655,8 @@ r8_attr_first:
         ldi     r30, 0xF0
         cpc     r27, r30
         brlt    .Lafail
-        push    r16
-        push    r17
-        movw    r16, r20                /* n */
-        mov     r20, r18                /* s0 */
-        ldi     r21, 0
-        movw    r18, r26                /* dv */
-        rcall   r8_interp_init_sub
-        pop     r17
-        pop     r16
-        ldi     r24, 1
-        ldi     r25, 0
-        ret
+        movw    r30, r26                /* on to isub: X = it, r25:24 = dv, */
+        movw    r26, r24                /* r18 = s0 (r19 = 0), r21:20 = n, */
+        movw    r24, r30                /* r23:22 = a[k] */
+        rjmp    isub
         .size   r8_attr_first, .-r8_attr_first
-
-/* r25:r24 = n - 1 - r25:r24 (n in r17:r16) */
-nrem:
-        mov     r0, r16
-        mov     r1, r17
-        sub     r0, r24
-        sbc     r1, r25
-        movw    r24, r0
-        sbiw    r24, 1
-        clr     r1
-        ret
-
-/* q (r31:r30) = un / n, rr (r25:r24) = un % n for un = r25:r24,
- * n = r17:r16 (1..256): q' = (un * r8_rcp256[n]) >> 16 is q or q - 1.
- * Uses r0, r20, r28, r29 (kept); r1 = 0 after. */
-divsmall:
-        push    r28
-        push    r29
-        ldi     r30, lo8(r8_rcp256)
-        ldi     r31, hi8(r8_rcp256)
-        add     r30, r16
-        adc     r31, r17
-        add     r30, r16
-        adc     r31, r17
-        lpm     r28, Z+
-        lpm     r29, Z
-        mul     r25, r29
-        movw    r30, r0
-        mul     r24, r28
-        mov     r20, r1
-        mul     r24, r29
-        add     r20, r0
-        adc     r30, r1
-        brcc    1f
-        inc     r31
-1:      mul     r25, r28
-        add     r20, r0
-        adc     r30, r1
-        brcc    2f
-        inc     r31
-2:      mul     r30, r16                /* rr = un - q' n (16 bits) */
-        movw    r28, r0
-        mul     r31, r16
-        add     r29, r0
-        mul     r30, r17
-        add     r29, r0
-        clr     r1
-        sub     r24, r28
-        sbc     r25, r29
-        cp      r24, r16
-        cpc     r25, r17
-        brlo    3f
-        sub     r24, r16
-        sbc     r25, r17
-        adiw    r30, 1
-3:      pop     r29
-        pop     r28
-        ret
-        .size   r8_interp_init_sub, .-r8_interp_init_sub
