@@ -53,6 +53,11 @@ typedef struct r8_zrows {
  * when r8_scan_row_attrs said the polygon is over.  y is left in t->y. */
 int r8k_zrows(r8_zrows *t);
 
+/* The attribute interpolators of the left (right = 0) or right edge
+ * set up again for row y, as r8_scan_row_attrs does when the edge has
+ * moved on (scanattr.c; the AVR kernel's general case). */
+void r8_scan_attr_edge(r8_scan *s, int right, r8_s16 y);
+
 /* The attribute k (2: depth, 3: shade) of the edge from vertex a down
  * to vertex b (x, y in 12.4, then the attributes) at row y, when that
  * is the edge's first row and the edge at most 256 subpixels tall:

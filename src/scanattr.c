@@ -51,6 +51,17 @@ static void attr_start(const r8_scan *s, const r8_edge *e, int dir, r8_s16 y,
     }
 }
 
+#if R8_ZROWS || defined(R8_ZROWS_REF)
+/* (src/r8zrows.h) */
+void r8_scan_attr_edge(r8_scan *s, int right, r8_s16 y)
+{
+    if (right)
+        attr_start(s, &s->c.r, 1, y, &s->rd, &s->rs);
+    else
+        attr_start(s, &s->c.l, -1, y, &s->ld, &s->ls);
+}
+#endif
+
 /* attr_start with its depth-only path written in the caller (where
  * R8_ZROWS: a call and its register saves fewer per edge) */
 #if R8_ZROWS

@@ -3,6 +3,7 @@
  * ports/avr/zfill.S (chosen by R8_ASM_ZFILL).  r8k_zrows and
  * r8_attr_first are compiled where R8_ZROWS (src/r8zrows.h) uses them,
  * or with R8_ZROWS_REF (the AVR kernel test). */
+#include <stddef.h>
 #include "r8zrows.h"
 #include "r8int.h"
 #include "r8scan.h"
@@ -90,6 +91,18 @@ int r8k_zrows(r8_zrows *t)
     t->y = y;
     return 1;
 }
+#endif
+
+#ifdef R8_ASM_ZFILL
+/* ports/avr/zfill.S reads these offsets (also scankern.c's) */
+R8_CASSERT(zrows_vp_at_0, offsetof(r8_scanx, vp) == 0);
+R8_CASSERT(zrows_c_at_0, offsetof(r8_scan, c) == 0);
+R8_CASSERT(zrows_attrs_at_51, offsetof(r8_scan, attrs) == 51);
+R8_CASSERT(zrows_n_at_18, offsetof(r8_scanx, n) == 18);
+R8_CASSERT(zrows_yend_at_10, offsetof(r8_edge, yend) == 10);
+R8_CASSERT(zrows_vi_at_12, offsetof(r8_edge, vi) == 12);
+R8_CASSERT(zrows_t_y_at_24, offsetof(r8_zrows, y) == 24);
+R8_CASSERT(zrows_t_end_at_28, offsetof(r8_zrows, end) == 28);
 #endif
 
 #ifndef R8_ASM_ZFILL

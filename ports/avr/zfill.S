@@ -121,43 +121,37 @@ r8k_zrows:
         brlt    1f
         ldi     r24, 1
         rjmp    .Lout
-1:      ldd     r30, Y+20               /* an edge ends at y: move on */
+1:      ldd     r30, Y+20               /* the left edge ends at y: on */
         ldd     r31, Y+21
         ld      r20, Z
         ldd     r21, Z+1
-        ldd     r30, Y+22
+        cp      YL_, r20
+        cpc     YH_, r21
+        brlt    2f
+        std     Y+24, YL_
+        std     Y+25, YH_
+        ldi     r19, 0
+        rcall   emove
+        LOADI   0, LXVL, LXVH, LXEL, LXEH
+        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        ldd     YL_, Y+24
+        ldd     YH_, Y+25
+2:      ldd     r30, Y+22               /* the right one */
         ldd     r31, Y+23
         ld      r26, Z
         ldd     r27, Z+1
-        cp      YL_, r20
-        cpc     YH_, r21
-        brge    2f
         cp      YL_, r26
         cpc     YH_, r27
-        brge    2f
-        rjmp    .Lend
-2:      std     Y+24, YL_
+        brlt    3f
+        std     Y+24, YL_
         std     Y+25, YH_
-        STOREI  0, LXVL, LXVH, LXEL, LXEH
-        STOREI  2, RXVL, RXVH, RXEL, RXEH
-        STOREI  4, LDVL, LDVH, LDEL, LDEH
-        STOREI  6, RDVL, RDVH, RDEL, RDEH
-        ldd     r24, Y+18               /* r8_scan_row_attrs(s, y, 0) */
-        ldd     r25, Y+19
-        ldi     r20, 0
-        ldi     r21, 0
-        call    r8_scan_row_attrs
-        or      r24, r25
-        brne    3f
-        ldi     r24, 0                  /* over (interpolators stored) */
-        rjmp    .Lret
-3:      LOADI   0, LXVL, LXVH, LXEL, LXEH
+        ldi     r19, 1
+        rcall   emove
         LOADI   2, RXVL, RXVH, RXEL, RXEH
-        LOADI   4, LDVL, LDVH, LDEL, LDEH
         LOADI   6, RDVL, RDVH, RDEL, RDEH
         ldd     YL_, Y+24
         ldd     YH_, Y+25
-        ldd     r18, Y+26
+3:      ldd     r18, Y+26
         ldd     r19, Y+27
         ldd     r30, Y+20
         ldd     r31, Y+21
@@ -412,6 +406,99 @@ r8k_zrows:
         pop     r4
         pop     r3
         pop     r2
+        ret
+/* emove: r8_scan_row_attrs(s, y, 0)'s work for one edge (r19: 0 the
+ * left, 1 the right; y in t->y): r8k_estart moves it on; when its vi
+ * changed, the depth interpolator (t->ld or t->rd) is set up again by
+ * r8_attr_first(it, vp[back(vi)], vp[vi], y, 2) (depth alone), or by
+ * r8_scan_attr_edge (src/r8zrows.h: attr_start, the general one).
+ * Offsets (asserted in src/zrows.c, scankern.c): r8_scanx {vp 0, n 18,
+ * l 25, r 38}, r8_edge {yend 10, vi 12}, r8_scan {c 0, attrs 51}.
+ * Keeps r2..r17, Y; the interpolators in memory are the truth after. */
+emove:
+        push    r19
+        ldd     r22, Y+20               /* e = lyend - 10 (or ryend) */
+        ldd     r23, Y+21
+        sbrs    r19, 0
+        rjmp    1f
+        ldd     r22, Y+22
+        ldd     r23, Y+23
+1:      subi    r22, 10
+        sbci    r23, 0
+        movw    r30, r22
+        ldd     r18, Z+12               /* from = e->vi */
+        push    r18
+        push    r22
+        push    r23
+        ldd     r24, Y+18               /* r8k_estart(&s->c, e, y, from) */
+        ldd     r25, Y+19
+        ldd     r20, Y+24
+        ldd     r21, Y+25
+        call    r8k_estart
+        pop     r31                     /* Z = e */
+        pop     r30
+        pop     r18                     /* from */
+        pop     r19                     /* side */
+        ldd     r20, Z+12               /* vi */
+        cp      r20, r18
+        breq    .Lemret                 /* vi unchanged: no attributes */
+        ldd     r30, Y+18               /* Z = s */
+        ldd     r31, Y+19
+        ldd     r0, Z+51                /* attrs: depth alone, else C */
+        dec     r0
+        brne    .Lemgen
+        ldd     r21, Z+18               /* n */
+        mov     r18, r20                /* back(vi): left i + 1 (0 past */
+        sbrc    r19, 0                  /* n - 1), right i - 1 (n - 1 */
+        rjmp    2f                      /* before 0) */
+        inc     r18
+        cp      r18, r21
+        brne    3f
+        clr     r18
+        rjmp    3f
+2:      tst     r18
+        brne    4f
+        mov     r18, r21
+4:      dec     r18
+3:      push    r19
+        movw    r26, r30                /* a = vp[back], b = vp[vi] */
+        add     r26, r18
+        adc     r27, r1
+        add     r26, r18
+        adc     r27, r1
+        ld      r22, X+
+        ld      r23, X
+        add     r30, r20
+        adc     r31, r1
+        add     r30, r20
+        adc     r31, r1
+        ld      r0, Z
+        ldd     r21, Z+1
+        mov     r20, r0
+        ldd     r24, Y+4                /* it = ld (or rd) */
+        ldd     r25, Y+5
+        sbrs    r19, 0
+        rjmp    5f
+        ldd     r24, Y+6
+        ldd     r25, Y+7
+5:      ldd     r18, Y+24               /* y */
+        ldd     r19, Y+25
+        push    r16
+        ldi     r16, 2
+        call    r8_attr_first
+        pop     r16
+        pop     r19
+        or      r24, r25
+        brne    .Lemret
+.Lemgen:
+        ldd     r24, Y+18               /* r8_scan_attr_edge(s, side, y) */
+        ldd     r25, Y+19
+        mov     r22, r19
+        ldi     r23, 0
+        ldd     r20, Y+24
+        ldd     r21, Y+25
+        call    r8_scan_attr_edge
+.Lemret:
         ret
         .size   r8k_zrows, .-r8k_zrows
 

@@ -368,7 +368,9 @@ static void test_scanband_random(void);
  * the band, now and then left of 0 or spans 256+ wide (the rows the
  * kernel leaves: the test steps past them as r8_zfill does and calls
  * again), depths anywhere in 0..32767.  The return values, rows, all
- * the memory, the scans and t's z, page, m, k must end equal. ---- */
+ * the memory, the scans and t's z, page, m, k must end equal.  One in
+ * eight scans carries shade too (the kernel's general attribute set-up,
+ * r8_scan_attr_edge). ---- */
 #define R8_ZROWS_REF 1
 #define r8k_zrows r8k_zrows_ref
 #define r8_interp_init_sub r8_interp_init_sub_ref
@@ -453,7 +455,7 @@ static void test_zrows_random(void)
                 p->x = rnds(-2 * 16, (r8_s16)((w + 40) * 16));
             p->y = rnds((r8_s16)(y0 * 16 - 40), (r8_s16)((y0 + rows) * 16 + 40));
             p->d = rndn(4) == 0 ? rnds(0, 32767) : rnds(16000, 16900);
-            p->s = 0;
+            p->s = rnds(0, 4096);
         }
         if (nv == 4 && c != 0) {       /* a convex quad: a box's corners */
             r8_s16 xa = zverts[0].x, xb = zverts[1].x, ya = zverts[0].y, yb = zverts[1].y;
@@ -463,7 +465,8 @@ static void test_zrows_random(void)
             zverts[3].x = xa; zverts[3].y = yb;
         }
         memset(&zscan_ref, 0, sizeof zscan_ref);
-        if (!r8_scan_begin(&zscan_ref, zverts, zidx, (r8_u8)nv, R8_ATTR_D, y0))
+        if (!r8_scan_begin(&zscan_ref, zverts, zidx, (r8_u8)nv,
+                           (r8_u8)(rndn(8) ? R8_ATTR_D : R8_ATTR_D | R8_ATTR_S), y0))
             continue;
         lim = zscan_ref.c.ybot < (r8_s16)(y0 + rows) ? zscan_ref.c.ybot : (r8_s16)(y0 + rows);
         y = zscan_ref.c.y;
