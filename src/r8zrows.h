@@ -22,7 +22,8 @@
  * u16 are 2 bytes on the AVR, no padding. */
 typedef struct r8_zrows {
     r8_interp *lx, *rx;   /* 0, 2: the edges' columns */
-    r8_interp *ld, *rd;   /* 4, 6: the edges' depths */
+    r8_interp *ld, *rd;   /* 4, 6: the edges' depths (the four point into */
+                          /* t->s: &s->c.l.x, &s->c.r.x, &s->ld, &s->rd) */
     r8_u16 *z;            /* 8: the depth row of row y */
     r8_u8 *page;          /* 10: its page row (SSD1306 layout) */
     r8_u16 w;             /* 12: columns (<= 32767) */

@@ -1,19 +1,23 @@
-/* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: the 16-bit z-buffer's
- * rows between edge changes, with their set-up, in one call; and
- * r8_interp_init_sub (include/r8raster.h), the edges' depth set-up
- * (below).
+/* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: r8_zfill's rows of the
+ * 16-bit z-buffer, edges moved on as they end, in one call; and
+ * r8_interp_init_sub (include/r8raster.h) / r8_attr_first
+ * (src/r8zrows.h), the edges' depth set-up (below).
  *
  *   int r8k_zrows(r8_zrows *t);
  *
  * Same memory results as the C reference src/zrows.c.  The value and
  * error of the four interpolators (lx, rx, ld, rd) stay in r2..r17 for
  * the whole call and are written back at the end; their q, r, den are
- * read through the pointers on each row's step.  A span's depth step is
- * floor((rd - ld) / n) from r8_rcp256[n] (n = 1..255: q or q - 1, one
- * correction), with an 8-bit error (r < n <= 255).  Per pixel: depth
- * test, store, page bit set or cleared by bit 7 of the pattern (rotated
- * left per column), DDA step; the drawn and the skipped pixel each with
- * its own copy of the step (no jump back into a shared tail).
+ * read through lx on each row's step (rx, ld, rd lie 13, 27, 47 bytes
+ * on).  An edge that ends at row y is moved on here (emove: r8k_estart,
+ * then r8_attr_first, or r8_scan_attr_edge in C), and only its two
+ * interpolators re-read.  A span's depth step is floor((rd - ld) / n)
+ * from r8_rcp256[n] (n = 1..255: q or q - 1, one correction), with an
+ * 8-bit error (r < n <= 255) kept as e + 256 - n, so that the carry of
+ * e + r says e + r >= n.  Per pixel: depth test, store, page bit set or
+ * cleared by bit 7 of the pattern (rotated left per column), DDA step;
+ * the drawn and the skipped pixel each with its own copy of the step (no
+ * jump back into a shared tail).
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
@@ -40,20 +44,19 @@
 #define YH_ r23
 
 /* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
- * through the pointer at Y+off */
-.macro STEP off, vl, vh, el, eh
-        ldd     r30, Y+\off
-        ldd     r31, Y+\off+1
-        ldd     r18, Z+2
-        ldd     r19, Z+3
+ * of the interpolator at Z+off (the four lie in one r8_scan:
+ * lx, then rx, ld, rd 13, 27 and 47 bytes on, asserted in src/zrows.c) */
+.macro STEPZ off, vl, vh, el, eh
+        ldd     r18, Z+\off+2
+        ldd     r19, Z+\off+3
         add     \vl, r18
         adc     \vh, r19
-        ldd     r18, Z+6
-        ldd     r19, Z+7
+        ldd     r18, Z+\off+6
+        ldd     r19, Z+\off+7
         add     \el, r18
         adc     \eh, r19
-        ldd     r18, Z+8
-        ldd     r19, Z+9
+        ldd     r18, Z+\off+8
+        ldd     r19, Z+\off+9
         cp      \el, r18
         cpc     \eh, r19
         brlo    1f
@@ -338,10 +341,12 @@ r8k_zrows:
         pop     r4
 
 .Lstep:
-        STEP    0, LXVL, LXVH, LXEL, LXEH
-        STEP    2, RXVL, RXVH, RXEL, RXEH
-        STEP    4, LDVL, LDVH, LDEL, LDEH
-        STEP    6, RDVL, RDVH, RDEL, RDEH
+        ldd     r30, Y+0                /* Z = lx: rx, ld, rd at 13, 27, 47 */
+        ldd     r31, Y+1
+        STEPZ   0, LXVL, LXVH, LXEL, LXEH
+        STEPZ   13, RXVL, RXVH, RXEL, RXEH
+        STEPZ   27, LDVL, LDVH, LDEL, LDEH
+        STEPZ   47, RDVL, RDVH, RDEL, RDEH
         ldd     r18, Y+12               /* w */
         ldd     r19, Y+13
         ldd     r30, Y+8                /* z += w */
