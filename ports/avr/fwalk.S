@@ -1,0 +1,254 @@
+/* fwalk.S - r8k_fwalk (include/r8kern.h) for AVR with MUL (ATmega).
+ *
+ *   r8_u8 r8k_fwalk(r8_fwalk *w);
+ *
+ * r8_bucket_object's face loop (src/render.c): from face w->f - 1 down,
+ * the next face to draw - its n checked, r8k_cull (facecull.S) when
+ * w->normals is set, its vertices transformed where their x is -32767
+ * (R8_VX_TODO: a call of r8_fw_vertex(w, i), C), the rows of its
+ * vertices' box tested against the frame - returns 1 with w->f, top,
+ * bot set; 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
+ * vertex x = -32768); 0 at the end.  Reference: src/kern.c, which
+ * asserts the offsets of r8_fwalk used here.
+ *
+ * Registers (avr-gcc ABI): w in r25:r24, then Y.  Per face r17:r16 =
+ * 6 f (the face's byte offset in faces and normals) until the box;
+ * r8k_cull (facecull.S, or its C reference) keeps r14-r17 and Y.  The
+ * box: Z = the face's vertex indices (flash), r21 = the low byte of
+ * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
+ * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
+ * on the stack around r8_fw_vertex with Z and r21).  Saves r14-r17, r28,
+ * r29; clears r1.  About 40 cycles a face besides r8k_cull, 43 a vertex,
+ * 60 for the rows, 50 in and out.
+ */
+#ifdef R8_NO_PROGMEM
+#define RD(r) ld r, Z+
+#define RD0(r) ld r, Z
+#else
+#define RD(r) lpm r, Z+
+#define RD0(r) lpm r, Z
+#endif
+
+/* offsets in r8_fwalk */
+#define W_BASE   0
+#define W_FACES  2
+#define W_NORM   4
+#define W_VERTS  6
+#define W_EYE    8
+#define W_F     10
+#define W_W     12
+#define W_H     14
+#define W_TOP   16
+#define W_BOT   18
+#define W_VSH   20
+
+/* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
+ * ((v + 0x8007) mod 2^16 >> 4) - 2048 */
+.macro FLOOR lo, hi
+    subi  \lo, 0xF9
+    sbci  \hi, 0x7F
+    swap  \lo
+    andi  \lo, 0x0F
+    swap  \hi
+    eor   \lo, \hi
+    andi  \hi, 0x0F
+    eor   \lo, \hi
+    subi  \hi, 0x08
+.endm
+
+    .section .text.r8k_fwalk,"ax",@progbits
+    .global r8k_fwalk
+    .type   r8k_fwalk, @function
+r8k_fwalk:
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = w */
+face:
+    ldd   r24, Y+W_F
+    ldd   r25, Y+W_F+1
+    sbiw  r24, 1
+    brcc  1f
+    ldi   r24, 0            /* no face left */
+    rjmp  out
+1:  std   Y+W_F, r24
+    std   Y+W_F+1, r25
+    lsl   r24               /* r17:r16 = 6 f */
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r30, Y+W_FACES    /* Z = faces + 6 f */
+    ldd   r31, Y+W_FACES+1
+    add   r30, r16
+    adc   r31, r17
+    RD(r20)                 /* n */
+    mov   r21, r20
+    subi  r21, 3
+    cpi   r21, 2
+    brsh  other             /* n not 3 or 4 */
+    ldd   r24, Y+W_NORM
+    ldd   r25, Y+W_NORM+1
+    adiw  r30, 1            /* Z = the vertex indices */
+    sbiw  r24, 0
+    breq  box               /* no cull */
+    add   r24, r16          /* n = normals + 3 f */
+    adc   r25, r17
+    RD0(r22)                /* v = verts + 3 v[0] */
+    ldi   r23, 6
+    mul   r22, r23
+    movw  r22, r0
+    clr   r1
+    ldd   r18, Y+W_VERTS
+    ldd   r19, Y+W_VERTS+1
+    add   r22, r18
+    adc   r23, r19
+    ldd   r20, Y+W_EYE
+    ldd   r21, Y+W_EYE+1
+    call  r8k_cull          /* keeps r14-r17, Y; r1 = 0 */
+    sbrc  r25, 7
+    rjmp  other             /* -1: the caller's 32-bit test */
+    tst   r24
+    breq  face              /* a back face */
+    ldd   r30, Y+W_FACES    /* Z = the vertex indices, r20 = n again */
+    ldd   r31, Y+W_FACES+1
+    add   r30, r16
+    adc   r31, r17
+    RD(r20)
+    adiw  r30, 1
+box:
+    /* Z = the vertex indices, r20 = n */
+    mov   r21, r30
+    add   r21, r20          /* the end: lo(Z + n) */
+    ldd   r18, Y+W_VSH
+    bst   r18, 1            /* T: 8-byte vertices */
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+    ldi   r18, 0xFF
+    ldi   r19, 0x7F         /* xmin = 32767 */
+    movw  r14, r18          /* ymin = 32767 */
+    ldi   r16, 0x01
+    ldi   r17, 0x80         /* xmax = -32767 (6 f is done with) */
+    movw  r0, r16           /* ymax = -32767 */
+    rjmp  vert
+other:
+    ldi   r24, 2            /* R8_FW_OTHER */
+    rjmp  out
+mark:
+    cpi   r22, 2
+    brsh  xok               /* an ordinary x */
+    cpi   r22, 1
+    brne  other             /* -32768: the clipper's */
+    /* -32767: r8_fw_vertex(w, i), the box kept on the stack, then this
+     * vertex again */
+    push  r0
+    push  r1
+    push  r18
+    push  r19
+    push  r21
+    push  r30
+    push  r31
+    sbiw  r30, 1
+    RD0(r22)
+    clr   r1
+    movw  r24, r28
+    call  r8_fw_vertex
+    pop   r31
+    pop   r30
+    pop   r21
+    pop   r19
+    pop   r18
+    pop   r1
+    pop   r0
+    sbiw  r30, 1
+    ldd   r24, Y+W_VSH
+    bst   r24, 1
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+vert:
+    RD(r26)
+    clr   r27
+    lsl   r26
+    rol   r27
+    lsl   r26
+    rol   r27
+    brtc  2f
+    lsl   r26
+    rol   r27
+2:  add   r26, r24
+    adc   r27, r25
+    ld    r22, X+
+    ld    r23, X+
+    cpi   r23, 0x80
+    breq  mark              /* x in [-32768, -32513] */
+xok:
+    cp    r22, r18
+    cpc   r23, r19
+    brge  3f
+    movw  r18, r22
+3:  cp    r16, r22
+    cpc   r17, r23
+    brge  4f
+    movw  r16, r22
+4:  ld    r22, X+
+    ld    r23, X
+    cp    r22, r14
+    cpc   r23, r15
+    brge  5f
+    movw  r14, r22
+5:  cp    r0, r22
+    cpc   r1, r23
+    brge  6f
+    movw  r0, r22
+6:  cp    r30, r21
+    brne  vert
+    /* the rows: bot r21:r20, top r23:r22 */
+    movw  r20, r0
+    clr   r1
+    FLOOR r20, r21
+    movw  r22, r14
+    FLOOR r22, r23
+    cp    r22, r20
+    cpc   r23, r21
+    brge  next              /* top >= bot */
+    cp    r1, r20
+    cpc   r1, r21
+    brge  next              /* bot <= 0 */
+    ldd   r24, Y+W_H
+    ldd   r25, Y+W_H+1
+    cp    r22, r24
+    cpc   r23, r25
+    brge  next              /* top >= h */
+    FLOOR r16, r17
+    cp    r1, r16
+    cpc   r1, r17
+    brge  next              /* floor(xmax) <= 0 */
+    FLOOR r18, r19
+    ldd   r24, Y+W_W
+    ldd   r25, Y+W_W+1
+    cp    r18, r24
+    cpc   r19, r25
+    brge  next              /* floor(xmin) >= w */
+    std   Y+W_TOP, r22
+    std   Y+W_TOP+1, r23
+    std   Y+W_BOT, r20
+    std   Y+W_BOT+1, r21
+    ldi   r24, 1
+out:
+    clr   r1
+    ldi   r25, 0
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    ret
+next:
+    rjmp  face
+    .size r8k_fwalk, .-r8k_fwalk
