@@ -113,6 +113,13 @@ typedef struct r8_fwalk {
     r8_u8 vsh;              /* 1 or 2 */
     void *st;               /* for r8_fw_vertex */
     const void *o;
+    void *heads, *next;     /* the band buckets and links (r8_fid: r8_u8
+                               with fid8, else r8_u16) */
+    r8_u8 *slot;            /* pool slots per face id, or 0 */
+    r8_u16 npoly;           /* faces put in a bucket */
+    r8_u16 fbase;           /* the object's first face id */
+    r8_s8 bsh;              /* log2 band rows; < 0: faces handed back */
+    r8_u8 fid8;
 } r8_fwalk;
 
 /* The next face of w (f - 1 down to 0; w->f = that face) that is to be
@@ -123,7 +130,11 @@ typedef struct r8_fwalk {
  * R8_FLOOR16(ymax + 7)) of its vertices' box (16-bit wrapping sums) hold
  * a pixel centre of the frame (top < bot, bot > 0, top < h,
  * R8_FLOOR16(xmax + 7) > 0, R8_FLOOR16(xmin + 7) < w; else the face is
- * skipped): returns 1, w->top, w->bot set.  Returns 2 (R8_FW_OTHER) for
+ * skipped).  With bsh >= 0 such a face is put in its band's bucket, as
+ * r8_bucket_object does (id = fbase + f; next[id] = heads[key], heads[key]
+ * = id, key = top >> bsh or 0 for top < 0; slot[id] = 0xFF; npoly + 1),
+ * and the walk goes on; with bsh < 0 it returns 1, w->top, w->bot set
+ * (painter's: the caller buckets it).  Returns 2 (R8_FW_OTHER) for
  * a face the caller takes itself (n out of range, r8k_cull -1, a vertex
  * whose x is -32768: at once, later vertices left as they are), 0 when no
  * face is left. */

@@ -195,9 +195,27 @@ r8_u8 r8k_fwalk(r8_fwalk *w)
         top = R8_FW_FLOOR(ymin);
         bot = R8_FW_FLOOR(ymax);
         if (top < bot && bot > 0 && top < w->h && R8_FW_FLOOR(xmax) > 0 && R8_FW_FLOOR(xmin) < w->w) {
-            w->top = top;
-            w->bot = bot;
-            return 1;
+            r8_u16 key = 0, id = (r8_u16)(w->fbase + f);
+            if (w->bsh < 0) {
+                w->top = top;
+                w->bot = bot;
+                return 1;
+            }
+            if (top > 0)
+                key = (r8_u16)((r8_u16)top >> w->bsh);
+            if (w->fid8) {
+                r8_u8 *h = (r8_u8 *)w->heads, *nx = (r8_u8 *)w->next;
+                id = (r8_u8)id;
+                nx[id] = h[key];
+                h[key] = (r8_u8)id;
+            } else {
+                r8_u16 *h = (r8_u16 *)w->heads, *nx = (r8_u16 *)w->next;
+                nx[id] = h[key];
+                h[key] = id;
+            }
+            if (w->slot)
+                w->slot[id] = 0xFF;
+            w->npoly++;
         }
     }
     return 0;
@@ -216,6 +234,13 @@ R8_CASSERT(fwalk_h_at_14, offsetof(r8_fwalk, h) == 14);
 R8_CASSERT(fwalk_top_at_16, offsetof(r8_fwalk, top) == 16);
 R8_CASSERT(fwalk_bot_at_18, offsetof(r8_fwalk, bot) == 18);
 R8_CASSERT(fwalk_vsh_at_20, offsetof(r8_fwalk, vsh) == 20);
+R8_CASSERT(fwalk_heads_at_25, offsetof(r8_fwalk, heads) == 25);
+R8_CASSERT(fwalk_next_at_27, offsetof(r8_fwalk, next) == 27);
+R8_CASSERT(fwalk_slot_at_29, offsetof(r8_fwalk, slot) == 29);
+R8_CASSERT(fwalk_npoly_at_31, offsetof(r8_fwalk, npoly) == 31);
+R8_CASSERT(fwalk_fbase_at_33, offsetof(r8_fwalk, fbase) == 33);
+R8_CASSERT(fwalk_bsh_at_35, offsetof(r8_fwalk, bsh) == 35);
+R8_CASSERT(fwalk_fid8_at_36, offsetof(r8_fwalk, fid8) == 36);
 R8_CASSERT(fwalk_face_6, sizeof(r8_face) == 6 && offsetof(r8_face, v) == 2);
 #endif
 

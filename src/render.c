@@ -782,6 +782,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #endif
 #if R8_FWALK_K
     fw.f = 0;
+    fw.npoly = 0;
     if ((normal ? kcull : 1)
 #ifndef R8_NO_BSP
         && !bsp
@@ -798,6 +799,17 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         fw.vsh = vsh;
         fw.st = st;
         fw.o = o;
+        /* the band buckets: r8k_fwalk fills them itself */
+        fw.bsh = (r8_s8)(painter || st->bsh < 0 ? -1 : st->bsh);
+        fw.heads = st->heads;
+        fw.next = st->next;
+#ifdef R8_NO_POOL
+        fw.slot = 0;
+#else
+        fw.slot = st->slot;
+#endif
+        fw.fbase = o->fbase;
+        fw.fid8 = (r8_u8)(sizeof(r8_fid) == 1);
     }
 #endif
 #ifndef R8_NO_BSP
@@ -951,6 +963,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         st->npoly++;
         }
     }
+#if R8_FWALK_K
+    st->npoly = (r8_u16)(st->npoly + fw.npoly);   /* those r8k_fwalk put */
+#endif
 }
 
 void r8_render_frame(r8_render *r, const r8_camera *cam)

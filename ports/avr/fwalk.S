@@ -41,6 +41,13 @@
 #define W_TOP   16
 #define W_BOT   18
 #define W_VSH   20
+#define W_HEADS 25
+#define W_NEXT  27
+#define W_SLOT  29
+#define W_NPOLY 31
+#define W_FBASE 33
+#define W_BSH   35
+#define W_FID8  36
 
 /* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
  * ((v + 0x8007) mod 2^16 >> 4) - 2048 */
@@ -234,6 +241,9 @@ xok:
     cp    r18, r24
     cpc   r19, r25
     brge  next              /* floor(xmin) >= w */
+    ldd   r24, Y+W_BSH
+    sbrs  r24, 7
+    rjmp  put               /* bsh >= 0: into its bucket here */
     std   Y+W_TOP, r22
     std   Y+W_TOP+1, r23
     std   Y+W_BOT, r20
@@ -250,5 +260,70 @@ out:
     pop   r14
     ret
 next:
+    rjmp  face
+put:
+    /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
+     * r19:r18 (r1 = 0) */
+    sbrs  r23, 7
+    rjmp  1f
+    clr   r22
+    clr   r23
+1:  tst   r24
+    breq  3f
+2:  lsr   r23
+    ror   r22
+    dec   r24
+    brne  2b
+3:  ldd   r18, Y+W_F
+    ldd   r19, Y+W_F+1
+    ldd   r20, Y+W_FBASE
+    ldd   r21, Y+W_FBASE+1
+    add   r18, r20
+    adc   r19, r21
+    ldd   r30, Y+W_HEADS
+    ldd   r31, Y+W_HEADS+1
+    ldd   r26, Y+W_NEXT
+    ldd   r27, Y+W_NEXT+1
+    ldd   r24, Y+W_FID8
+    tst   r24
+    breq  4f
+    clr   r19               /* 8-bit ids */
+    add   r30, r22          /* next[id] = heads[key], heads[key] = id */
+    adc   r31, r23
+    ld    r20, Z
+    st    Z, r18
+    add   r26, r18
+    adc   r27, r1
+    st    X, r20
+    rjmp  5f
+4:  lsl   r22               /* 16-bit ids */
+    rol   r23
+    add   r30, r22
+    adc   r31, r23
+    ld    r20, Z
+    ldd   r21, Z+1
+    st    Z, r18
+    std   Z+1, r19
+    movw  r24, r18
+    lsl   r24
+    rol   r25
+    add   r26, r24
+    adc   r27, r25
+    st    X+, r20
+    st    X, r21
+5:  ldd   r30, Y+W_SLOT     /* slot[id] = R8_NO_SLOT */
+    ldd   r31, Y+W_SLOT+1
+    mov   r24, r30
+    or    r24, r31
+    breq  6f
+    add   r30, r18
+    adc   r31, r19
+    ldi   r24, 0xFF
+    st    Z, r24
+6:  ldd   r24, Y+W_NPOLY
+    ldd   r25, Y+W_NPOLY+1
+    adiw  r24, 1
+    std   Y+W_NPOLY, r24
+    std   Y+W_NPOLY+1, r25
     rjmp  face
     .size r8k_fwalk, .-r8k_fwalk

@@ -368,8 +368,10 @@ static void test_zsum_random(void)
  * (to transform: r8_fw_vertex below, which writes new values, sometimes
  * -32768) and -32768 (the clipper's).  Every call of a walk to its end
  * is compared (return, f, top, bot), the vertices after it, and the
- * order of r8_fw_vertex's calls; each outcome must be hit ---- */
-#define FW_NV 64
+ * order of r8_fw_vertex's calls; with bsh >= 0 (faces put in band
+ * buckets: 8- or 16-bit ids, slots or none) also the buckets, links,
+ * slots and npoly; each outcome must be hit ---- */
+#define FW_NV 48
 #define FW_NI(i, j) (((i) * 37 + (j) * 13 + ((i) >> 2) * 7 + 5) % FW_NV)
 #define FW_N(i) ((i) % 16 == 6 ? 2 : (i) % 16 == 11 ? 5 : (i) % 16 == 15 ? 0 : 3 + ((i) * 5 % 3 != 0))
 #define FW_F(i) {FW_N(i), 0, {FW_NI(i, 0), FW_NI(i, 1), FW_NI(i, 2), FW_NI(i, 3)}}
@@ -378,6 +380,9 @@ static const r8_face fw_faces[] R8_FLASH = {
 };
 static r8_s16 fw_sv[2][FW_NV * 4];
 static r8_s16 fw_tf[FW_NV][2];        /* what r8_fw_vertex writes */
+#define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
+static r8_u16 fw_heads[2][8], fw_next[2][FW_NID];
+static r8_u8 fw_slot[2][FW_NID];
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
 void r8_fw_vertex(r8_fwalk *w, r8_u8 i)
@@ -408,6 +413,7 @@ static void test_fwalk_random(void)
         r8_s32 *e = &eye.x;
         unsigned k, nf = 1 + rndn(64), off = rndn(sizeof fw_faces / sizeof fw_faces[0] - nf + 1);
         unsigned marks = rndn(3), nr = 0;
+        r8_u16 npoly0;
         r8_u8 vsh = (r8_u8)(1 + rndn(2)), r[2];
         for (k = 0; k < FW_NV; k++) {
             r8_s16 *v = fw_sv[0] + (k << vsh);
@@ -436,7 +442,30 @@ static void test_fwalk_random(void)
         w[0].vsh = vsh;
         w[0].st = 0;
         w[0].o = 0;
+        /* the buckets: 16- or 8-bit ids, bands of 8 to 32 rows in at most
+         * 64, with pool slots or none; or faces handed back */
+        w[0].bsh = (r8_s8)(rndn(3) ? (int)(3 + rndn(3)) : -1);
+        if (w[0].bsh >= 0)
+            w[0].h = rndn(4) ? 64 : rnds(1, 64);
+        w[0].fid8 = (r8_u8)rndn(2);
+        w[0].fbase = (r8_u16)rndn(FW_NID - 64 + 1);
+        w[0].npoly = npoly0 = (r8_u16)rnd();
+        for (k = 0; k < 8; k++)
+            fw_heads[0][k] = (r8_u16)rnd();
+        for (k = 0; k < FW_NID; k++) {
+            fw_next[0][k] = (r8_u16)rnd();
+            fw_slot[0][k] = (r8_u8)rnd();
+        }
+        memcpy(fw_heads[1], fw_heads[0], sizeof fw_heads[0]);
+        memcpy(fw_next[1], fw_next[0], sizeof fw_next[0]);
+        memcpy(fw_slot[1], fw_slot[0], sizeof fw_slot[0]);
         w[1] = w[0];
+        w[0].heads = fw_heads[0];
+        w[0].next = fw_next[0];
+        w[0].slot = rndn(3) ? fw_slot[0] : 0;
+        w[1].heads = fw_heads[1];
+        w[1].next = fw_next[1];
+        w[1].slot = w[0].slot ? fw_slot[1] : 0;
         w[1].base = fw_sv[1];
         fw_nlog[0] = fw_nlog[1] = 0;
         do {                          /* the two walks in step */
@@ -445,6 +474,8 @@ static void test_fwalk_random(void)
             fw_run = 1;
             r[1] = r8k_fwalk(&w[1]);
             if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
+                w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
+                memcmp(fw_next[0], fw_next[1], sizeof fw_next[0]) || memcmp(fw_slot[0], fw_slot[1], sizeof fw_slot[0]) ||
                 memcmp(fw_sv[0], fw_sv[1], sizeof fw_sv[0]) || fw_nlog[0] != fw_nlog[1] ||
                 memcmp(fw_log[0], fw_log[1], fw_nlog[0])) {
                 print_case("r8k_fwalk", i);
@@ -453,9 +484,11 @@ static void test_fwalk_random(void)
             }
             if (r[0])
                 hit[r[0] == 1 ? 0 : 1]++;
+            if (!r[0])
+                hit[0] += (r8_u16)(w[0].npoly - npoly0);   /* put in a bucket */
             nr++;
         } while (r[0] && nr <= nf);
-        hit[3] += nf - (nr - 1u);             /* faces skipped inside */
+        hit[3] += nf - (nr - 1u) - (r8_u16)(w[0].npoly - npoly0);   /* skipped inside */
     }
     hit[2] = fw_calls;
     for (i = 0; i < 4; i++)
