@@ -3,8 +3,8 @@
  *   r8_u8 r8k_fwalk(r8_fwalk *w);
  *
  * r8_bucket_object's face loop (src/render.c): from face w->f - 1 down,
- * the next face to draw - its n checked, r8k_cull (facecull.S) when
- * w->normals is set, its vertices transformed where their x is -32767
+ * the next face to draw - its n checked, r8k_cull's test (facecull.S's
+ * code, inline here) when w->normals is set, its vertices transformed where their x is -32767
  * (R8_VX_TODO: a call of r8_fw_vertex(w, i), C), the rows of its
  * vertices' box tested against the frame - returns 1 with w->f, top,
  * bot set; 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
@@ -12,13 +12,14 @@
  * asserts the offsets of r8_fwalk used here.
  *
  * Registers (avr-gcc ABI): w in r25:r24, then Y.  Per face r17:r16 =
- * 6 f (the face's byte offset in faces and normals) until the box;
- * r8k_cull (facecull.S, or its C reference) keeps r14-r17 and Y.  The
+ * 6 f (the face's byte offset in faces and normals) until the cull,
+ * which has r8k_cull's registers (X = eye, Z = v then n, differences
+ * r19:r18, r21:r20, r23:r22, sum r27:r24, normal r17:r16, r15 zero).  The
  * box: Z = the face's vertex indices (flash), r21 = the low byte of
  * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
  * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
  * on the stack around r8_fw_vertex with Z and r21).  Saves r14-r17, r28,
- * r29; clears r1.  About 40 cycles a face besides r8k_cull, 43 a vertex,
+ * r29; clears r1.  About 200 cycles a face with the cull, 43 a vertex,
  * 60 for the rows, 50 in and out.
  */
 #ifdef R8_NO_PROGMEM
@@ -48,6 +49,57 @@
 #define W_FBASE 33
 #define W_BSH   35
 #define W_FID8  36
+
+#define ZERO r15
+
+/* r8k_cull's: d = eye component - 16 v component (X advances to the
+ * next r8_s32); out of range: to `cout` */
+.macro DIFF dl, dh
+    RD(\dl)
+    RD(\dh)
+    movw  r16, \dl
+    subi  r16, 0x01
+    sbci  r17, 0xFC         /* v + 1023 */
+    cpi   r16, 0xFF
+    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
+    brcc  cout
+    swap  \dh               /* v << 4 (fits: |v| <= 1023) */
+    swap  \dl
+    andi  \dh, 0xF0
+    eor   \dh, \dl
+    andi  \dl, 0xF0
+    eor   \dh, \dl
+    ld    r16, X+
+    ld    r17, X
+    adiw  r26, 3
+    sub   r16, \dl
+    sbc   r17, \dh
+    movw  \dl, r16
+.endm
+
+/* r8k_cull's: the sum r27:r24 += n component (r17:r16, read here) * d */
+.macro ACC dl, dh
+    RD(r16)
+    RD(r17)
+    mul   r16, \dl          /* u x u, at byte 0 */
+    add   r24, r0
+    adc   r25, r1
+    adc   r26, ZERO
+    adc   r27, ZERO
+    muls  r17, \dh          /* s x s, at byte 2 */
+    add   r26, r0
+    adc   r27, r1
+    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
+    sbc   r27, ZERO         /* the sign extension: -2^24 */
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu \dh, r16          /* s x u, at byte 1 */
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+.endm
 
 /* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
  * ((v + 0x8007) mod 2^16 >> 4) - 2048 */
@@ -98,31 +150,75 @@ face:
     mov   r21, r20
     subi  r21, 3
     cpi   r21, 2
-    brsh  other             /* n not 3 or 4 */
+    brlo  1f
+    rjmp  other             /* n not 3 or 4 */
+1:
     ldd   r24, Y+W_NORM
     ldd   r25, Y+W_NORM+1
     adiw  r30, 1            /* Z = the vertex indices */
     sbiw  r24, 0
-    breq  box               /* no cull */
+    brne  1f
+    rjmp  box               /* no cull */
+1:
     add   r24, r16          /* n = normals + 3 f */
     adc   r25, r17
+    /* r8k_cull (facecull.S) inline: the differences eye - 16 v,
+     * -1 when a component of v lies outside [-1023, 1023] */
     RD0(r22)                /* v = verts + 3 v[0] */
     ldi   r23, 6
     mul   r22, r23
-    movw  r22, r0
-    clr   r1
-    ldd   r18, Y+W_VERTS
-    ldd   r19, Y+W_VERTS+1
-    add   r22, r18
-    adc   r23, r19
-    ldd   r20, Y+W_EYE
-    ldd   r21, Y+W_EYE+1
-    call  r8k_cull          /* keeps r14-r17, Y; r1 = 0 */
-    sbrc  r25, 7
+    ldd   r30, Y+W_VERTS
+    ldd   r31, Y+W_VERTS+1
+    add   r30, r0
+    adc   r31, r1
+    ldd   r26, Y+W_EYE      /* X = eye */
+    ldd   r27, Y+W_EYE+1
+    movw  r14, r24          /* (n) */
+    DIFF  r18, r19
+    DIFF  r20, r21
+    DIFF  r22, r23
+    rjmp  dot
+cout:
     rjmp  other             /* -1: the caller's 32-bit test */
-    tst   r24
-    breq  face              /* a back face */
-    ldd   r30, Y+W_FACES    /* Z = the vertex indices, r20 = n again */
+dot:
+    movw  r30, r14          /* Z = n */
+    clr   ZERO
+    RD(r16)                 /* the first product sets the sum */
+    RD(r17)
+    mul   r16, r18
+    movw  r24, r0
+    muls  r17, r19
+    movw  r26, r0
+    mulsu r17, r18
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu r19, r16
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    ACC   r20, r21
+    ACC   r22, r23
+    clr   r1
+    sbrc  r27, 7
+    rjmp  face              /* < 0: a back face */
+    or    r24, r25
+    or    r24, r26
+    or    r24, r27
+    brne  1f
+    rjmp  face              /* 0: a back face */
+1:  ldd   r24, Y+W_F        /* Z = the vertex indices, r20 = n again */
+    ldd   r25, Y+W_F+1
+    lsl   r24
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r30, Y+W_FACES
     ldd   r31, Y+W_FACES+1
     add   r30, r16
     adc   r31, r17

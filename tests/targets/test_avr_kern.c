@@ -412,7 +412,7 @@ static void test_fwalk_random(void)
         r8_vec3l eye;
         r8_s32 *e = &eye.x;
         unsigned k, nf = 1 + rndn(64), off = rndn(sizeof fw_faces / sizeof fw_faces[0] - nf + 1);
-        unsigned marks = rndn(3), nr = 0;
+        unsigned marks = rndn(3), nr = 0, c;
         r8_u16 npoly0;
         r8_u8 vsh = (r8_u8)(1 + rndn(2)), r[2];
         for (k = 0; k < FW_NV; k++) {
@@ -428,8 +428,9 @@ static void test_fwalk_random(void)
             fw_tf[k][1] = fw_coord(rndn(8), 1);
         }
         memcpy(fw_sv[1], fw_sv[0], sizeof fw_sv[0]);
+        c = rndn(2);                  /* eye at its limits: sums past 2^30 */
         for (k = 0; k < 3; k++)
-            e[k] = rnds(-16383, 16383);
+            e[k] = c ? rnds(-16383, 16383) : (rndn(2) ? 16383 : -16383);
         w[0].base = fw_sv[0];
         w[0].faces = fw_faces + off;
         w[0].normals = rndn(4) ? kc_norms + 3u * rndn(24) : 0;
