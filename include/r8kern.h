@@ -14,6 +14,7 @@
  *   r8k_cull    the 16-bit backface test of a face (R8_ASM_CULL)
  *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
  *   r8k_zsum    a face's painter's depth sum (R8_ASM_ZSUM)
+ *   r8k_fwalk   an object's faces: cull, screen box, rows (R8_ASM_FWALK)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -21,6 +22,7 @@
 #include "r8types.h"
 #include "r8raster.h"
 #include "r8fixed.h"
+#include "r8scene.h"
 
 /* Where a trapezoid fill writes: the current row's page in the band
  * (its column 0), the row's bit in the page byte, the row's dither
@@ -93,5 +95,52 @@ r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
  * else 1 and *out = floor((row . sums + 512) / 1024), exactly (row three
  * Q1.14 r8_s16: the camera-space z row of the object's matrix). */
 int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
+
+/* r8k_fwalk's walk over one object's faces (r8_bucket_object). */
+typedef struct r8_fwalk {
+    const r8_s16 *base;     /* the object's screen vertices: vertex i at
+                               base + (i << vsh); x, y in 12.4, or x
+                               -32767 (R8_VX_TODO), -32768 (R8_VX_CLIP) */
+    const r8_face *faces;   /* the mesh's faces (R8_FLASH) */
+    const r8_s16 *normals;  /* the face normals for r8k_cull (R8_FLASH), or
+                               0: no cull */
+    const r8_s16 *verts;    /* the model vertices (R8_FLASH) */
+    const r8_vec3l *eye;    /* r8k_cull's eye */
+    r8_u16 f;               /* faces f - 1 down to 0 are left; the face
+                               returned */
+    r8_s16 w, h;            /* the frame */
+    r8_s16 top, bot;        /* the rows of the face returned with 1 */
+    r8_u8 vsh;              /* 1 or 2 */
+    void *st;               /* for r8_fw_vertex */
+    const void *o;
+    void *heads, *next;     /* the band buckets and links (r8_fid: r8_u8
+                               with fid8, else r8_u16) */
+    r8_u8 *slot;            /* pool slots per face id, or 0 */
+    r8_u16 npoly;           /* faces put in a bucket */
+    r8_u16 fbase;           /* the object's first face id */
+    r8_s8 bsh;              /* log2 band rows; < 0: faces handed back */
+    r8_u8 fid8;
+} r8_fwalk;
+
+/* The next face of w (f - 1 down to 0; w->f = that face) that is to be
+ * drawn: n = faces[f].n in [3, R8_MAX_FACE_VERTS]; with normals,
+ * r8k_cull(normals + 3 f, verts + 3 v[0], eye) 1 (0: the face is
+ * skipped); its vertices transformed (r8_fw_vertex(w, i) for each whose
+ * x is -32767, in order); the rows [top, bot) = [R8_FLOOR16(ymin + 7),
+ * R8_FLOOR16(ymax + 7)) of its vertices' box (16-bit wrapping sums) hold
+ * a pixel centre of the frame (top < bot, bot > 0, top < h,
+ * R8_FLOOR16(xmax + 7) > 0, R8_FLOOR16(xmin + 7) < w; else the face is
+ * skipped).  With bsh >= 0 such a face is put in its band's bucket, as
+ * r8_bucket_object does (id = fbase + f; next[id] = heads[key], heads[key]
+ * = id, key = top >> bsh or 0 for top < 0; slot[id] = 0xFF; npoly + 1),
+ * and the walk goes on; with bsh < 0 it returns 1, w->top, w->bot set
+ * (painter's: the caller buckets it).  Returns 2 (R8_FW_OTHER) for
+ * a face the caller takes itself (n out of range, r8k_cull -1, a vertex
+ * whose x is -32768: at once, later vertices left as they are), 0 when no
+ * face is left. */
+r8_u8 r8k_fwalk(r8_fwalk *w);
+#define R8_FW_OTHER 2
+/* r8k_fwalk's call to transform vertex i of w's object (src/render.c) */
+void r8_fw_vertex(r8_fwalk *w, r8_u8 i);
 
 #endif

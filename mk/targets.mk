@@ -112,13 +112,13 @@ Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill
+AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk
 AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
 AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP -DR8_ASM_SCANFILL) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
               $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE -DR8_ASM_ESTART) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
               $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM) \
-              $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL)
+              $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL) $(if $(filter fwalk,$(AVR_KERN)),-DR8_ASM_FWALK)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p

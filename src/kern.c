@@ -157,6 +157,93 @@ int r8k_cull(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye)
 }
 #endif
 
+#if !defined(R8_ASM_FWALK) && !defined(__SDCC) && !defined(__CC65__)
+/* (not on the 6502 and Z80, which keep render.c's loop; 16-bit wrapping sums, as on the targets: unsigned arithmetic) */
+#define R8_FW_FLOOR(v) ((r8_s16)((r8_u16)((r8_u16)(v) + 0x8007u) >> 4) - 2048)
+r8_u8 r8k_fwalk(r8_fwalk *w)
+{
+    while (w->f) {
+        r8_u16 f = --w->f;
+        const r8_face *fc = &w->faces[f];
+        r8_s16 xmin = 32767, xmax = -32767, ymin = 32767, ymax = -32767, top, bot;
+        r8_u8 n = R8_RDU8(&fc->n), j;
+        if (n < 3 || n > R8_MAX_FACE_VERTS)
+            return R8_FW_OTHER;
+        if (w->normals) {
+            int c = r8k_cull(w->normals + 3u * f, w->verts + 3u * R8_RDU8(&fc->v[0]), w->eye);
+            if (c < 0)
+                return R8_FW_OTHER;
+            if (!c)
+                continue;
+        }
+        for (j = 0; j < n; j++) {
+            r8_u8 i = R8_RDU8(&fc->v[j]);
+            const r8_s16 *v = w->base + ((unsigned)i << w->vsh);
+            r8_s16 x = v[0], y;
+            if (x == -32767) {
+                r8_fw_vertex(w, i);
+                x = v[0];
+            }
+            if (x == -32767 - 1)
+                return R8_FW_OTHER;
+            y = v[1];
+            if (x < xmin) xmin = x;
+            if (x > xmax) xmax = x;
+            if (y < ymin) ymin = y;
+            if (y > ymax) ymax = y;
+        }
+        top = R8_FW_FLOOR(ymin);
+        bot = R8_FW_FLOOR(ymax);
+        if (top < bot && bot > 0 && top < w->h && R8_FW_FLOOR(xmax) > 0 && R8_FW_FLOOR(xmin) < w->w) {
+            r8_u16 key = 0, id = (r8_u16)(w->fbase + f);
+            if (w->bsh < 0) {
+                w->top = top;
+                w->bot = bot;
+                return 1;
+            }
+            if (top > 0)
+                key = (r8_u16)((r8_u16)top >> w->bsh);
+            if (w->fid8) {
+                r8_u8 *h = (r8_u8 *)w->heads, *nx = (r8_u8 *)w->next;
+                id = (r8_u8)id;
+                nx[id] = h[key];
+                h[key] = (r8_u8)id;
+            } else {
+                r8_u16 *h = (r8_u16 *)w->heads, *nx = (r8_u16 *)w->next;
+                nx[id] = h[key];
+                h[key] = id;
+            }
+            if (w->slot)
+                w->slot[id] = 0xFF;
+            w->npoly++;
+        }
+    }
+    return 0;
+}
+#undef R8_FW_FLOOR
+#elif defined(R8_ASM_FWALK)
+#include <stddef.h>
+/* AVR: ports/avr/fwalk.S reads these offsets */
+R8_CASSERT(fwalk_faces_at_2, offsetof(r8_fwalk, faces) == 2);
+R8_CASSERT(fwalk_normals_at_4, offsetof(r8_fwalk, normals) == 4);
+R8_CASSERT(fwalk_verts_at_6, offsetof(r8_fwalk, verts) == 6);
+R8_CASSERT(fwalk_eye_at_8, offsetof(r8_fwalk, eye) == 8);
+R8_CASSERT(fwalk_f_at_10, offsetof(r8_fwalk, f) == 10);
+R8_CASSERT(fwalk_w_at_12, offsetof(r8_fwalk, w) == 12);
+R8_CASSERT(fwalk_h_at_14, offsetof(r8_fwalk, h) == 14);
+R8_CASSERT(fwalk_top_at_16, offsetof(r8_fwalk, top) == 16);
+R8_CASSERT(fwalk_bot_at_18, offsetof(r8_fwalk, bot) == 18);
+R8_CASSERT(fwalk_vsh_at_20, offsetof(r8_fwalk, vsh) == 20);
+R8_CASSERT(fwalk_heads_at_25, offsetof(r8_fwalk, heads) == 25);
+R8_CASSERT(fwalk_next_at_27, offsetof(r8_fwalk, next) == 27);
+R8_CASSERT(fwalk_slot_at_29, offsetof(r8_fwalk, slot) == 29);
+R8_CASSERT(fwalk_npoly_at_31, offsetof(r8_fwalk, npoly) == 31);
+R8_CASSERT(fwalk_fbase_at_33, offsetof(r8_fwalk, fbase) == 33);
+R8_CASSERT(fwalk_bsh_at_35, offsetof(r8_fwalk, bsh) == 35);
+R8_CASSERT(fwalk_fid8_at_36, offsetof(r8_fwalk, fid8) == 36);
+R8_CASSERT(fwalk_face_6, sizeof(r8_face) == 6 && offsetof(r8_face, v) == 2);
+#endif
+
 #ifndef R8_ASM_LEVEL
 r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
 {

@@ -729,6 +729,21 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
     return sx + tz;
 }
 
+/* R8_FWALK_K: r8_bucket_object walks the faces with r8k_fwalk (AVR:
+ * ports/avr/fwalk.S; the host: kern.c's reference) and takes the ones
+ * it hands back (R8_FW_OTHER) through its own loop; the 6502 and Z80
+ * keep the loop alone. */
+#if defined(R8_ASM_FWALK) || !(defined(__SDCC) || defined(__CC65__))
+#define R8_FWALK_K 1
+void r8_fw_vertex(r8_fwalk *w, r8_u8 i)
+{
+    const r8_objx *o = (const r8_objx *)w->o;
+    r8_tf_vertex((r8_state *)w->st, o, w->verts + 3u * i, (r8_u16)(o->vbase + i));
+}
+#else
+#define R8_FWALK_K 0
+#endif
+
 /* Object i's faces into their buckets (r8_render_frame): cull, vertex
  * pointers (transforming vertices on first use), clip, trivial reject.
  * External so -Os keeps its stack frame apart from r8_tf_frame's (the
@@ -751,6 +766,11 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     r8_u16 nf;
     int bsp = r->cfg.method == R8_VIS_BSP;   /* faces in tree order, near to far */
 #endif
+#if R8_FWALK_K
+    r8_fwalk fw;
+    r8_u8 kw = 0;              /* r8k_fwalk's answer: 1 (cull and box
+                                  done), R8_FW_OTHER; 0: not used */
+#endif
     if (o->hidden)
         return;
 #ifndef __SDCC
@@ -760,17 +780,70 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         kcull = 0;
 #endif
 #endif
+#if R8_FWALK_K
+    fw.f = 0;
+    fw.npoly = 0;
+    if ((normal ? kcull : 1)
+#ifndef R8_NO_BSP
+        && !bsp
+#endif
+       ) {
+        fw.base = base;
+        fw.faces = me->faces;
+        fw.normals = normal ? o->normals : 0;
+        fw.verts = me->verts;
+        fw.eye = &o->eye;
+        fw.f = me->nfaces;
+        fw.w = st->width;
+        fw.h = st->height;
+        fw.vsh = vsh;
+        fw.st = st;
+        fw.o = o;
+        /* the band buckets: r8k_fwalk fills them itself */
+        fw.bsh = (r8_s8)(painter || st->bsh < 0 ? -1 : st->bsh);
+        fw.heads = st->heads;
+        fw.next = st->next;
+#ifdef R8_NO_POOL
+        fw.slot = 0;
+#else
+        fw.slot = st->slot;
+#endif
+        fw.fbase = o->fbase;
+        fw.fid8 = (r8_u8)(sizeof(r8_fid) == 1);
+    }
+#endif
 #ifndef R8_NO_BSP
     if (bsp)
         r8_bsp_begin(r, me);
     for (nf = me->nfaces; nf-- > 0;) {
         const r8_face *fc;
         f = bsp ? r8_bsp_next(r, o, me) : nf;
+#if R8_FWALK_K
+        if (fw.f) {            /* (a face left: fw.f >= 1) */
+            kw = r8k_fwalk(&fw);
+            if (!kw)
+                break;
+            f = fw.f;          /* (as nf or below) */
+        } else if (kw) {
+            break;             /* the walk is over */
+        }
+#endif
         fc = &me->faces[f];
         {
 #else
     for (f = me->nfaces; f-- > 0;) {
-        const r8_face *fc = &me->faces[f];
+        const r8_face *fc;
+#if R8_FWALK_K
+        if (fw.f) {
+            kw = r8k_fwalk(&fw);
+            if (!kw)
+                break;
+            f = fw.f;          /* (the loop goes on below it) */
+        } else if (kw) {
+            break;             /* the walk is over */
+        }
+#endif
+        fc = &me->faces[f];
         {
 #endif
         r8_u8 vi[R8_MAX_FACE_VERTS], n = R8_RDU8(&fc->n), j, clip = 0;
@@ -784,6 +857,17 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         if (n < 3 || n > R8_MAX_FACE_VERTS)
             continue;
         vi[0] = R8_RDU8(&fc->v[0]);
+#if R8_FWALK_K
+        if (kw == 1) {         /* culled and boxed by r8k_fwalk */
+            top = fw.top;
+            bot = fw.bot;
+            id = (r8_fid)(o->fbase + f);
+            if (painter)
+                for (j = 1; j < n; j++)
+                    vi[j] = R8_RDU8(&fc->v[j]);
+            goto bucket;
+        }
+#endif
         if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
             const r8_s16 *v0 = me->verts + 3u * vi[0];
             int c;
@@ -849,6 +933,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         }
         if (clip)
             st->nclipped++;
+#if R8_FWALK_K
+    bucket:
+#endif
         if (painter) {
 #ifndef R8_NO_BSP
             if (bsp)
@@ -876,6 +963,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         st->npoly++;
         }
     }
+#if R8_FWALK_K
+    st->npoly = (r8_u16)(st->npoly + fw.npoly);   /* those r8k_fwalk put */
+#endif
 }
 
 void r8_render_frame(r8_render *r, const r8_camera *cam)

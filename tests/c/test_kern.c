@@ -27,7 +27,13 @@
 #define r8k_project ref_project
 #define r8k_edge ref_edge
 #define r8k_fill ref_fill
+#define r8k_fwalk ref_fwalk            /* (tested on AVR: test_avr_kern.c) */
+#define r8_fw_vertex ref_fw_vertex
+void ref_fw_vertex(r8_fwalk *w, r8_u8 i);
+void ref_fw_vertex(r8_fwalk *w, r8_u8 i) { (void)w; (void)i; }
 #include "../../src/kern.c"
+#undef r8k_fwalk
+#undef r8_fw_vertex
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project

@@ -35,6 +35,8 @@ r8_u8 r8k_level_ref(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 col
 #define r8k_level r8k_level_ref
 int r8k_zsum_ref(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 #define r8k_zsum r8k_zsum_ref
+r8_u8 r8k_fwalk_ref(r8_fwalk *w);
+#define r8k_fwalk r8k_fwalk_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -49,6 +51,7 @@ int r8k_zsum_ref(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *ro
 #undef r8k_cull
 #undef r8k_level
 #undef r8k_zsum
+#undef r8k_fwalk
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -356,6 +359,143 @@ static void test_zsum_random(void)
     if (hit[0] < 300 || hit[1] < 3000)
         unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
 }
+
+/* ---- r8k_fwalk (ports/avr/fwalk.S): walks over a flash table of faces
+ * (n mostly 3 or 4, also 0, 2 and 5; indices 0..63), with and without
+ * the cull (normals over kc_norms, model vertices over kc_verts, eye
+ * random), over 64 screen vertices of 4 or 8 bytes: in the frame, far
+ * out, at the 16-bit limits, x in [-32766, -32513] (ordinary), -32767
+ * (to transform: r8_fw_vertex below, which writes new values, sometimes
+ * -32768) and -32768 (the clipper's).  Every call of a walk to its end
+ * is compared (return, f, top, bot), the vertices after it, and the
+ * order of r8_fw_vertex's calls; with bsh >= 0 (faces put in band
+ * buckets: 8- or 16-bit ids, slots or none) also the buckets, links,
+ * slots and npoly; each outcome must be hit ---- */
+#define FW_NV 48
+#define FW_NI(i, j) (((i) * 37 + (j) * 13 + ((i) >> 2) * 7 + 5) % FW_NV)
+#define FW_N(i) ((i) % 16 == 6 ? 2 : (i) % 16 == 11 ? 5 : (i) % 16 == 15 ? 0 : 3 + ((i) * 5 % 3 != 0))
+#define FW_F(i) {FW_N(i), 0, {FW_NI(i, 0), FW_NI(i, 1), FW_NI(i, 2), FW_NI(i, 3)}}
+static const r8_face fw_faces[] R8_FLASH = {
+    KC_64(FW_F, 0), KC_16(FW_F, 64), KC_16(FW_F, 80)
+};
+static r8_s16 fw_sv[2][FW_NV * 4];
+static r8_s16 fw_tf[FW_NV][2];        /* what r8_fw_vertex writes */
+#define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
+static r8_u16 fw_heads[2][8], fw_next[2][FW_NID];
+static r8_u8 fw_slot[2][FW_NID];
+static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
+static unsigned long fw_calls;
+void r8_fw_vertex(r8_fwalk *w, r8_u8 i)
+{
+    r8_s16 *v = (r8_s16 *)w->base + ((unsigned)i << w->vsh);
+    v[0] = fw_tf[i][0];
+    v[1] = fw_tf[i][1];
+    if (fw_nlog[fw_run] < FW_NV + 1)
+        fw_log[fw_run][fw_nlog[fw_run]++] = i;
+    fw_calls++;
+}
+static r8_s16 fw_coord(unsigned c, int y)
+{
+    if (c == 0)
+        return rndn(2) ? rnds(32700, 32767) : rnds(-32766, -32700);
+    if (c == 1)
+        return rnds(-32767, 32767);
+    if (c == 2 && !y)
+        return rnds(-32766, -32513);      /* high byte 0x80, not a mark */
+    return y ? rnds(-400, 1400) : rnds(-600, 2600);
+}
+static void test_fwalk_random(void)
+{
+    unsigned long i, hit[4] = {0, 0, 0, 0};
+    for (i = 0; i < 1500; i++) {
+        r8_fwalk w[2];
+        r8_vec3l eye;
+        r8_s32 *e = &eye.x;
+        unsigned k, nf = 1 + rndn(64), off = rndn(sizeof fw_faces / sizeof fw_faces[0] - nf + 1);
+        unsigned marks = rndn(3), nr = 0, c;
+        r8_u16 npoly0;
+        r8_u8 vsh = (r8_u8)(1 + rndn(2)), r[2];
+        for (k = 0; k < FW_NV; k++) {
+            r8_s16 *v = fw_sv[0] + (k << vsh);
+            unsigned c = rndn(16);
+            v[0] = fw_coord(rndn(8), 0);
+            v[1] = fw_coord(rndn(8), 1);
+            if (c < marks)
+                v[0] = -32767;                /* to transform */
+            else if (c == 3 && marks == 2)
+                v[0] = -32767 - 1;            /* the clipper's */
+            fw_tf[k][0] = rndn(24) ? fw_coord(rndn(8), 0) : -32767 - 1;
+            fw_tf[k][1] = fw_coord(rndn(8), 1);
+        }
+        memcpy(fw_sv[1], fw_sv[0], sizeof fw_sv[0]);
+        c = rndn(2);                  /* eye at its limits: sums past 2^30 */
+        for (k = 0; k < 3; k++)
+            e[k] = c ? rnds(-16383, 16383) : (rndn(2) ? 16383 : -16383);
+        w[0].base = fw_sv[0];
+        w[0].faces = fw_faces + off;
+        w[0].normals = rndn(4) ? kc_norms + 3u * rndn(24) : 0;
+        w[0].verts = kc_verts;
+        w[0].eye = &eye;
+        w[0].f = (r8_u16)nf;
+        w[0].w = rndn(8) ? 128 : rnds(1, 200);
+        w[0].h = rndn(8) ? 64 : rnds(1, 100);
+        w[0].top = w[0].bot = 0x5A5A;
+        w[0].vsh = vsh;
+        w[0].st = 0;
+        w[0].o = 0;
+        /* the buckets: 16- or 8-bit ids, bands of 8 to 32 rows in at most
+         * 64, with pool slots or none; or faces handed back */
+        w[0].bsh = (r8_s8)(rndn(3) ? (int)(3 + rndn(3)) : -1);
+        if (w[0].bsh >= 0)
+            w[0].h = rndn(4) ? 64 : rnds(1, 64);
+        w[0].fid8 = (r8_u8)rndn(2);
+        w[0].fbase = (r8_u16)rndn(FW_NID - 64 + 1);
+        w[0].npoly = npoly0 = (r8_u16)rnd();
+        for (k = 0; k < 8; k++)
+            fw_heads[0][k] = (r8_u16)rnd();
+        for (k = 0; k < FW_NID; k++) {
+            fw_next[0][k] = (r8_u16)rnd();
+            fw_slot[0][k] = (r8_u8)rnd();
+        }
+        memcpy(fw_heads[1], fw_heads[0], sizeof fw_heads[0]);
+        memcpy(fw_next[1], fw_next[0], sizeof fw_next[0]);
+        memcpy(fw_slot[1], fw_slot[0], sizeof fw_slot[0]);
+        w[1] = w[0];
+        w[0].heads = fw_heads[0];
+        w[0].next = fw_next[0];
+        w[0].slot = rndn(3) ? fw_slot[0] : 0;
+        w[1].heads = fw_heads[1];
+        w[1].next = fw_next[1];
+        w[1].slot = w[0].slot ? fw_slot[1] : 0;
+        w[1].base = fw_sv[1];
+        fw_nlog[0] = fw_nlog[1] = 0;
+        do {                          /* the two walks in step */
+            fw_run = 0;
+            r[0] = r8k_fwalk_ref(&w[0]);
+            fw_run = 1;
+            r[1] = r8k_fwalk(&w[1]);
+            if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
+                w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
+                memcmp(fw_next[0], fw_next[1], sizeof fw_next[0]) || memcmp(fw_slot[0], fw_slot[1], sizeof fw_slot[0]) ||
+                memcmp(fw_sv[0], fw_sv[1], sizeof fw_sv[0]) || fw_nlog[0] != fw_nlog[1] ||
+                memcmp(fw_log[0], fw_log[1], fw_nlog[0])) {
+                print_case("r8k_fwalk", i);
+                unity_fail_int(__LINE__, "r8k_fwalk differs from the reference", (long)r[0], (long)r[1]);
+                return;
+            }
+            if (r[0])
+                hit[r[0] == 1 ? 0 : 1]++;
+            if (!r[0])
+                hit[0] += (r8_u16)(w[0].npoly - npoly0);   /* put in a bucket */
+            nr++;
+        } while (r[0] && nr <= nf);
+        hit[3] += nf - (nr - 1u) - (r8_u16)(w[0].npoly - npoly0);   /* skipped inside */
+    }
+    hit[2] = fw_calls;
+    for (i = 0; i < 4; i++)
+        if (hit[i] < 1000)
+            unity_fail_int(__LINE__, "r8k_fwalk: an outcome too rare", 1000, (long)hit[i]);
+}
 static void test_estart_random(void);
 static void test_scanband_random(void);
 
@@ -615,6 +755,7 @@ int main(void)
     RUN_TEST(test_cull_random);
     RUN_TEST(test_level_random);
     RUN_TEST(test_zsum_random);
+    RUN_TEST(test_fwalk_random);
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);

@@ -1,0 +1,425 @@
+/* fwalk.S - r8k_fwalk (include/r8kern.h) for AVR with MUL (ATmega).
+ *
+ *   r8_u8 r8k_fwalk(r8_fwalk *w);
+ *
+ * r8_bucket_object's face loop (src/render.c): from face w->f - 1 down,
+ * the next face to draw - its n checked, r8k_cull's test (facecull.S's
+ * code, inline here) when w->normals is set, its vertices transformed where their x is -32767
+ * (R8_VX_TODO: a call of r8_fw_vertex(w, i), C), the rows of its
+ * vertices' box tested against the frame - returns 1 with w->f, top,
+ * bot set; 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
+ * vertex x = -32768); 0 at the end.  Reference: src/kern.c, which
+ * asserts the offsets of r8_fwalk used here.
+ *
+ * Registers (avr-gcc ABI): w in r25:r24, then Y.  Per face r17:r16 =
+ * 6 f (the face's byte offset in faces and normals) until the cull,
+ * which has r8k_cull's registers (X = eye, Z = v then n, differences
+ * r19:r18, r21:r20, r23:r22, sum r27:r24, normal r17:r16, r15 zero).  The
+ * box: Z = the face's vertex indices (flash), r21 = the low byte of
+ * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
+ * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
+ * on the stack around r8_fw_vertex with Z and r21).  Saves r14-r17, r28,
+ * r29; clears r1.  About 200 cycles a face with the cull, 43 a vertex,
+ * 60 for the rows, 50 in and out.
+ */
+#ifdef R8_NO_PROGMEM
+#define RD(r) ld r, Z+
+#define RD0(r) ld r, Z
+#else
+#define RD(r) lpm r, Z+
+#define RD0(r) lpm r, Z
+#endif
+
+/* offsets in r8_fwalk */
+#define W_BASE   0
+#define W_FACES  2
+#define W_NORM   4
+#define W_VERTS  6
+#define W_EYE    8
+#define W_F     10
+#define W_W     12
+#define W_H     14
+#define W_TOP   16
+#define W_BOT   18
+#define W_VSH   20
+#define W_HEADS 25
+#define W_NEXT  27
+#define W_SLOT  29
+#define W_NPOLY 31
+#define W_FBASE 33
+#define W_BSH   35
+#define W_FID8  36
+
+#define ZERO r15
+
+/* r8k_cull's: d = eye component - 16 v component (X advances to the
+ * next r8_s32); out of range: to `cout` */
+.macro DIFF dl, dh
+    RD(\dl)
+    RD(\dh)
+    movw  r16, \dl
+    subi  r16, 0x01
+    sbci  r17, 0xFC         /* v + 1023 */
+    cpi   r16, 0xFF
+    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
+    brcc  cout
+    swap  \dh               /* v << 4 (fits: |v| <= 1023) */
+    swap  \dl
+    andi  \dh, 0xF0
+    eor   \dh, \dl
+    andi  \dl, 0xF0
+    eor   \dh, \dl
+    ld    r16, X+
+    ld    r17, X
+    adiw  r26, 3
+    sub   r16, \dl
+    sbc   r17, \dh
+    movw  \dl, r16
+.endm
+
+/* r8k_cull's: the sum r27:r24 += n component (r17:r16, read here) * d */
+.macro ACC dl, dh
+    RD(r16)
+    RD(r17)
+    mul   r16, \dl          /* u x u, at byte 0 */
+    add   r24, r0
+    adc   r25, r1
+    adc   r26, ZERO
+    adc   r27, ZERO
+    muls  r17, \dh          /* s x s, at byte 2 */
+    add   r26, r0
+    adc   r27, r1
+    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
+    sbc   r27, ZERO         /* the sign extension: -2^24 */
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu \dh, r16          /* s x u, at byte 1 */
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+.endm
+
+/* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
+ * ((v + 0x8007) mod 2^16 >> 4) - 2048 */
+.macro FLOOR lo, hi
+    subi  \lo, 0xF9
+    sbci  \hi, 0x7F
+    swap  \lo
+    andi  \lo, 0x0F
+    swap  \hi
+    eor   \lo, \hi
+    andi  \hi, 0x0F
+    eor   \lo, \hi
+    subi  \hi, 0x08
+.endm
+
+    .section .text.r8k_fwalk,"ax",@progbits
+    .global r8k_fwalk
+    .type   r8k_fwalk, @function
+r8k_fwalk:
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = w */
+face:
+    ldd   r24, Y+W_F
+    ldd   r25, Y+W_F+1
+    sbiw  r24, 1
+    brcc  1f
+    ldi   r24, 0            /* no face left */
+    rjmp  out
+1:  std   Y+W_F, r24
+    std   Y+W_F+1, r25
+    lsl   r24               /* r17:r16 = 6 f */
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r30, Y+W_FACES    /* Z = faces + 6 f */
+    ldd   r31, Y+W_FACES+1
+    add   r30, r16
+    adc   r31, r17
+    RD(r20)                 /* n */
+    mov   r21, r20
+    subi  r21, 3
+    cpi   r21, 2
+    brlo  1f
+    rjmp  other             /* n not 3 or 4 */
+1:
+    ldd   r24, Y+W_NORM
+    ldd   r25, Y+W_NORM+1
+    adiw  r30, 1            /* Z = the vertex indices */
+    sbiw  r24, 0
+    brne  1f
+    rjmp  box               /* no cull */
+1:
+    add   r24, r16          /* n = normals + 3 f */
+    adc   r25, r17
+    /* r8k_cull (facecull.S) inline: the differences eye - 16 v,
+     * -1 when a component of v lies outside [-1023, 1023] */
+    RD0(r22)                /* v = verts + 3 v[0] */
+    ldi   r23, 6
+    mul   r22, r23
+    ldd   r30, Y+W_VERTS
+    ldd   r31, Y+W_VERTS+1
+    add   r30, r0
+    adc   r31, r1
+    ldd   r26, Y+W_EYE      /* X = eye */
+    ldd   r27, Y+W_EYE+1
+    movw  r14, r24          /* (n) */
+    DIFF  r18, r19
+    DIFF  r20, r21
+    DIFF  r22, r23
+    rjmp  dot
+cout:
+    rjmp  other             /* -1: the caller's 32-bit test */
+dot:
+    movw  r30, r14          /* Z = n */
+    clr   ZERO
+    RD(r16)                 /* the first product sets the sum */
+    RD(r17)
+    mul   r16, r18
+    movw  r24, r0
+    muls  r17, r19
+    movw  r26, r0
+    mulsu r17, r18
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu r19, r16
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    ACC   r20, r21
+    ACC   r22, r23
+    clr   r1
+    sbrc  r27, 7
+    rjmp  face              /* < 0: a back face */
+    or    r24, r25
+    or    r24, r26
+    or    r24, r27
+    brne  1f
+    rjmp  face              /* 0: a back face */
+1:  ldd   r24, Y+W_F        /* Z = the vertex indices, r20 = n again */
+    ldd   r25, Y+W_F+1
+    lsl   r24
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r30, Y+W_FACES
+    ldd   r31, Y+W_FACES+1
+    add   r30, r16
+    adc   r31, r17
+    RD(r20)
+    adiw  r30, 1
+box:
+    /* Z = the vertex indices, r20 = n */
+    mov   r21, r30
+    add   r21, r20          /* the end: lo(Z + n) */
+    ldd   r18, Y+W_VSH
+    bst   r18, 1            /* T: 8-byte vertices */
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+    ldi   r18, 0xFF
+    ldi   r19, 0x7F         /* xmin = 32767 */
+    movw  r14, r18          /* ymin = 32767 */
+    ldi   r16, 0x01
+    ldi   r17, 0x80         /* xmax = -32767 (6 f is done with) */
+    movw  r0, r16           /* ymax = -32767 */
+    rjmp  vert
+other:
+    ldi   r24, 2            /* R8_FW_OTHER */
+    rjmp  out
+mark:
+    cpi   r22, 2
+    brsh  xok               /* an ordinary x */
+    cpi   r22, 1
+    brne  other             /* -32768: the clipper's */
+    /* -32767: r8_fw_vertex(w, i), the box kept on the stack, then this
+     * vertex again */
+    push  r0
+    push  r1
+    push  r18
+    push  r19
+    push  r21
+    push  r30
+    push  r31
+    sbiw  r30, 1
+    RD0(r22)
+    clr   r1
+    movw  r24, r28
+    call  r8_fw_vertex
+    pop   r31
+    pop   r30
+    pop   r21
+    pop   r19
+    pop   r18
+    pop   r1
+    pop   r0
+    sbiw  r30, 1
+    ldd   r24, Y+W_VSH
+    bst   r24, 1
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+vert:
+    RD(r26)
+    clr   r27
+    lsl   r26
+    rol   r27
+    lsl   r26
+    rol   r27
+    brtc  2f
+    lsl   r26
+    rol   r27
+2:  add   r26, r24
+    adc   r27, r25
+    ld    r22, X+
+    ld    r23, X+
+    cpi   r23, 0x80
+    breq  mark              /* x in [-32768, -32513] */
+xok:
+    cp    r22, r18
+    cpc   r23, r19
+    brge  3f
+    movw  r18, r22
+3:  cp    r16, r22
+    cpc   r17, r23
+    brge  4f
+    movw  r16, r22
+4:  ld    r22, X+
+    ld    r23, X
+    cp    r22, r14
+    cpc   r23, r15
+    brge  5f
+    movw  r14, r22
+5:  cp    r0, r22
+    cpc   r1, r23
+    brge  6f
+    movw  r0, r22
+6:  cp    r30, r21
+    brne  vert
+    /* the rows: bot r21:r20, top r23:r22 */
+    movw  r20, r0
+    clr   r1
+    FLOOR r20, r21
+    movw  r22, r14
+    FLOOR r22, r23
+    cp    r22, r20
+    cpc   r23, r21
+    brge  next              /* top >= bot */
+    cp    r1, r20
+    cpc   r1, r21
+    brge  next              /* bot <= 0 */
+    ldd   r24, Y+W_H
+    ldd   r25, Y+W_H+1
+    cp    r22, r24
+    cpc   r23, r25
+    brge  next              /* top >= h */
+    FLOOR r16, r17
+    cp    r1, r16
+    cpc   r1, r17
+    brge  next              /* floor(xmax) <= 0 */
+    FLOOR r18, r19
+    ldd   r24, Y+W_W
+    ldd   r25, Y+W_W+1
+    cp    r18, r24
+    cpc   r19, r25
+    brge  next              /* floor(xmin) >= w */
+    ldd   r24, Y+W_BSH
+    sbrs  r24, 7
+    rjmp  put               /* bsh >= 0: into its bucket here */
+    std   Y+W_TOP, r22
+    std   Y+W_TOP+1, r23
+    std   Y+W_BOT, r20
+    std   Y+W_BOT+1, r21
+    ldi   r24, 1
+out:
+    clr   r1
+    ldi   r25, 0
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    ret
+next:
+    rjmp  face
+put:
+    /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
+     * r19:r18 (r1 = 0) */
+    sbrs  r23, 7
+    rjmp  1f
+    clr   r22
+    clr   r23
+1:  tst   r24
+    breq  3f
+2:  lsr   r23
+    ror   r22
+    dec   r24
+    brne  2b
+3:  ldd   r18, Y+W_F
+    ldd   r19, Y+W_F+1
+    ldd   r20, Y+W_FBASE
+    ldd   r21, Y+W_FBASE+1
+    add   r18, r20
+    adc   r19, r21
+    ldd   r30, Y+W_HEADS
+    ldd   r31, Y+W_HEADS+1
+    ldd   r26, Y+W_NEXT
+    ldd   r27, Y+W_NEXT+1
+    ldd   r24, Y+W_FID8
+    tst   r24
+    breq  4f
+    clr   r19               /* 8-bit ids */
+    add   r30, r22          /* next[id] = heads[key], heads[key] = id */
+    adc   r31, r23
+    ld    r20, Z
+    st    Z, r18
+    add   r26, r18
+    adc   r27, r1
+    st    X, r20
+    rjmp  5f
+4:  lsl   r22               /* 16-bit ids */
+    rol   r23
+    add   r30, r22
+    adc   r31, r23
+    ld    r20, Z
+    ldd   r21, Z+1
+    st    Z, r18
+    std   Z+1, r19
+    movw  r24, r18
+    lsl   r24
+    rol   r25
+    add   r26, r24
+    adc   r27, r25
+    st    X+, r20
+    st    X, r21
+5:  ldd   r30, Y+W_SLOT     /* slot[id] = R8_NO_SLOT */
+    ldd   r31, Y+W_SLOT+1
+    mov   r24, r30
+    or    r24, r31
+    breq  6f
+    add   r30, r18
+    adc   r31, r19
+    ldi   r24, 0xFF
+    st    Z, r24
+6:  ldd   r24, Y+W_NPOLY
+    ldd   r25, Y+W_NPOLY+1
+    adiw  r24, 1
+    std   Y+W_NPOLY, r24
+    std   Y+W_NPOLY+1, r25
+    rjmp  face
+    .size r8k_fwalk, .-r8k_fwalk
