@@ -8,6 +8,14 @@
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
  *                 part costs).
+ *   FW_PROJ16     src/proj.c built in with R8_PROJ16: the projection
+ *                 without its 32-bit fallback (coordinates over 16
+ *                 bits).  fw_proj16_bad() proves the scene never needs
+ *                 it before the first frame (fw_app.c: APP_E_CFG if it
+ *                 might): a mesh scene's objects only turn in place
+ *                 (R8_NO_PORTAL: no walks, no moving objects), so every
+ *                 camera-space x, y lies within 16 (|d| + radius) + 4
+ *                 of the origin, d = object - camera (1/16 units).
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -25,6 +33,38 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     (void)src; (void)n; (void)dst; (void)cap;
     *out_len = 0;
     return R8_E_ARG;
+}
+#endif
+#ifdef FW_PROJ16
+#ifndef R8_NO_PORTAL
+#error "FW_PROJ16: for mesh scenes only (objects that move break its bound)"
+#endif
+#define R8_PROJ16
+#include "proj.c"
+/* 1 if a vertex of the demo scene might reach a camera-space x or y
+ * beyond 16 bits: per object |dx| + |dy| + |dz| + radius (world units,
+ * any camera rotation) against 2040 (16 x 2040 + rounding < 32767). */
+static int fw_proj16_bad(const app_cfg *c)
+{
+    r8_demo_run *run = app_demo(c);
+    r8_u8 i;
+    if (!run)
+        return 0;                    /* app_run reports the scene */
+    for (i = 0; i < run->scene.nobjects; i++) {
+        const r8_object *o = &run->obj[i];
+        const r8_s16 *p = &o->pose.x, *q = &run->cam.x;
+        r8_s32 b = o->mesh->radius, d;
+        r8_u8 k;
+        for (k = 0; k < 3; k++) {
+            d = (r8_s32)p[k] - q[k];
+            if (d < 0)
+                d = -d;
+            b += d;
+        }
+        if (b > 2040 || o->mesh->radius < 0)
+            return 1;
+    }
+    return 0;
 }
 #endif
 #ifdef FW_RENDER
