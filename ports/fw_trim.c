@@ -8,14 +8,15 @@
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
  *                 part costs).
- *   FW_PROJ16     src/proj.c built in with R8_PROJ16: the projection
- *                 without its 32-bit fallback (coordinates over 16
- *                 bits).  fw_proj16_bad() proves the scene never needs
- *                 it before the first frame (fw_app.c: APP_E_CFG if it
- *                 might): a mesh scene's objects only turn in place
- *                 (R8_NO_PORTAL: no walks, no moving objects), so every
- *                 camera-space x, y lies within 16 (|d| + radius) + 4
- *                 of the origin, d = object - camera (1/16 units).
+ *   FW_SPIN       a mesh scene's firmware (R8_NO_PORTAL: objects that
+ *                 only turn in place, no walks, no moving objects, and a
+ *                 camera that stays put): src/proj.c built in with
+ *                 R8_PROJ16 (no 32-bit projection fallback) and
+ *                 transform.c with R8_CAM_FIXED (no camera rotation).
+ *                 fw_spin_bad() proves both before the first frame
+ *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
+ *                 and every camera-space x, y lies within 16 (|d| +
+ *                 radius) + 4 of the origin, d = object - camera.
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -35,21 +36,26 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     return R8_E_ARG;
 }
 #endif
-#ifdef FW_PROJ16
+#ifdef FW_SPIN
 #ifndef R8_NO_PORTAL
-#error "FW_PROJ16: for mesh scenes only (objects that move break its bound)"
+#error "FW_SPIN: for mesh scenes only (a walk or moving objects break its proof)"
 #endif
 #define R8_PROJ16
+#define R8_CAM_FIXED
 #include "proj.c"
-/* 1 if a vertex of the demo scene might reach a camera-space x or y
- * beyond 16 bits: per object |dx| + |dy| + |dz| + radius (world units,
- * any camera rotation) against 2040 (16 x 2040 + rounding < 32767). */
-static int fw_proj16_bad(const app_cfg *c)
+/* 1 unless the demo scene's camera is not turned and no vertex can
+ * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
+ * |dz| + radius (world units) against 2040 (16 x 2040 + rounding <
+ * 32767).  (r8_demo_pose turns only the objects: these stay.) */
+static int fw_spin_bad(const app_cfg *c)
 {
     r8_demo_run *run = app_demo(c);
     r8_u8 i;
     if (!run)
         return 0;                    /* app_run reports the scene */
+    if (run->cam.yaw || run->cam.pitch || run->cam.roll || run->cam.flags ||
+        run->scene.grid)
+        return 1;
     for (i = 0; i < run->scene.nobjects; i++) {
         const r8_object *o = &run->obj[i];
         const r8_s16 *p = &o->pose.x, *q = &run->cam.x;

@@ -9,8 +9,8 @@
 # (the demo is Lambert), no run-time normals (built-in meshes carry
 # theirs), no clipper (the demo camera never sees a face cross the near
 # plane or the guard band; the identity tests compare with the host's
-# full build); in a mesh scene's firmware the projection without its
-# 32-bit fallback (FW_PROJ16: the firmware proves it unneeded).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
+# full build); in a mesh scene's firmware no camera rotation and no
+# 32-bit projection (FW_SPIN: the firmware proves both unneeded).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
 # pool (R8_NO_POOL: its code left out too) and 8-bit face ids
 # (R8_SMALL_SCENE), the least RAM; fw_sizes.c
 # measures the same (XSIZES_avr328 in mk/targets.mk).
@@ -46,9 +46,10 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # (the rooms, scene 9, a world: every method of it keeps both)
 [ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
-# a mesh scene (objects that only turn): the projection without its
-# 32-bit fallback, the firmware checking the scene's bound (fw_trim.c)
-case "$trim" in *R8_NO_PORTAL*) [ "$m" != 17 ] && trim="$trim -DFW_PROJ16" ;; esac
+# a mesh scene (objects that only turn, the camera stays put; not the
+# walks 8, 10): no camera rotation, no 32-bit projection, the firmware
+# checking both (FW_SPIN, fw_trim.c)
+case "$trim" in *R8_NO_PORTAL*) [ "$m" != 17 ] && [ "$s" != 8 ] && [ "$s" != 10 ] && trim="$trim -DFW_SPIN" ;; esac
 case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 # O = 0: a world's walls alone, without its movable objects (make bench-portal)

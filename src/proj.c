@@ -5,7 +5,7 @@
 #include "r8flash.h"
 
 /* R8_PROJ16: a build whose caller has proved every camera-space x and
- * y within 16 bits (ports/fw_trim.c FW_PROJ16): no 32-bit fallback;
+ * y within 16 bits (ports/fw_trim.c FW_SPIN): no 32-bit fallback;
  * with the AVR kernel not even the C projection (below). */
 #if defined(R8_PROJ16) && defined(R8_ASM_PROJECT) && defined(__AVR__)
 #define R8_PROJ_KERNEL_ONLY
@@ -242,7 +242,7 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
     } else {
 #ifdef R8_PROJ16
         /* R8_PROJ16: a build whose caller has proved every camera-space
-         * x and y within 16 bits (ports/fw_trim.c FW_PROJ16 checks the
+         * x and y within 16 bits (ports/fw_trim.c FW_SPIN checks the
          * scene's bound before the first frame), and guard under 1024
          * px (r8_proj_init's 900): never here.  No 32-bit fallback. */
         return 1;
