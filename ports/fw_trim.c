@@ -7,7 +7,8 @@
  *                 R8_E_ARG ("codec not built in").
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
- *                 part costs).
+ *                 part costs); on AVR src/wire.c too, its codecs chosen
+ *                 at compile time (R8_NO_LZ77).
  *   FW_SPIN       a mesh scene's firmware (R8_NO_PORTAL: objects that
  *                 only turn in place, no walks, no moving objects, and a
  *                 camera that stays put): src/proj.c built in with
@@ -93,6 +94,14 @@ static int fw_spin_bad(const app_cfg *c)
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
+#if defined(__AVR__) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+/* the wire encoder with this firmware's codec switches (fwdefs.sh: it
+ * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
+ * compile time): the archive's wire.o, built with LZ77, is not linked.
+ * (The 6502 and Z80 keep the archive's: their r8_tx_band kernels; the
+ * maze's too: raycast.c has a cfg_ok of its own.) */
+#include "wire.c"
+#endif
 #ifndef R8_NO_RAY
 #include "raycast.c" /* the maze's: its texture code only where textured */
 #endif

@@ -21,7 +21,7 @@ sizes=$2
 [ "${sh:-1}" = 2 ] && sizes=${2%.txt}-sh2.txt
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$sizes")
 case "$ram" in ''|0) ram=1 ;; esac
-trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_HUFF -DR8_NO_LZW"
+trim="-Isrc -DFW_TRIM_LZ77 -DR8_NO_LZ77 -DFW_RENDER -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_HUFF -DR8_NO_LZW"
 # SH: shading (R8_SHADE_*: 0 flat, 1 Lambert, 2 Gouraud; default Lambert,
 # the demo's; make bench builds the others: fw-S-M-F-SH; Gouraud's
 # arena from sizes-sh2.txt beside SIZES)
