@@ -260,6 +260,10 @@ XSIZES_avr328  := $(XB)/avr328/sizes.txt
 XSIZES_avr1284 := $(XB)/avr1284/sizes.txt
 XSIZES_6502    := $(XB)/6502/sizes.txt
 XSIZES_z80     := $(XB)/z80/sizes.txt
+# the firmware unit (render.c, proj.c built in: ports/fw_trim.c) knows
+# which AVR kernels the library links (FW_PROJ16: src/proj.c)
+FWK_avr328     = $(AVR_KDEFS)
+FWK_avr1284    = $(AVR_KDEFS)
 define XPROG
 XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) ports/xbuild.sh
 XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))
@@ -271,7 +275,7 @@ $(XB)/$(1)/sizes/sizes-%.$(EXT_$(1)): tests/targets/fw_sizes.c ports/fw_trim.c $
 $(XB)/$(1)/fw/fw-%.$(EXT_$(1)): $(FW_SRC) ports/fw_trim.c $$(XSCENE_OBJS_$(1)) $$(XDEPS_$(1)) $(XSIZES_$(1)) ports/fwdefs.sh
 	@mkdir -p $$(dir $$@)
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$< $(XB)/$(1)/obj/scene_$$$$(echo $$* | cut -d- -f1).$(OBJ_$(1)) \
-	  -- $(FW_DEFS) $$$$(bash ports/fwdefs.sh $$* $(XSIZES_$(1)) $(1))
+	  -- $(FW_DEFS) $(FWK_$(1)) $$$$(bash ports/fwdefs.sh $$* $(XSIZES_$(1)) $(1))
 
 $(XB)/$(1)/micro.$(EXT_$(1)): bench/fw_micro.c $$(XDEPS_$(1))
 	$(XENV) bash ports/xbuild.sh $(1) $$@ $$<

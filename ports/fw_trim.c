@@ -7,7 +7,17 @@
  *                 R8_E_ARG ("codec not built in").
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
- *                 part costs).
+ *                 part costs); on AVR src/wire.c too, its codecs chosen
+ *                 at compile time (R8_NO_LZ77).
+ *   FW_SPIN       a mesh scene's firmware (R8_NO_PORTAL: objects that
+ *                 only turn in place, no walks, no moving objects, and a
+ *                 camera that stays put): src/proj.c built in with
+ *                 R8_PROJ16 (no 32-bit projection fallback) and
+ *                 transform.c with R8_CAM_FIXED (no camera rotation).
+ *                 fw_spin_bad() proves both before the first frame
+ *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
+ *                 and every camera-space x, y lies within 16 (|d| +
+ *                 radius) + 4 of the origin, d = object - camera.
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -25,6 +35,43 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
     (void)src; (void)n; (void)dst; (void)cap;
     *out_len = 0;
     return R8_E_ARG;
+}
+#endif
+#ifdef FW_SPIN
+#ifndef R8_NO_PORTAL
+#error "FW_SPIN: for mesh scenes only (a walk or moving objects break its proof)"
+#endif
+#define R8_PROJ16
+#define R8_CAM_FIXED
+#include "proj.c"
+/* 1 unless the demo scene's camera is not turned and no vertex can
+ * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
+ * |dz| + radius (world units) against 2040 (16 x 2040 + rounding <
+ * 32767).  (r8_demo_pose turns only the objects: these stay.) */
+static int fw_spin_bad(const app_cfg *c)
+{
+    r8_demo_run *run = app_demo(c);
+    r8_u8 i;
+    if (!run)
+        return 0;                    /* app_run reports the scene */
+    if (run->cam.yaw || run->cam.pitch || run->cam.roll || run->cam.flags ||
+        run->scene.grid)
+        return 1;
+    for (i = 0; i < run->scene.nobjects; i++) {
+        const r8_object *o = &run->obj[i];
+        const r8_s16 *p = &o->pose.x, *q = &run->cam.x;
+        r8_s32 b = o->mesh->radius, d;
+        r8_u8 k;
+        for (k = 0; k < 3; k++) {
+            d = (r8_s32)p[k] - q[k];
+            if (d < 0)
+                d = -d;
+            b += d;
+        }
+        if (b > 2040 || o->mesh->radius < 0)
+            return 1;
+    }
+    return 0;
 }
 #endif
 #ifdef FW_RENDER
@@ -47,6 +94,14 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
+#if defined(__AVR__) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+/* the wire encoder with this firmware's codec switches (fwdefs.sh: it
+ * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
+ * compile time): the archive's wire.o, built with LZ77, is not linked.
+ * (The 6502 and Z80 keep the archive's: their r8_tx_band kernels; the
+ * maze's too: raycast.c has a cfg_ok of its own.) */
+#include "wire.c"
+#endif
 #ifndef R8_NO_RAY
 #include "raycast.c" /* the maze's: its texture code only where textured */
 #endif

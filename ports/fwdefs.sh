@@ -9,7 +9,8 @@
 # (the demo is Lambert), no run-time normals (built-in meshes carry
 # theirs), no clipper (the demo camera never sees a face cross the near
 # plane or the guard band; the identity tests compare with the host's
-# full build).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
+# full build); in a mesh scene's firmware no camera rotation and no
+# 32-bit projection (FW_SPIN: the firmware proves both unneeded).  On the 2 KB ATmega328P (TARGET avr328): no scan-state
 # pool (R8_NO_POOL: its code left out too) and 8-bit face ids
 # (R8_SMALL_SCENE), the least RAM; fw_sizes.c
 # measures the same (XSIZES_avr328 in mk/targets.mk).
@@ -20,7 +21,7 @@ sizes=$2
 [ "${sh:-1}" = 2 ] && sizes=${2%.txt}-sh2.txt
 ram=$(awk -v s="$s" -v m="$m" '$1==s && $2==m {print $3}' "$sizes")
 case "$ram" in ''|0) ram=1 ;; esac
-trim="-Isrc -DFW_TRIM_LZ77 -DFW_RENDER -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_HUFF -DR8_NO_LZW"
+trim="-Isrc -DFW_TRIM_LZ77 -DR8_NO_LZ77 -DFW_RENDER -DR8_NO_RT_NORMALS -DR8_NO_CLIP -DR8_PAGE1_ONLY -DR8_NO_HUFF -DR8_NO_LZW"
 # SH: shading (R8_SHADE_*: 0 flat, 1 Lambert, 2 Gouraud; default Lambert,
 # the demo's; make bench builds the others: fw-S-M-F-SH; Gouraud's
 # arena from sizes-sh2.txt beside SIZES)
@@ -45,6 +46,10 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # (the rooms, scene 9, a world: every method of it keeps both)
 [ "$m" != 16 ] && [ "$s" != 9 ] && trim="$trim -DR8_NO_PORTAL"
 [ "$s" = 9 ] && trim="${trim/ -DR8_NO_CLIP/}"
+# a mesh scene (objects that only turn, the camera stays put; not the
+# walks 8, 10): no camera rotation, no 32-bit projection, the firmware
+# checking both (FW_SPIN, fw_trim.c)
+case "$trim" in *R8_NO_PORTAL*) [ "$m" != 17 ] && [ "$s" != 8 ] && [ "$s" != 10 ] && trim="$trim -DFW_SPIN" ;; esac
 case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 # O = 0: a world's walls alone, without its movable objects (make bench-portal)

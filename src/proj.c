@@ -4,6 +4,13 @@
 #include "r8fixed.h"
 #include "r8flash.h"
 
+/* R8_PROJ16: a build whose caller has proved every camera-space x and
+ * y within 16 bits (ports/fw_trim.c FW_SPIN): no 32-bit fallback;
+ * with the AVR kernel not even the C projection (below). */
+#if defined(R8_PROJ16) && defined(R8_ASM_PROJECT) && defined(__AVR__)
+#define R8_PROJ_KERNEL_ONLY
+#endif
+
 /* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16 bits) */
 static const r8_u16 rec_tab[129] R8_FLASH = {
     65535u, 65028u, 64528u, 64035u, 63550u, 63072u, 62602u, 62138u, 61681u, 61231u,
@@ -74,6 +81,7 @@ void r8_proj_init(r8_proj *p, r8_s16 width, r8_s16 height, r8_s16 focal,
     p->fn = f;
 }
 
+#ifndef R8_PROJ16
 /* What the rounding shift by sh needs: 2^(sh-1) + 2^31 (added) and
  * 2^31 >> sh (taken off after the shift), sh = 1..31. */
 typedef struct rshift {
@@ -132,7 +140,9 @@ static int proj_wide(r8_s32 c, r8_s16 kk, int sh, r8_s16 lim, r8_s16 *q)
     *q = (r8_s16)v;
     return 0;
 }
+#endif
 
+#ifndef R8_PROJ_KERNEL_ONLY
 /* round(p * 2^-(k+1)) = floor((floor(p / 2^k) + 1) / 2), the same as
  * floor((p + 2^k) / 2^(k+1)), for |result| < 2^14 (else 1: outside any
  * guard band).  Floor of a negative p through its complement
@@ -161,7 +171,34 @@ static int proj_round(r8_s32 p, r8_u8 k, r8_s16 lim, r8_s16 *q)
     *q = t;
     return 0;
 }
+#endif
 
+#ifdef R8_PROJ_KERNEL_ONLY
+/* R8_PROJ16 with the AVR kernel (ports/avr/project.S): r8k_project
+ * projects every point whose x and y fit 16 bits itself (under
+ * r8_proj_init's guard band) and calls r8_project_recip only for the
+ * others, which such a build has none of: r8_project through the
+ * kernel, r8_project_recip only refusing. */
+#include "r8kern.h"
+int r8_project(const r8_proj *p, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy)
+{
+    r8_s16 out[2];
+    r8_u16 m;
+    r8_s8 e;
+    if (r8k_project(p, v, out, &m, &e))
+        return 1;
+    *sx = out[0];
+    *sy = out[1];
+    return 0;
+}
+
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy)
+{
+    (void)p; (void)v; (void)m; (void)e; (void)sx; (void)sy;
+    return 1;
+}
+#else
 int r8_project(const r8_proj *p, const r8_vec3l *v, r8_s16 *sx, r8_s16 *sy)
 {
     r8_s8 e;
@@ -202,10 +239,20 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
         if (proj_round(R8_MUL16(v->x, kk), (r8_u8)(sh - 1), lim, &qx) ||
             proj_round(R8_MUL16(v->y, kk), (r8_u8)(sh - 1), lim, &qy))
             return 1;
-    } else if (proj_wide(v->x, kk, sh, lim, &qx) || proj_wide(v->y, kk, sh, lim, &qy)) {
+    } else {
+#ifdef R8_PROJ16
+        /* R8_PROJ16: a build whose caller has proved every camera-space
+         * x and y within 16 bits (ports/fw_trim.c FW_SPIN checks the
+         * scene's bound before the first frame), and guard under 1024
+         * px (r8_proj_init's 900): never here.  No 32-bit fallback. */
         return 1;
+#else
+        if (proj_wide(v->x, kk, sh, lim, &qx) || proj_wide(v->y, kk, sh, lim, &qy))
+            return 1;
+#endif
     }
     *sx = (r8_s16)(p->cx + qx);
     *sy = (r8_s16)(p->cy + qy);
     return 0;
 }
+#endif

@@ -36,7 +36,13 @@ static void rot_offset(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int tra
     }
 }
 
-/* World -> camera rotation of cam into c; 0 when it is the identity. */
+/* World -> camera rotation of cam into c; 0 when it is the identity.
+ * R8_CAM_FIXED: a build whose caller has proved its camera never turns
+ * (ports/fw_trim.c FW_SPIN checks it before the first frame): always
+ * the identity, no matrix code. */
+#ifdef R8_CAM_FIXED
+#define cam_rotation(cam, c) 0
+#else
 static int cam_rotation(const r8_camera *cam, r8_mat3 *c)
 {
     r8_mat3 ry, t;
@@ -53,6 +59,7 @@ static int cam_rotation(const r8_camera *cam, r8_mat3 *c)
     r8_mat_transpose(&t, c);
     return 1;
 }
+#endif
 
 void r8_tf_frame(r8_state *st, const r8_camera *cam)
 {
@@ -61,6 +68,9 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
     r8_s32 zn, zf;
     r8_u8 i;
     int turned;
+#ifdef R8_CAM_FIXED
+    (void)c;
+#endif
     r8_proj_init(&st->cam, st->width, st->height, cam->focal,
                  (r8_s32)cam->znear * R8_CSCALE);
     turned = cam_rotation(cam, &c);

@@ -9,6 +9,8 @@
  *   FW_SHADING           R8_SHADE_* (default Lambert, texture for the
  *                        crate; make bench measures every shading)
  *   FW_WIRE              1: wireframe (cfg.render.wire; default 0)
+ *   FW_SPIN              a fixed camera, no 32-bit projection
+ *                        (fw_trim.c; checked here)
  * FW_HOST builds the host reference instead: scene, method and frames
  * from argv, the arena carved to exactly app_ram(cfg) bytes, plat from
  * emu/fw_plat_host.c (stdout). */
@@ -98,6 +100,10 @@ int main(void)
     cfg.render.wire = FW_WIRE;
 #endif
     world_clip(&cfg);
+#ifdef FW_SPIN
+    if (fw_spin_bad(&cfg))
+        plat_exit(APP_E_CFG);    /* built for a fixed camera, 16-bit points */
+#endif
     plat_exit(app_run(&cfg, mem, sizeof mem));
     return 0;
 }
