@@ -96,6 +96,18 @@ r8_u8 r8k_level(const r8_s16 *n, const r8_vec3 *light, r8_s16 amb, r8_u8 colour)
  * Q1.14 r8_s16: the camera-space z row of the object's matrix). */
 int r8k_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 
+/* r8k_fwalk's painter's keys (r8_bucket_object; render.c's depth_key
+ * with the object's constants taken once). */
+typedef struct r8_fwpk {
+    r8_s32 k[6];            /* for n = 3, then 4: zc = n (t.z - zn16),
+                               zr = n (zf16 - zn16), kmul (r8_u32) */
+    const r8_s16 *row;      /* r8k_zsum's row (RAM) */
+    r8_u8 *ftop;            /* first band per face id, or 0 */
+    r8_s8 fbsh;             /* its log2 band rows (>= 0 when ftop is set) */
+    r8_u8 vi[R8_MAX_FACE_VERTS];   /* (r8k_zsum's vi) */
+    r8_s32 zs;              /* (r8k_zsum's out) */
+} r8_fwpk;
+
 /* r8k_fwalk's walk over one object's faces (r8_bucket_object). */
 typedef struct r8_fwalk {
     const r8_s16 *base;     /* the object's screen vertices: vertex i at
@@ -111,7 +123,7 @@ typedef struct r8_fwalk {
     r8_s16 w, h;            /* the frame */
     r8_s16 top, bot;        /* the rows of the face returned with 1 */
     r8_u8 vsh;              /* 1 or 2 */
-    void *st;               /* for r8_fw_vertex */
+    void *st;               /* r8_tf_vertex's state and object */
     const void *o;
     void *heads, *next;     /* the band buckets and links (r8_fid: r8_u8
                                with fid8, else r8_u16) */
@@ -120,27 +132,43 @@ typedef struct r8_fwalk {
     r8_u16 fbase;           /* the object's first face id */
     r8_s8 bsh;              /* log2 band rows; < 0: faces handed back */
     r8_u8 fid8;
+    r8_u16 vbase;           /* the object's first vertex (r8_tf_vertex) */
+    struct r8_fwpk *pk;     /* painter's (bsh < 0): 0, or the faces are
+                               put in their depth buckets */
+    void (*paint)(void);    /* AVR: r8k_fwpaint with pk, else 0 */
 } r8_fwalk;
 
 /* The next face of w (f - 1 down to 0; w->f = that face) that is to be
  * drawn: n = faces[f].n in [3, R8_MAX_FACE_VERTS]; with normals,
  * r8k_cull(normals + 3 f, verts + 3 v[0], eye) 1 (0: the face is
- * skipped); its vertices transformed (r8_fw_vertex(w, i) for each whose
- * x is -32767, in order); the rows [top, bot) = [R8_FLOOR16(ymin + 7),
+ * skipped); its vertices transformed (r8_tf_vertex(st, o, verts + 3 i,
+ * vbase + i) for each whose x is -32767, in order); the rows [top, bot) = [R8_FLOOR16(ymin + 7),
  * R8_FLOOR16(ymax + 7)) of its vertices' box (16-bit wrapping sums) hold
  * a pixel centre of the frame (top < bot, bot > 0, top < h,
  * R8_FLOOR16(xmax + 7) > 0, R8_FLOOR16(xmin + 7) < w; else the face is
  * skipped).  With bsh >= 0 such a face is put in its band's bucket, as
  * r8_bucket_object does (id = fbase + f; next[id] = heads[key], heads[key]
  * = id, key = top >> bsh or 0 for top < 0; slot[id] = 0xFF; npoly + 1),
- * and the walk goes on; with bsh < 0 it returns 1, w->top, w->bot set
- * (painter's: the caller buckets it).  Returns 2 (R8_FW_OTHER) for
+ * and the walk goes on; with bsh < 0 w->top, w->bot are set and, with pk,
+ * when r8k_zsum(verts, pk->vi, n, pk->row, &pk->zs) gives 1 for the face's
+ * vertex indices (copied to pk->vi), it is put in its depth bucket (key =
+ * 63 - min(63, k) for z = zs + zc in [0, zr), k = (r8_u16)(z kmul >> 16),
+ * >> 2 more for n = 4; key 0 for z >= zr, z < 0 taken as 0; the constants
+ * pk->k[0..2] for n = 3, k[3..5] for n = 4, arithmetic wrapping; then
+ * ftop[id] = min(255, top >> fbsh, 0 for top < 0) when ftop is set, and
+ * the links, slot and npoly as above) and the walk goes on; else it
+ * returns 1 (painter's: the caller buckets it).  Returns 2 (R8_FW_OTHER) for
  * a face the caller takes itself (n out of range, r8k_cull -1, a vertex
  * whose x is -32768: at once, later vertices left as they are), 0 when no
  * face is left. */
 r8_u8 r8k_fwalk(r8_fwalk *w);
 #define R8_FW_OTHER 2
-/* r8k_fwalk's call to transform vertex i of w's object (src/render.c) */
-void r8_fw_vertex(r8_fwalk *w, r8_u8 i);
+/* AVR: r8k_fwalk's painter's part (ports/avr/fwpaint.S, its own object:
+ * builds without painter's leave it and r8k_zsum out); not to be called */
+void r8k_fwpaint(void);
+/* r8k_fwalk's call to transform a vertex (src/transform.c; r8int.h) */
+struct r8_state;
+struct r8_objx;
+void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
 
 #endif

@@ -23,7 +23,9 @@
 # edge.S, project.S, fill.S, facecull.S, facelevel.S and facez.S go into both AVR archives, whose library
 # objects are compiled with -DR8_ASM_TRAP -DR8_ASM_XFORM -DR8_ASM_EDGE
 # -DR8_ASM_PROJECT -DR8_ASM_FILL -DR8_ASM_CULL -DR8_ASM_LEVEL -DR8_ASM_ZSUM (src/kern.c then leaves its C references out),
-# and zfill.S with -DR8_ASM_ZFILL (src/r8zrows.h: src/zrows.c's reference); the
+# and zfill.S with -DR8_ASM_ZFILL (src/r8zrows.h: src/zrows.c's reference),
+# fwalk.S with -DR8_ASM_FWALK (its painter's part, fwpaint.S, is an object of
+# its own, linked only by firmwares with painter's); the
 # host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
 # project fill facecull facelevel facez zfill) with those only, for before/after figures; as an environment
@@ -197,7 +199,7 @@ $(XB)/$(1)/obj/%.o: $(XB)/scenes/%.c $(XHDRS) $(AVR_KSTAMP)
 $(XB)/$(1)/obj/%.o: tests/targets/%.c $(XHDRS) $(AVR_KSTAMP) tests/unity/unity.c tests/unity/unity.h
 	@mkdir -p $$(dir $$@)
 	avr-gcc -mmcu=$(MCU_$(1)) $(AVR_CFLAGS) -Itests/unity -c $$< -o $$@
-$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_KERN:%=$(XB)/$(1)/obj/%.o) $(AVR_WIRE_S:ports/avr/%.S=$(XB)/$(1)/obj/%.o) $(AVR_KSTAMP)
+$(XB)/$(1)/librast8.a: $(XOBJ_NAMES:%=$(XB)/$(1)/obj/%.o) $(AVR_KERN:%=$(XB)/$(1)/obj/%.o) $(if $(filter fwalk,$(AVR_KERN)),$(XB)/$(1)/obj/fwpaint.o) $(AVR_WIRE_S:ports/avr/%.S=$(XB)/$(1)/obj/%.o) $(AVR_KSTAMP)
 	rm -f $$@ && avr-ar rcs $$@ $$(filter %.o,$$^)
 endef
 $(eval $(call AVR_OBJ,avr328))
@@ -318,7 +320,7 @@ $(XB)/z80/sizes.txt: $(call XSZ,z80) tests/targets/sizes.sh
 # the AVR kernels against their references (src/kern.c, compiled into the
 # test under other names, without R8_ASM_*), whatever AVR_ASM says
 XKERN := $(XB)/avr1284/tests/avr_kern.elf
-XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/unity_target.o
+XKERN_OBJS := $(AVR_KALL:%=$(XB)/avr1284/obj/%.o) $(XB)/avr1284/obj/fwpaint.o $(XB)/avr1284/obj/unity_target.o
 $(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c src/zrows.c $(XKERN_OBJS) $(XDEPS_avr1284) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
 	@bash tests/targets/wrap.sh $< > $(basename $@).wrap.c

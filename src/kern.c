@@ -181,7 +181,8 @@ r8_u8 r8k_fwalk(r8_fwalk *w)
             const r8_s16 *v = w->base + ((unsigned)i << w->vsh);
             r8_s16 x = v[0], y;
             if (x == -32767) {
-                r8_fw_vertex(w, i);
+                r8_tf_vertex((struct r8_state *)w->st, (const struct r8_objx *)w->o, w->verts + 3u * i,
+                             (r8_u16)(w->vbase + i));
                 x = v[0];
             }
             if (x == -32767 - 1)
@@ -197,11 +198,36 @@ r8_u8 r8k_fwalk(r8_fwalk *w)
         if (top < bot && bot > 0 && top < w->h && R8_FW_FLOOR(xmax) > 0 && R8_FW_FLOOR(xmin) < w->w) {
             r8_u16 key = 0, id = (r8_u16)(w->fbase + f);
             if (w->bsh < 0) {
+                r8_fwpk *p = w->pk;
+                const r8_s32 *pk;
+                r8_u32 z;
                 w->top = top;
                 w->bot = bot;
-                return 1;
-            }
-            if (top > 0)
+                if (!p)
+                    return 1;
+                for (j = 0; j < n; j++)
+                    p->vi[j] = R8_RDU8(&fc->v[j]);
+                if (!r8k_zsum(w->verts, p->vi, n, p->row, &p->zs))
+                    return 1;
+                pk = p->k + (n == 4 ? 3 : 0);
+                z = (r8_u32)p->zs + (r8_u32)pk[0];
+                if (z & 0x80000000UL)
+                    z = 0;
+                if ((r8_s32)z < pk[1]) {
+                    key = (r8_u16)((z * (r8_u32)pk[2]) >> 16);
+                    if (n == 4)
+                        key >>= 2;
+                    if (key > 63)
+                        key = 63;
+                    key = (r8_u16)(63 - key);
+                }
+                if (p->ftop) {
+                    r8_u16 b = 0;
+                    if (top > 0)
+                        b = (r8_u16)((r8_u16)top >> p->fbsh);
+                    p->ftop[w->fid8 ? (r8_u8)id : id] = (r8_u8)(b > 255 ? 255 : b);
+                }
+            } else if (top > 0)
                 key = (r8_u16)((r8_u16)top >> w->bsh);
             if (w->fid8) {
                 r8_u8 *h = (r8_u8 *)w->heads, *nx = (r8_u8 *)w->next;
@@ -221,6 +247,13 @@ r8_u8 r8k_fwalk(r8_fwalk *w)
     return 0;
 }
 #undef R8_FW_FLOOR
+#ifdef __AVR__
+/* (render.c points w->paint here when fwalk.S is not built in; this
+ * reference never jumps there) */
+void r8k_fwpaint(void)
+{
+}
+#endif
 #elif defined(R8_ASM_FWALK)
 #include <stddef.h>
 /* AVR: ports/avr/fwalk.S reads these offsets */
@@ -241,6 +274,15 @@ R8_CASSERT(fwalk_npoly_at_31, offsetof(r8_fwalk, npoly) == 31);
 R8_CASSERT(fwalk_fbase_at_33, offsetof(r8_fwalk, fbase) == 33);
 R8_CASSERT(fwalk_bsh_at_35, offsetof(r8_fwalk, bsh) == 35);
 R8_CASSERT(fwalk_fid8_at_36, offsetof(r8_fwalk, fid8) == 36);
+R8_CASSERT(fwalk_vbase_at_37, offsetof(r8_fwalk, vbase) == 37);
+R8_CASSERT(fwalk_pk_at_39, offsetof(r8_fwalk, pk) == 39);
+R8_CASSERT(fwalk_paint_at_41, offsetof(r8_fwalk, paint) == 41);
+/* ports/avr/fwpaint.S reads these */
+R8_CASSERT(fwpk_row_at_24, offsetof(r8_fwpk, row) == 24);
+R8_CASSERT(fwpk_ftop_at_26, offsetof(r8_fwpk, ftop) == 26);
+R8_CASSERT(fwpk_fbsh_at_28, offsetof(r8_fwpk, fbsh) == 28);
+R8_CASSERT(fwpk_vi_at_29, offsetof(r8_fwpk, vi) == 29);
+R8_CASSERT(fwpk_zs_at_33, offsetof(r8_fwpk, zs) == 33);
 R8_CASSERT(fwalk_face_6, sizeof(r8_face) == 6 && offsetof(r8_face, v) == 2);
 #endif
 

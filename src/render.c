@@ -735,11 +735,12 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
  * keep the loop alone. */
 #if defined(R8_ASM_FWALK) || !(defined(__SDCC) || defined(__CC65__))
 #define R8_FWALK_K 1
-void r8_fw_vertex(r8_fwalk *w, r8_u8 i)
-{
-    const r8_objx *o = (const r8_objx *)w->o;
-    r8_tf_vertex((r8_state *)w->st, o, w->verts + 3u * i, (r8_u16)(o->vbase + i));
-}
+/* R8_FWALK_PK: with painter's, r8k_fwalk puts the faces in their depth
+ * buckets itself (an r8_fwpk: 37 B more stack, which the 2 KB parts,
+ * built with R8_SMALL_SCENE, cannot spare: they keep the C keys) */
+#ifndef R8_SMALL_SCENE
+#define R8_FWALK_PK 1
+#endif
 #else
 #define R8_FWALK_K 0
 #endif
@@ -770,6 +771,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     r8_fwalk fw;
     r8_u8 kw = 0;              /* r8k_fwalk's answer: 1 (cull and box
                                   done), R8_FW_OTHER; 0: not used */
+#ifdef R8_FWALK_PK
+    r8_fwpk pk;                /* painter's: depth_key's constants */
+#endif
 #endif
     if (o->hidden)
         return;
@@ -810,6 +814,29 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #endif
         fw.fbase = o->fbase;
         fw.fid8 = (r8_u8)(sizeof(r8_fid) == 1);
+        fw.vbase = o->vbase;
+        /* painter's: r8k_fwalk puts the faces in their depth buckets
+         * (depth_key with n (t.z - znear), n range and kmul taken once) */
+        fw.pk = 0;
+        fw.paint = 0;
+#ifdef R8_FWALK_PK
+        if (painter && (!st->ftop || st->bsh >= 0)) {
+            r8_u32 zc = (r8_u32)o->t.z - (r8_u32)st->zn16, zr = (r8_u32)(st->zf16 - st->zn16);
+            pk.k[0] = (r8_s32)(zc + (zc << 1));
+            pk.k[1] = (r8_s32)(zr + (zr << 1));
+            pk.k[2] = (r8_s32)st->kmul3;
+            pk.k[3] = (r8_s32)(zc << 2);
+            pk.k[4] = (r8_s32)(zr << 2);
+            pk.k[5] = (r8_s32)st->kmul;
+            pk.row = &o->m.m[6];
+            pk.ftop = st->ftop;
+            pk.fbsh = (r8_s8)st->bsh;
+            fw.pk = &pk;
+#ifdef __AVR__                 /* (fwpaint.S, or kern.c's stub) */
+            fw.paint = r8k_fwpaint;
+#endif
+        }
+#endif
     }
 #endif
 #ifndef R8_NO_BSP

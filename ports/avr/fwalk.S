@@ -5,9 +5,10 @@
  * r8_bucket_object's face loop (src/render.c): from face w->f - 1 down,
  * the next face to draw - its n checked, r8k_cull's test (facecull.S's
  * code, inline here) when w->normals is set, its vertices transformed where their x is -32767
- * (R8_VX_TODO: a call of r8_fw_vertex(w, i), C), the rows of its
+ * (R8_VX_TODO: a call of r8_tf_vertex(st, o, verts + 3 i, vbase + i), C), the rows of its
  * vertices' box tested against the frame - returns 1 with w->f, top,
- * bot set; 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
+ * bot set (painter's with w->paint: on at r8k_fwpaint, fwpaint.S, which
+ * puts the face in its depth bucket); 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
  * vertex x = -32768); 0 at the end.  Reference: src/kern.c, which
  * asserts the offsets of r8_fwalk used here.
  *
@@ -18,7 +19,7 @@
  * box: Z = the face's vertex indices (flash), r21 = the low byte of
  * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
  * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
- * on the stack around r8_fw_vertex with Z and r21).  Saves r14-r17, r28,
+ * on the stack around r8_tf_vertex with Z and r21).  Saves r14-r17, r28,
  * r29; clears r1.  About 200 cycles a face with the cull, 43 a vertex,
  * 60 for the rows, 50 in and out.
  */
@@ -42,6 +43,8 @@
 #define W_TOP   16
 #define W_BOT   18
 #define W_VSH   20
+#define W_ST    21
+#define W_O     23
 #define W_HEADS 25
 #define W_NEXT  27
 #define W_SLOT  29
@@ -49,6 +52,8 @@
 #define W_FBASE 33
 #define W_BSH   35
 #define W_FID8  36
+#define W_VBASE 37
+#define W_PAINT 41
 
 #define ZERO r15
 
@@ -247,7 +252,7 @@ mark:
     brsh  xok               /* an ordinary x */
     cpi   r22, 1
     brne  other             /* -32768: the clipper's */
-    /* -32767: r8_fw_vertex(w, i), the box kept on the stack, then this
+    /* -32767: r8_tf_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
      * vertex again */
     push  r0
     push  r1
@@ -257,10 +262,23 @@ mark:
     push  r30
     push  r31
     sbiw  r30, 1
-    RD0(r22)
+    RD0(r22)                /* i */
+    ldi   r23, 6
+    mul   r22, r23
+    ldd   r20, Y+W_VERTS    /* mv = verts + 3 i */
+    ldd   r21, Y+W_VERTS+1
+    add   r20, r0
+    adc   r21, r1
     clr   r1
-    movw  r24, r28
-    call  r8_fw_vertex
+    ldd   r18, Y+W_VBASE    /* g = vbase + i */
+    ldd   r19, Y+W_VBASE+1
+    add   r18, r22
+    adc   r19, r1
+    ldd   r24, Y+W_ST
+    ldd   r25, Y+W_ST+1
+    ldd   r22, Y+W_O
+    ldd   r23, Y+W_O+1
+    call  r8_tf_vertex
     pop   r31
     pop   r30
     pop   r21
@@ -344,6 +362,13 @@ xok:
     std   Y+W_TOP+1, r23
     std   Y+W_BOT, r20
     std   Y+W_BOT+1, r21
+    ldd   r30, Y+W_PAINT
+    ldd   r31, Y+W_PAINT+1
+    sbiw  r30, 0
+    breq  r8k_fwalk_ret1
+    ijmp                    /* painter's: r8k_fwpaint (fwpaint.S) */
+    .global r8k_fwalk_ret1
+r8k_fwalk_ret1:
     ldi   r24, 1
 out:
     clr   r1
@@ -370,7 +395,10 @@ put:
     ror   r22
     dec   r24
     brne  2b
-3:  ldd   r18, Y+W_F
+3:
+    .global r8k_fwalk_putk
+r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0) */
+    ldd   r18, Y+W_F
     ldd   r19, Y+W_F+1
     ldd   r20, Y+W_FBASE
     ldd   r21, Y+W_FBASE+1

@@ -20,6 +20,7 @@
 #undef R8_ASM_LEVEL
 #undef R8_ASM_ZSUM
 #define r8k_zsum ref_zsum
+int ref_zsum(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *row, r8_s32 *out);
 #define r8k_cull ref_cull
 #define r8k_level ref_level
 #define r8k_trap ref_trap
@@ -28,12 +29,18 @@
 #define r8k_edge ref_edge
 #define r8k_fill ref_fill
 #define r8k_fwalk ref_fwalk            /* (tested on AVR: test_avr_kern.c) */
-#define r8_fw_vertex ref_fw_vertex
-void ref_fw_vertex(r8_fwalk *w, r8_u8 i);
-void ref_fw_vertex(r8_fwalk *w, r8_u8 i) { (void)w; (void)i; }
+#define r8k_fwpaint ref_fwpaint
+void ref_fwpaint(void);
+#define r8_tf_vertex ref_tf_vertex
+void ref_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
+void ref_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    (void)st; (void)o; (void)mv; (void)g;
+}
 #include "../../src/kern.c"
 #undef r8k_fwalk
-#undef r8_fw_vertex
+#undef r8k_fwpaint
+#undef r8_tf_vertex
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project

@@ -37,6 +37,8 @@ int r8k_zsum_ref(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n, const r8_s16 *ro
 #define r8k_zsum r8k_zsum_ref
 r8_u8 r8k_fwalk_ref(r8_fwalk *w);
 #define r8k_fwalk r8k_fwalk_ref
+#define r8k_fwpaint r8k_fwpaint_ref        /* (the reference's stub) */
+void r8k_fwpaint_ref(void);
 #define r8k_trap r8k_trap_ref
 #define r8k_fill r8k_fill_ref
 #define r8k_xform r8k_xform_ref
@@ -52,6 +54,7 @@ r8_u8 r8k_fwalk_ref(r8_fwalk *w);
 #undef r8k_level
 #undef r8k_zsum
 #undef r8k_fwalk
+#undef r8k_fwpaint
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -365,12 +368,15 @@ static void test_zsum_random(void)
  * the cull (normals over kc_norms, model vertices over kc_verts, eye
  * random), over 64 screen vertices of 4 or 8 bytes: in the frame, far
  * out, at the 16-bit limits, x in [-32766, -32513] (ordinary), -32767
- * (to transform: r8_fw_vertex below, which writes new values, sometimes
+ * (to transform: r8_tf_vertex below, which writes new values, sometimes
  * -32768) and -32768 (the clipper's).  Every call of a walk to its end
  * is compared (return, f, top, bot), the vertices after it, and the
- * order of r8_fw_vertex's calls; with bsh >= 0 (faces put in band
+ * order of r8_tf_vertex's calls (their mv, g and o checked); with bsh >= 0 (faces put in band
  * buckets: 8- or 16-bit ids, slots or none) also the buckets, links,
- * slots and npoly; each outcome must be hit ---- */
+ * slots and npoly; with bsh < 0, half the time painter's (pk: faces put
+ * in depth buckets, ftop or none): the buckets, links, slots, ftop, vi
+ * and zs too, keys 0, 63 and between each hit in 50 walks; each outcome must
+ * be hit ---- */
 #define FW_NV 48
 #define FW_NI(i, j) (((i) * 37 + (j) * 13 + ((i) >> 2) * 7 + 5) % FW_NV)
 #define FW_N(i) ((i) % 16 == 6 ? 2 : (i) % 16 == 11 ? 5 : (i) % 16 == 15 ? 0 : 3 + ((i) * 5 % 3 != 0))
@@ -379,19 +385,34 @@ static const r8_face fw_faces[] R8_FLASH = {
     KC_64(FW_F, 0), KC_16(FW_F, 64), KC_16(FW_F, 80)
 };
 static r8_s16 fw_sv[2][FW_NV * 4];
-static r8_s16 fw_tf[FW_NV][2];        /* what r8_fw_vertex writes */
+static r8_s16 fw_tf[FW_NV][2];        /* what r8_tf_vertex writes */
 #define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
-static r8_u16 fw_heads[2][8], fw_next[2][FW_NID];
+static r8_u16 fw_next[2][FW_NID];
 static r8_u8 fw_slot[2][FW_NID];
+/* the heads (64 keys) and ftop in band_ref (the test's statics fill the
+ * 1284P's SRAM: the stack needs the room) */
+static r8_u16 (*fw_heads)[64];
+static r8_u8 (*fw_ftop)[FW_NID];
+static r8_fwpk fw_pk[2];               /* painter's keys (one per walk) */
+static r8_s16 fw_row[3];
+static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
-void r8_fw_vertex(r8_fwalk *w, r8_u8 i)
+/* r8k_fwalk's st is the walk itself here; o is fw_o */
+static const char fw_o[1];
+void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g)
 {
-    r8_s16 *v = (r8_s16 *)w->base + ((unsigned)i << w->vsh);
-    v[0] = fw_tf[i][0];
-    v[1] = fw_tf[i][1];
+    r8_fwalk *w = (r8_fwalk *)st;
+    r8_u8 i = (r8_u8)(g - w->vbase);
+    if ((r8_u16)(g - w->vbase) < FW_NV && mv == w->verts + 3u * i && (const void *)o == (const void *)fw_o) {
+        r8_s16 *v = (r8_s16 *)w->base + ((unsigned)i << w->vsh);
+        v[0] = fw_tf[i][0];
+        v[1] = fw_tf[i][1];
+    } else {
+        i = 0xEE;                     /* (the logs then differ) */
+    }
     if (fw_nlog[fw_run] < FW_NV + 1)
-        fw_log[fw_run][fw_nlog[fw_run]++] = i;
+        fw_log[fw_run][fw_nlog[fw_run]++] = (r8_u8)(i + fw_run * (i == 0xEE));
     fw_calls++;
 }
 static r8_s16 fw_coord(unsigned c, int y)
@@ -407,6 +428,8 @@ static r8_s16 fw_coord(unsigned c, int y)
 static void test_fwalk_random(void)
 {
     unsigned long i, hit[4] = {0, 0, 0, 0};
+    fw_heads = (r8_u16 (*)[64])(void *)band_ref;
+    fw_ftop = (r8_u8 (*)[FW_NID])(void *)(band_ref + sizeof(r8_u16[2][64]));
     for (i = 0; i < 1500; i++) {
         r8_fwalk w[2];
         r8_vec3l eye;
@@ -441,8 +464,8 @@ static void test_fwalk_random(void)
         w[0].h = rndn(8) ? 64 : rnds(1, 100);
         w[0].top = w[0].bot = 0x5A5A;
         w[0].vsh = vsh;
-        w[0].st = 0;
-        w[0].o = 0;
+        w[0].o = fw_o;
+        w[0].vbase = (r8_u16)rnd();
         /* the buckets: 16- or 8-bit ids, bands of 8 to 32 rows in at most
          * 64, with pool slots or none; or faces handed back */
         w[0].bsh = (r8_s8)(rndn(3) ? (int)(3 + rndn(3)) : -1);
@@ -451,15 +474,53 @@ static void test_fwalk_random(void)
         w[0].fid8 = (r8_u8)rndn(2);
         w[0].fbase = (r8_u16)rndn(FW_NID - 64 + 1);
         w[0].npoly = npoly0 = (r8_u16)rnd();
-        for (k = 0; k < 8; k++)
+        for (k = 0; k < 64; k++)
             fw_heads[0][k] = (r8_u16)rnd();
         for (k = 0; k < FW_NID; k++) {
             fw_next[0][k] = (r8_u16)rnd();
             fw_slot[0][k] = (r8_u8)rnd();
+            fw_ftop[0][k] = (r8_u8)rnd();
         }
         memcpy(fw_heads[1], fw_heads[0], sizeof fw_heads[0]);
         memcpy(fw_next[1], fw_next[0], sizeof fw_next[0]);
         memcpy(fw_slot[1], fw_slot[0], sizeof fw_slot[0]);
+        memcpy(fw_ftop[1], fw_ftop[0], sizeof fw_ftop[0]);
+        /* painter's (bsh < 0, half the time): z sums within about
+         * +-220000 (sums of up to 4 vertices, rows Q1.14) against zc
+         * and zr that put them below, in and past the 64 keys; kmul
+         * near 64 2^16 / zr (n 3) or a quarter of it (n 4), sometimes
+         * any 32 bits (the product wraps) */
+        w[0].pk = 0;
+        w[0].paint = 0;
+        if (w[0].bsh < 0 && rndn(2)) {
+            for (k = 0; k < 2; k++) {
+                r8_s32 zr = (r8_s32)(1 + rnd() % 400000UL);
+                r8_u32 km = (r8_u32)(64UL * 65536UL / (r8_u32)zr);
+                km = km / 2u + rnd() % (km + 1u);
+                if (k)
+                    km /= 4u;
+                if (!rndn(8))
+                    km = (rnd() << 8) ^ rnd();
+                fw_pk[0].k[3 * k] = (r8_s32)(rnd() % 500000UL) - 250000L;
+                fw_pk[0].k[3 * k + 1] = zr;
+                fw_pk[0].k[3 * k + 2] = (r8_s32)km;
+            }
+            for (k = 0; k < 3; k++)
+                fw_row[k] = rndn(4) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
+            w[0].pk = &fw_pk[0];
+            w[0].paint = r8k_fwpaint;
+            fw_pk[0].row = fw_row;
+            fw_pk[0].fbsh = (r8_s8)rndn(6);
+        }
+        fw_pk[0].zs = 0;
+        memset(fw_pk[0].vi, 0, sizeof fw_pk[0].vi);
+        fw_pk[0].ftop = rndn(2) ? fw_ftop[0] : 0;
+        fw_pk[1] = fw_pk[0];
+        fw_pk[1].ftop = fw_pk[0].ftop ? fw_ftop[1] : 0;
+        if (w[0].pk)                  /* heads >= 0xA0 (ids are below 96) */
+            for (k = 0; k < sizeof fw_heads[0]; k++)
+                ((r8_u8 *)fw_heads[0])[k] = (r8_u8)(0xA0 + rndn(0x60));
+        memcpy(fw_heads[1], fw_heads[0], sizeof fw_heads[0]);
         w[1] = w[0];
         w[0].heads = fw_heads[0];
         w[0].next = fw_next[0];
@@ -467,7 +528,11 @@ static void test_fwalk_random(void)
         w[1].heads = fw_heads[1];
         w[1].next = fw_next[1];
         w[1].slot = w[0].slot ? fw_slot[1] : 0;
+        if (w[0].pk)
+            w[1].pk = &fw_pk[1];
         w[1].base = fw_sv[1];
+        w[0].st = &w[0];
+        w[1].st = &w[1];
         fw_nlog[0] = fw_nlog[1] = 0;
         do {                          /* the two walks in step */
             fw_run = 0;
@@ -477,6 +542,8 @@ static void test_fwalk_random(void)
             if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
                 w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
                 memcmp(fw_next[0], fw_next[1], sizeof fw_next[0]) || memcmp(fw_slot[0], fw_slot[1], sizeof fw_slot[0]) ||
+                memcmp(fw_ftop[0], fw_ftop[1], sizeof fw_ftop[0]) || fw_pk[0].zs != fw_pk[1].zs ||
+                memcmp(fw_pk[0].vi, fw_pk[1].vi, sizeof fw_pk[0].vi) ||
                 memcmp(fw_sv[0], fw_sv[1], sizeof fw_sv[0]) || fw_nlog[0] != fw_nlog[1] ||
                 memcmp(fw_log[0], fw_log[1], fw_nlog[0])) {
                 print_case("r8k_fwalk", i);
@@ -490,7 +557,14 @@ static void test_fwalk_random(void)
             nr++;
         } while (r[0] && nr <= nf);
         hit[3] += nf - (nr - 1u) - (r8_u16)(w[0].npoly - npoly0);   /* skipped inside */
+        if (w[0].pk)
+            for (k = 0; k < 64; k++)
+                if (w[0].fid8 ? ((r8_u8 *)fw_heads[0])[k] < 0xA0 : fw_heads[0][k] < 0xA0A0u)
+                    fw_keys[k == 0 ? 0 : k == 63 ? 2 : 1]++;
     }
+    for (i = 0; i < 3; i++)
+        if (fw_keys[i] < 50)
+            unity_fail_int(__LINE__, "r8k_fwalk: a painter's key class too rare", 50, (long)fw_keys[i]);
     hit[2] = fw_calls;
     for (i = 0; i < 4; i++)
         if (hit[i] < 1000)
