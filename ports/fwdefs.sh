@@ -50,6 +50,10 @@ if [ "${w:-0}" = 1 ]; then trim="$trim -DFW_WIRE=1"; else trim="$trim -DR8_NO_WI
 # walks 8, 10): no camera rotation, no 32-bit projection, the firmware
 # checking both (FW_SPIN, fw_trim.c)
 case "$trim" in *R8_NO_PORTAL*) [ "$m" != 17 ] && [ "$s" != 8 ] && [ "$s" != 10 ] && trim="$trim -DFW_SPIN" ;; esac
+# scenes whose meshes have at most 8 faces (cube, wall, separate, crate):
+# the face-walk kernel (r8k_fwalk) buys the cube ~200 cycles a frame for
+# ~1 KB of flash, so these keep r8_bucket_object's C loop (R8_NO_FWALK)
+case "$s" in 0|4|6|7) trim="$trim -DR8_NO_FWALK" ;; esac
 case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 # O = 0: a world's walls alone, without its movable objects (make bench-portal)

@@ -732,8 +732,9 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
 /* R8_FWALK_K: r8_bucket_object walks the faces with r8k_fwalk (AVR:
  * ports/avr/fwalk.S; the host: kern.c's reference) and takes the ones
  * it hands back (R8_FW_OTHER) through its own loop; the 6502 and Z80
- * keep the loop alone. */
-#if defined(R8_ASM_FWALK) || !(defined(__SDCC) || defined(__CC65__))
+ * keep the loop alone, and so does a build with R8_NO_FWALK (firmware
+ * whose meshes are small: ports/fwdefs.sh). */
+#if !defined(R8_NO_FWALK) && (defined(R8_ASM_FWALK) || !(defined(__SDCC) || defined(__CC65__)))
 #define R8_FWALK_K 1
 /* R8_FWALK_PK: with painter's, r8k_fwalk puts the faces in their depth
  * buckets itself (an r8_fwpk: 37 B more stack, which the 2 KB parts,
