@@ -229,7 +229,7 @@ $(Z80_KSTAMP): z80-kstamp-force
 z80-kstamp-force:
 # the library files a frame spends its time in get sdcc's deeper register
 # allocation (~20 s each to compile; the cube's frame -1.7% for wire.c alone)
-Z80_HOT := wire scan proj transform cull fixed
+Z80_HOT := wire scan proj transform cull fixed scankern
 # The same search for the firmware's own compile (fw_app.c with render.c,
 # scan.c, transform.c, cull.c and app.c in it, ports/fw_trim.c: the
 # per-face and per-band C): cube / cull 694,864 -> about 675 k T a frame,
