@@ -13,10 +13,12 @@
 ;; The call's state (t's page, m, k, pat, w and both DDAs) is copied into
 ;; static memory (the library is not reentrant) and back at the end.  A
 ;; span of the pattern 0xFF or 0x00 is a loop of `or m` / `and ~m`, two
-;; columns a pass (~30 T a column); a dither span does its first columns
-;; up to phase 0 and its last ones bit by bit (the pattern's low nibble,
-;; rotated), the others four columns a pass with the four column values
-;; in registers (~33 T a column).  A row costs ~450 T besides its span.
+;; columns a pass (~30 T a column); a dither span runs a four-column loop
+;; (the four column values in registers, ~31 T a column) entered at the
+;; first column's phase, and its last columns (after the last phase 3)
+;; counted one by one.  The DDAs step with the carry of the err compare
+;; (ccf; adc).  Round 6 (k-z80b): cube / cull 282,771 -> 266,571 T in
+;; r8k_trap over frames 2-3 (emu/z80sim -P -F 2).
 ;;
 ;; The cube / cull firmware (bench/kernz80.py, emu/z80sim, frames 1-3):
 ;; Z80_ASM="mul16 mullong" 1,612,609 T a frame, with trap 1,336,504
@@ -40,6 +42,9 @@
         .endm
         .macro  LD_A_IYH
         .db     0xFD, 0x7C
+        .endm
+        .macro  LD_IYH_A
+        .db     0xFD, 0x67
         .endm
         .macro  LD_A_IYL
         .db     0xFD, 0x7D
@@ -68,9 +73,7 @@ ts_rows: .ds    2
 ts_pt:  .ds     2               ; t, l, r themselves
 ts_pl:  .ds     2
 ts_pr:  .ds     2
-ts_lead: .ds    1               ; dither span: columns before phase 0,
-ts_grp: .ds     2               ; groups of four,
-ts_tail: .ds    1               ; columns after them
+ts_ph:  .ds     1               ; a dither span's first phase
 
         .area   _CODE
 
@@ -193,7 +196,12 @@ fclr:   ld      a, (ts_m)
         jr      nz, 2$
         jr      step
 
-        ;; ---- step both DDAs, then m, page and k
+        ;; ---- step both DDAs, then m, page and k.  err += r; when the
+        ;; 16-bit sum is >= den: err -= den and val += q + 1, else val +=
+        ;; q.  After `sbc hl, de` a borrow (no step) is undone by `add hl,
+        ;; de`, which then always carries (err + r - den wrapped below 0):
+        ;; so the carry is 1 exactly when val gets q alone, and `ccf; adc`
+        ;; adds q plus the step.
 step:   ld      hl, (tl + 4)    ; l: err += r
         ld      de, (tl + 6)
         add     hl, de
@@ -201,20 +209,14 @@ step:   ld      hl, (tl + 4)    ; l: err += r
         or      a, a
         sbc     hl, de          ; >= den (the 16-bit sum, as the C)?
         jr      nc, 1$
-        add     hl, de
-        ld      (tl + 4), hl
-        ld      hl, (tl)
-        ld      de, (tl + 2)
-        add     hl, de
-        ld      (tl), hl
-        jr      2$
+        add     hl, de          ; below: back, carry set
 1$:     ld      (tl + 4), hl
         ld      hl, (tl)
         ld      de, (tl + 2)
-        add     hl, de
-        inc     hl
+        ccf
+        adc     hl, de
         ld      (tl), hl
-2$:     ld      hl, (tr + 4)    ; r: the same
+        ld      hl, (tr + 4)    ; r: the same
         ld      de, (tr + 6)
         add     hl, de
         ld      de, (tr + 8)
@@ -222,17 +224,11 @@ step:   ld      hl, (tl + 4)    ; l: err += r
         sbc     hl, de
         jr      nc, 3$
         add     hl, de
-        ld      (tr + 4), hl
-        ld      hl, (tr)
-        ld      de, (tr + 2)
-        add     hl, de
-        ld      (tr), hl
-        jr      4$
 3$:     ld      (tr + 4), hl
         ld      hl, (tr)
         ld      de, (tr + 2)
-        add     hl, de
-        inc     hl
+        ccf
+        adc     hl, de
         ld      (tr), hl
 4$:     ld      a, (ts_k)
         inc     a
@@ -298,126 +294,126 @@ cnt2:   ld      a, c
 
         ;; ---- a dither: column x gets m where bit 3 - (x & 3) of the
         ;; pattern's low nibble is set, ~m elsewhere.  A = pat, BC = n,
-        ;; HL = the first byte, E = xl's low byte
-fdith:  and     a, #0x0F
-        ld      d, a
-        rlca
-        rlca
-        rlca
-        rlca
-        or      a, d
-        ld      d, a            ; the nibble in both halves: bit 7 - ph
-        ld      a, e            ; is phase ph's
-        and     a, #3
-        jr      z, 3$           ; phase 0: no columns before it
-        ld      e, a
-1$:     rlc     d               ; rotate to phase ph: bit 7 is its bit
-        dec     e
-        jr      nz, 1$
-        neg
-        add     a, #4           ; the columns before phase 0: 4 - ph,
-        ld      e, a            ; at most n
-        ld      a, b
-        or      a, a
+        ;; HL = the first byte, E = xl's low byte.  The four column values
+        ;; go to E, IXH, IXL, D (phases 0..3).  With ph = xl & 3, the span
+        ;; passes phase 3 G = (ph + n) / 4 times: the unchecked loop g0..g3
+        ;; is entered at phase ph and runs G times (B, then IYL passes of
+        ;; 256), then the T = (ph + n) & 3 columns left (IYH) go through
+        ;; d0.., which counts each column in B; a span that never reaches
+        ;; phase 3 (G = 0, n < 4) goes there too, entered at ph.
+fdith:  ld      d, a            ; D = pat
         ld      a, e
-        jr      nz, 3$
-        cp      a, c
-        jr      c, 3$
-        ld      a, c
-3$:     ld      (ts_lead), a
-        ld      e, a            ; n -= lead
-        ld      a, c
-        sub     a, e
-        ld      c, a
-        jr      nc, 4$
-        dec     b
-4$:     ld      a, c
         and     a, #3
-        ld      (ts_tail), a
-        srl     b
-        rr      c
-        srl     b
-        rr      c
-        ld      (ts_grp), bc
-        ld      a, (ts_m)
-        ld      b, a
-        cpl
-        ld      c, a            ; B = m, C = ~m, D = the rotated pattern
-        ld      a, (ts_lead)
-        or      a, a
-        jr      z, 5$
-        ld      e, a
-        call    fbits
-5$:     ld      iy, (ts_grp)    ; groups of four columns
-        LD_A_IYH
-        OR_IYL
-        jr      z, 7$
-        push    de              ; D: the pattern, at phase 0 again after
-        rlc     d               ; the four values: l0..l3 in E, IXH, IXL, D
-        sbc     a, a
-        and     a, b
-        ld      e, a
-        rlc     d
-        sbc     a, a
-        and     a, b
-        LD_IXH_A
-        rlc     d
-        sbc     a, a
-        and     a, b
-        LD_IXL_A
-        rlc     d
-        sbc     a, a
-        and     a, b
-        ld      d, a
-        LD_A_IYL                ; the count: B (0 = 256), then IYL
-        ld      b, a            ; passes of 256
-        or      a, a
-        LD_A_IYH
-        jr      z, 6$
+        ld      (ts_ph), a
+        push    hl              ; the first byte
+        ld      l, a
+        ld      h, #0
+        add     hl, bc          ; ph + n
+        ld      a, l
+        and     a, #3
+        LD_IYH_A                ; T
+        srl     h
+        rr      l
+        srl     h
+        rr      l               ; HL = G
+        ld      a, h
+        or      a, l
+        jr      nz, 1$
+        ld      a, c            ; G = 0: the count is n; carry set
+        scf
+        jr      2$
+1$:     ld      a, l            ; B = G's low byte (0 = 256), IYL the
+        or      a, a            ; passes of djnz
+        ld      a, h
+        jr      z, 3$
         inc     a
-6$:     LD_IYL_A
-8$:     ld      a, (hl)
+3$:     LD_IYL_A
+        ld      a, l
+        or      a, a            ; carry clear
+2$:     pop     hl
+        push    af              ; the count for B, and the carry
+        ld      a, (ts_m)
+        ld      c, a            ; C = m
+        ld      b, d            ; the nibble's bits from bit 0 (phase 3)
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      d, a            ; phase 3
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXL_A                ; phase 2
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXH_A                ; phase 1
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      e, a            ; phase 0
+        ld      a, c
+        cpl
+        ld      c, a            ; C = ~m
+        pop     af
+        ld      b, a
+        ld      a, (ts_ph)
+        jr      c, dsh
+        or      a, a            ; G >= 1: enter the loop at ph
+        jr      z, g0
+        dec     a
+        jr      z, g1
+        dec     a
+        jr      z, g2
+        jr      g3
+g0:     ld      a, (hl)
         and     a, c
         or      a, e
         ld      (hl), a
         inc     hl
-        ld      a, (hl)
+g1:     ld      a, (hl)
         and     a, c
         OR_IXH
         ld      (hl), a
         inc     hl
-        ld      a, (hl)
+g2:     ld      a, (hl)
         and     a, c
         OR_IXL
         ld      (hl), a
         inc     hl
-        ld      a, (hl)
+g3:     ld      a, (hl)
         and     a, c
         or      a, d
         ld      (hl), a
         inc     hl
-        djnz    8$
+        djnz    g0
         DEC_IYL
-        jr      nz, 8$
-        pop     de
-7$:     ld      a, (ts_tail)    ; the columns after the groups
+        jr      nz, g0
+        LD_A_IYH                ; T columns left, from phase 0
         or      a, a
         jp      z, step
-        ld      e, a
-        ld      a, (ts_m)
         ld      b, a
-        call    fbits
-        jp      step
-
-;; fbits: E >= 1 columns from HL, bit by bit: D's bit 7 (rotated in) is
-;; the column's pattern bit; B = m, C = ~m
-fbits:  ld      a, (hl)
+        jr      d0
+dsh:    or      a, a            ; G = 0: n columns from ph (ph + n <= 3)
+        jr      z, d0
+        dec     a
+        jr      z, d1
+        jr      d2
+d0:     ld      a, (hl)         ; (never past phase 2 here)
         and     a, c
-        rlc     d
-        jr      nc, 1$
-        or      a, b
-1$:     ld      (hl), a
+        or      a, e
+        ld      (hl), a
         inc     hl
-        dec     e
-        jr      nz, fbits
-        ret
+        dec     b
+        jp      z, step
+d1:     ld      a, (hl)
+        and     a, c
+        OR_IXH
+        ld      (hl), a
+        inc     hl
+        dec     b
+        jp      z, step
+d2:     ld      a, (hl)
+        and     a, c
+        OR_IXL
+        ld      (hl), a
+        jp      step
