@@ -24,54 +24,8 @@
 
 #define ZERO r15
 
-/* d = eye component - 16 v component (X advances to the next r8_s32);
- * out of range: to `out` */
-.macro DIFF dl, dh
-    RD(\dl)
-    RD(\dh)
-    movw  r16, \dl
-    subi  r16, 0x01
-    sbci  r17, 0xFC         /* v + 1023 */
-    cpi   r16, 0xFF
-    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
-    brcc  out
-    swap  \dh               /* v << 4 (fits: |v| <= 1023) */
-    swap  \dl
-    andi  \dh, 0xF0
-    eor   \dh, \dl
-    andi  \dl, 0xF0
-    eor   \dh, \dl
-    ld    r16, X+
-    ld    r17, X
-    adiw  r26, 3
-    sub   r16, \dl
-    sbc   r17, \dh
-    movw  \dl, r16
-.endm
+#include "facemac.h"
 
-/* the sum += n component (r17:r16, read here) * d, both signed 16 */
-.macro ACC dl, dh
-    RD(r16)
-    RD(r17)
-    mul   r16, \dl          /* u x u, at byte 0 */
-    add   r24, r0
-    adc   r25, r1
-    adc   r26, ZERO
-    adc   r27, ZERO
-    muls  r17, \dh          /* s x s, at byte 2 */
-    add   r26, r0
-    adc   r27, r1
-    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
-    sbc   r27, ZERO         /* the sign extension: -2^24 */
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu \dh, r16          /* s x u, at byte 1 */
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-.endm
 
     .section .text.r8k_cull,"ax",@progbits
     .global r8k_cull
@@ -82,9 +36,9 @@ r8k_cull:
     push  r17
     movw  r26, r20          /* X = eye */
     movw  r30, r22          /* Z = v (flash) */
-    DIFF  r18, r19
-    DIFF  r20, r21
-    DIFF  r22, r23
+    DIFF  r18, r19, out
+    DIFF  r20, r21, out
+    DIFF  r22, r23, out
     rjmp  dot
 out:
     ldi   r24, 0xFF         /* -1: the caller's 32-bit path */

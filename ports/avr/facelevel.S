@@ -27,29 +27,8 @@
 
 #define ZERO r15
 
-/* the sum += n component (r17:r16, read here) * l, both signed 16 */
-.macro ACC dl, dh
-    RD(r16)
-    RD(r17)
-    mul   r16, \dl          /* u x u, at byte 0 */
-    add   r24, r0
-    adc   r25, r1
-    adc   r26, ZERO
-    adc   r27, ZERO
-    muls  r17, \dh          /* s x s, at byte 2 */
-    add   r26, r0
-    adc   r27, r1
-    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
-    sbc   r27, ZERO         /* the sign extension: -2^24 */
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu \dh, r16          /* s x u, at byte 1 */
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-.endm
+#include "facemac.h"   /* ACC: the sum += n component * l */
+
 
     .section .text.r8k_level,"ax",@progbits
     .global r8k_level
