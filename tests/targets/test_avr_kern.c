@@ -384,13 +384,14 @@ static void test_zsum_random(void)
 static const r8_face fw_faces[] R8_FLASH = {
     KC_64(FW_F, 0), KC_16(FW_F, 64), KC_16(FW_F, 80)
 };
-static r8_s16 fw_sv[2][FW_NV * 4];
 static r8_s16 fw_tf[FW_NV][2];        /* what r8_tf_vertex writes */
 #define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
-static r8_u16 fw_next[2][FW_NID];
-static r8_u8 fw_slot[2][FW_NID];
-/* the heads (64 keys) and ftop in band_ref (the test's statics fill the
- * 1284P's SRAM: the stack needs the room) */
+/* the heads (64 keys) and ftop in band_ref, the vertices, links and
+ * slots in band_asm (the test's statics fill the 1284P's SRAM: the
+ * stack needs the room; the walk test uses neither band otherwise) */
+static r8_s16 (*fw_sv)[FW_NV * 4];
+static r8_u16 (*fw_next)[FW_NID];
+static r8_u8 (*fw_slot)[FW_NID];
 static r8_u16 (*fw_heads)[64];
 static r8_u8 (*fw_ftop)[FW_NID];
 static r8_fwpk fw_pk[2];               /* painter's keys (one per walk) */
@@ -430,6 +431,9 @@ static void test_fwalk_random(void)
     unsigned long i, hit[4] = {0, 0, 0, 0};
     fw_heads = (r8_u16 (*)[64])(void *)band_ref;
     fw_ftop = (r8_u8 (*)[FW_NID])(void *)(band_ref + sizeof(r8_u16[2][64]));
+    fw_sv = (r8_s16 (*)[FW_NV * 4])(void *)band_asm;
+    fw_next = (r8_u16 (*)[FW_NID])(void *)(band_asm + sizeof(r8_s16[2][FW_NV * 4]));
+    fw_slot = (r8_u8 (*)[FW_NID])(void *)(band_asm + sizeof(r8_s16[2][FW_NV * 4]) + sizeof(r8_u16[2][FW_NID]));
     for (i = 0; i < 1500; i++) {
         r8_fwalk w[2];
         r8_vec3l eye;
