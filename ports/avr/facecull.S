@@ -46,25 +46,7 @@ out:
     rjmp  done
 dot:
     movw  r30, r24          /* Z = n (flash) */
-    clr   ZERO
-    RD(r16)                 /* the first product sets the sum */
-    RD(r17)
-    mul   r16, r18
-    movw  r24, r0
-    muls  r17, r19
-    movw  r26, r0
-    mulsu r17, r18
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r19, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    ACC   r20, r21
-    ACC   r22, r23
+    DOT3                    /* r27:r24 = n . d (facemac.h) */
     mov   r0, r24           /* > 0: not zero and the sign clear */
     or    r0, r25
     or    r0, r26

@@ -50,25 +50,7 @@ r8k_level:
     ld    r22, X+
     ld    r23, X
     movw  r30, r24          /* Z = n (flash) */
-    clr   ZERO
-    RD(r16)                 /* the first product sets the sum */
-    RD(r17)
-    mul   r16, r18
-    movw  r24, r0
-    muls  r17, r19
-    movw  r26, r0
-    mulsu r17, r18
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r19, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    ACC   r20, r21
-    ACC   r22, r23
+    DOT3                    /* r27:r24 = n . d (facemac.h) */
     /* i = d > 0 ? min(d >> 14, 16384) : 0 in r23:r22 (d < 3 2^28) */
     clr   r22
     clr   r23

@@ -51,3 +51,28 @@
     adc   r26, r1
     adc   r27, ZERO
 .endm
+
+/* the sum r27:r24 = n . d, both signed 16: n read through RD from Z,
+ * d in r19:r18, r21:r20, r23:r22 (the first product sets the sum);
+ * ZERO cleared here, r1 left dirty */
+.macro DOT3
+    clr   ZERO
+    RD(r16)                 /* the first product sets the sum */
+    RD(r17)
+    mul   r16, r18
+    movw  r24, r0
+    muls  r17, r19
+    movw  r26, r0
+    mulsu r17, r18
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    mulsu r19, r16
+    sbc   r27, ZERO
+    add   r25, r0
+    adc   r26, r1
+    adc   r27, ZERO
+    ACC   r20, r21
+    ACC   r22, r23
+.endm

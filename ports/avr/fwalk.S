@@ -141,25 +141,7 @@ cout:
     rjmp  other             /* -1: the caller's 32-bit test */
 dot:
     movw  r30, r14          /* Z = n */
-    clr   ZERO
-    RD(r16)                 /* the first product sets the sum */
-    RD(r17)
-    mul   r16, r18
-    movw  r24, r0
-    muls  r17, r19
-    movw  r26, r0
-    mulsu r17, r18
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r19, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    ACC   r20, r21
-    ACC   r22, r23
+    DOT3                    /* r27:r24 = n . d (facemac.h) */
     clr   r1
     sbrc  r27, 7
     rjmp  face              /* < 0: a back face */
