@@ -110,13 +110,29 @@ r8k_edge:                     /* (cold on AVR: r8k_estart enters the body) */
     cp    r18, r20
     cpc   r19, r21
     brsh  2f
-    clr   r26               /* udx < dy: q = 0, rd = udx */
-    clr   r27
-    rjmp  6f
+    ldi   r26, 0            /* udx < dy: q = 0, rd = udx */
+    ldi   r27, 0
+    brtc  7f
+    ldi   r26, 0xFF         /* (dx < 0: q = -1) */
+    ldi   r27, 0xFF
+    rjmp  64f
 .Lwide2:                      /* after the division: r1 back to 0 */
     clr   r1
     rjmp  .Lwide
-2:  movw  r0, r20           /* divisor D = dy */
+2:  sub   r18, r20          /* udx < 2 dy: q = 1, rd = udx - dy */
+    sbc   r19, r21
+    cp    r18, r20
+    cpc   r19, r21
+    brsh  25f
+    ldi   r26, 1
+    ldi   r27, 0
+    brtc  7f
+    ldi   r26, 0xFE         /* (dx < 0: q = -2) */
+    ldi   r27, 0xFF
+    rjmp  64f
+25: add   r18, r20          /* else udx back, the general division */
+    adc   r19, r21
+    movw  r0, r20           /* divisor D = dy */
     ldi   r26, 0xFF         /* all ones, the sentinel 0 at bit 15 */
     ldi   r27, 0x7F
 3:  lsl   r0                /* D doubles while 2 D <= udx */
@@ -152,7 +168,7 @@ r8k_edge:                     /* (cold on AVR: r8k_estart enters the body) */
     brne  .+4
     cpi   r27, 0xF8
     breq  .Lwide2
-    com   r18               /* rd = dy - 1 - rd = dy + ~rd */
+64: com   r18               /* rd = dy - 1 - rd = dy + ~rd */
     com   r19
     add   r18, r20
     adc   r19, r21
@@ -177,14 +193,8 @@ r8k_edge:                     /* (cold on AVR: r8k_estart enters the body) */
     add   r22, r0
     adc   r23, r1
     mov   r25, r22          /* (pl) */
-    brvc  22f
-    sec                     /* X beyond 16 bits: the first shift */
-    sbrc  r23, 7            /* brings in !N, the true sign */
-    clc
-    ror   r23
-    ror   r22
-    rjmp  21f
-22: asr   r23
+    brvs  22f
+    asr   r23
     ror   r22
 21: asr   r23
     ror   r22
@@ -237,6 +247,12 @@ r8k_edge:                     /* (cold on AVR: r8k_estart enters the body) */
 30: movw  r26, r20          /* v = 0: err = dy - 1 */
     sbiw  r26, 1
     rjmp  32b
+22: sec                     /* X beyond 16 bits: the first shift */
+    sbrc  r23, 7            /* brings in !N, the true sign */
+    clc
+    ror   r23
+    ror   r22
+    rjmp  21b
     .size r8k_edge, .-r8k_edge
 
 /* r8k_estart (src/r8scan.h): scan.c's edge_start, its C reference.
