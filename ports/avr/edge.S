@@ -18,10 +18,12 @@
  *   v = dy pl + s0 rd (< 30 dy): the reference's loop on
  *     u = v + 16 dy - 1 adds ceil(v / 16 dy) (0..2) to val and leaves
  *     err = ((v + 16 dy - 1) mod 16 dy) >> 4: dy - 1 for v = 0; else,
- *     w = v - 1 (< 32 dy): val + 1, and once more (w -= 16 dy) if
- *     w >= 16 dy; err = w >> 4
+ *     w = v - 1 (< 32 dy), e = w >> 4: val + 1, and once more if
+ *     e >= dy (w >= 16 dy); err = e, or e - dy = (w - 16 dy) >> 4
  *
- * The division walks the quotient's bits from its top one, as the
+ * Quotients 0 and 1 (udx < 2 dy: most edges of a mesh; the torus: 381
+ * and 164 of 720) take no division loop.  Otherwise the division walks
+ * the quotient's bits from its top one, as the
  * reference's udivmod: the divisor doubles while it stays <= udx, then
  * one restoring step per doubling (+1).  The quotient register starts
  * all ones but a 0 sentinel at bit 15 that moves right per doubling;
@@ -31,10 +33,12 @@
  * doubled divisor never overflows.
  *
  * Registers (avr-gcc ABI): arguments it r25:r24, a r23:r22, b r21:r20;
- * returns r25:r24.  Z = it, r25:r24 = ay (y0 at the end), r23:r22 = ax,
- * r21:r20 = dy, r19:r18 = udx then rd, then s0 and pl, then 16 dy (rd is
- * read back from it->r), r27:r26 = q, then v and w, r1:r0 = divisor,
- * then MUL products; T = dx < 0.
+ * returns r25:r24.  The public entry loads the four coordinates, keeps
+ * ay on the stack and calls the body (.Ledge_body, which r8k_estart
+ * enters too), then computes y0 from ay.  In the body: Z = it, r25:r24 =
+ * ay, then s0 (r24) and pl (r25), r23:r22 = ax, then X and val, r21:r20
+ * = dy, r19:r18 = udx then rd, r27:r26 = q, then v, w and err, r1:r0 =
+ * divisor, then MUL products; T = dx < 0, and on return T = wide.
  * r1 is cleared before returning.
  *
  * r8_interp offsets (avr-gcc, no padding): val 0, q 2, err 4, r 6, den 8.
@@ -264,17 +268,20 @@ r8k_edge:                     /* (cold on AVR: r8k_estart enters the body) */
  * below row y (with y < s->ybot one is found within n - 1 steps, so the
  * reference's guard never stops the walk), set e->vi = to, e->yend =
  * that row, then the edge's DDA from a = s->vp[from] to b = s->vp[to]
- * through r8k_edge (above, by RCALL past its loads: the same section).
- * The rare cases go to the reference's r8_edge_rare(e, a, b, y)
- * (scan.c): an empty edge (b[1] <= a[1]) and R8_EDGE_WIDE (r8k_edge
- * leaves *it as it was: a and b are parked in it->val and it->q for
- * that); an edge whose first row is above y is stepped down here
- * (R8_INTERP_STEP per row).
+ * through r8k_edge's body (above, by RCALL: the same section).  The
+ * rare cases go to the reference's r8_edge_rare(e, a, b, y) (scan.c),
+ * which does what the reference does after r8k_edge: an edge whose
+ * first row R8_ROW_OF(ay) is above y (tested before the DDA, so that y
+ * need not outlive it; rare: the torus has none), an empty edge (b[1]
+ * <= a[1]) and R8_EDGE_WIDE (the body leaves *it as it was: a, b and y
+ * are parked in it->val, it->q and it->err for that).  No register is
+ * saved.
  *
  * Registers: s r25:r24, e r23:r22, y r21:r20, from r18; r19 = to, r0 =
- * n, T = the left chain, X = a row, Z = a vertex; then Y = e and
- * r17:r16 = y (saved), then r8k_edge's registers: r23:r22 = ax, r25:r24
- * = ay, r19:r18 = bx, r21:r20 = by, Z = it.
+ * n, T = the left chain, X = a row, Z = a vertex; then Z = e, r1:r0 = b
+ * (r1 cleared before the body), r25:r24 = &s->vp[from], a; then the
+ * body's registers: r23:r22 = ax, r25:r24 = ay, r19:r18 = bx, r21:r20 =
+ * by, Z = it = e.
  * r8_scanx offsets: vp 0, n 18, l 25, r 38; r8_edge: x 0, yend 10,
  * vi 12 (scan.c asserts them). */
     .section .text.r8k_edge,"ax",@progbits
