@@ -874,7 +874,7 @@ static void test_estart_random(void)
 {
     static r8_s16 vr[R8_SCAN_MAXV][2], va[R8_SCAN_MAXV][2];
     static r8_scanx sr, sa;
-    unsigned long i, n_left = 0, n_walk = 0, n_empty = 0, n_wide = 0, n_step = 0, n_2048 = 0;
+    unsigned long i, n_left = 0, n_walk = 0, n_empty = 0, n_wide = 0, n_step = 0, n_2048 = 0, n_a2048 = 0;
     for (i = 0; i < ESTART_CASES; i++) {
         unsigned n = 3 + rndn(R8_SCAN_MAXV - 2), k, c = rndn(16);
         r8_s16 ymax = R8_S16_MIN, ymin = 32767, y, ybot, ytop, cy = rnds(-3000, 3000);
@@ -891,9 +891,9 @@ static void test_estart_random(void)
             } else if (c < 13) {            /* wide: tall, or x far out */
                 x = rndn(2) ? rnds(-16400, 16400) : rnds(-400, 2400);
                 yy = rnds(-1500, 3000);
-            } else if (c < 14) {            /* near the row limit */
-                x = rnds(-400, 2400);
-                yy = rnds(32600, 32767);
+            } else if (c < 14) {            /* near the row limit (half */
+                x = rnds(-400, 2400);       /* of them past 32757) */
+                yy = rndn(2) ? rnds(32600, 32767) : rnds(32758, 32767);
             } else {                        /* anything within +-3000 of cy */
                 x = (r8_s16)rnd();
                 yy = (r8_s16)(cy + rnds(-3000, 3000));
@@ -950,6 +950,8 @@ static void test_estart_random(void)
             }
             if (er->yend == 2048)
                 n_2048++;
+            if (b[1] > a[1] && R8_ROW_OF(a[1]) == 2048)
+                n_a2048++;              /* (edge.S's first-row test: past 32767) */
         }
     }
     unity_print("r8k_estart: left ");
@@ -964,8 +966,11 @@ static void test_estart_random(void)
     unity_print_long((long)n_step);
     unity_print(", row 2048 ");
     unity_print_long((long)n_2048);
+    unity_print(", from row 2048 ");
+    unity_print_long((long)n_a2048);
     unity_print("\n");
-    if (n_left < 500 || n_walk < 200 || n_empty < 20 || n_wide < 50 || n_step < 200 || n_2048 < 20)
+    if (n_left < 500 || n_walk < 200 || n_empty < 20 || n_wide < 50 || n_step < 200 || n_2048 < 20
+        || n_a2048 < 5)
         TEST_FAIL_MESSAGE("r8k_estart: a class of cases too rare to mean anything");
 }
 
