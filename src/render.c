@@ -1373,42 +1373,66 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         st->sused = 0;
     }
 #endif
-#if R8_W_PAINTER
-    if (st->method == R8_VIS_PAINTER) {
+    {
+        /* painter's: the draw list, skipping the faces that start lower
+         * down, dropping the finished ones.  Else merge the faces going
+         * on from above (st->first) with the band's bucket, both in
+         * scene order; those that go on form the next band's list.  (One
+         * loop, one call of draw_face: inlined.) */
         r8_u16 b = band_of(st, y0, r->cfg.band);
+#if R8_W_PAINTER
+        r8_u8 paint = st->method == R8_VIS_PAINTER;
         r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
-        for (g = *link; g != (r8_fid)R8_FID_END; g = *link) {
-            if (st->ftop && st->ftop[g] > b8) {
-                link = &st->next[g];      /* starts lower down */
+#endif
+        r8_fid a = head, n = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
+        if (!paint)
+#endif
+            if (b < st->nbands)
+                n = st->heads[b];
+        for (;;) {
+            int d;
+#if R8_W_PAINTER
+            if (paint) {
+                g = *link;
+                if (g == (r8_fid)R8_FID_END)
+                    break;
+                if (st->ftop && st->ftop[g] > b8) {
+                    link = &st->next[g];  /* starts lower down */
+                    continue;
+                }
+            } else
+#endif
+            {
+                if (a == (r8_fid)R8_FID_END && n == (r8_fid)R8_FID_END)
+                    break;
+                if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
+                    g = a;
+                    a = st->next[a];
+                } else {
+                    g = n;
+                    n = st->next[n];
+                }
+            }
+            d = draw_face(st, g, y0, y1, fb);
+#if R8_W_PAINTER
+            if (paint) {
+                if (d == 1)
+                    *link = st->next[g];  /* finished: leaves the list */
+                else
+                    link = &st->next[g];
                 continue;
             }
-            if (draw_face(st, g, y0, y1, fb) == 1)
-                *link = st->next[g];      /* finished: leaves the list */
-            else
-                link = &st->next[g];
-        }
-    } else
 #endif
-    {
-        /* merge the faces going on from above (st->first) with the band's
-         * bucket, both in scene order; those that go on form the next
-         * band's list */
-        r8_u16 b = band_of(st, y0, r->cfg.band);
-        r8_fid a = head, n = b < st->nbands ? st->heads[b] : (r8_fid)R8_FID_END;
-        while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
-            if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
-                g = a;
-                a = st->next[a];
-            } else {
-                g = n;
-                n = st->next[n];
-            }
-            if (draw_face(st, g, y0, y1, fb) != 1) {
+            if (d != 1) {
                 *link = g;
                 link = &st->next[g];
             }
         }
-        *link = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
+        if (!paint)
+#endif
+            *link = (r8_fid)R8_FID_END;
     }
     st->first = head;
 #ifndef R8_NO_SBUF
