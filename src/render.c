@@ -1383,6 +1383,8 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 #if R8_W_PAINTER
         r8_u8 paint = st->method == R8_VIS_PAINTER;
         r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
+        const r8_u8 *ftop = st->ftop;
+        r8_fid *nx = st->next;
 #endif
         r8_fid a = head, n = (r8_fid)R8_FID_END;
 #if R8_W_PAINTER
@@ -1395,12 +1397,13 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 #if R8_W_PAINTER
             if (paint) {
                 g = *link;
+                if (ftop)                 /* past those starting lower down */
+                    while (g != (r8_fid)R8_FID_END && ftop[g] > b8) {
+                        link = &nx[g];
+                        g = *link;
+                    }
                 if (g == (r8_fid)R8_FID_END)
                     break;
-                if (st->ftop && st->ftop[g] > b8) {
-                    link = &st->next[g];  /* starts lower down */
-                    continue;
-                }
             } else
 #endif
             {
