@@ -1392,7 +1392,11 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 #endif
             if (b < st->nbands)
                 n = st->heads[b];
+#if R8_W_PAINTER
         for (;;) {
+#else
+        while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
+#endif
             int d;
 #if R8_W_PAINTER
             if (paint) {
@@ -1407,8 +1411,10 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             } else
 #endif
             {
+#if R8_W_PAINTER
                 if (a == (r8_fid)R8_FID_END && n == (r8_fid)R8_FID_END)
                     break;
+#endif
                 if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
                     g = a;
                     a = st->next[a];
