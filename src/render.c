@@ -35,6 +35,16 @@
 #define R8_FAST_ONLY 1
 #endif
 
+/* AVR, the fused fill alone into page-1 bands: a face's band goes
+ * straight to r8k_scanband (src/r8scan.h; ports/avr/trap.S), and a
+ * mesh face starts with its vertex pointers, rows and top vertex found
+ * in one pass (face_begin), without r8_scanx_fill and r8_scanx_begin
+ * in between (the same rows: scan.c). */
+#if defined(__AVR__) && defined(R8_FAST_ONLY) && defined(R8_PAGE1_ONLY) && !R8_W_TEXTURE
+#define R8_BANDK 1
+#include "r8scan.h"
+#endif
+
 #if R8_W_TEXTURE
 #define R8_SHADE_MAX R8_SHADE_TEXTURE
 #else
@@ -1143,6 +1153,71 @@ static void draw_span(r8_state *st, r8_fb *fb, r8_u8 level, r8_fid g, const r8_s
 }
 #endif
 
+#ifdef R8_BANDK
+/* face_setup and r8_scanx_begin for mesh face g (< st->nfaces) in one
+ * pass: c's vertex pointers, its rows from max(its top, y0) and both
+ * edges; 0 when it has no row from y0 on (c->ybot <= c->y).  With the
+ * painter's check (a face starting below y1: 2) as draw_face does it. */
+static int face_begin(const r8_state *st, r8_fid g, r8_scanx *c, r8_s16 y0, r8_s16 y1, r8_u8 *oi)
+{
+    const r8_scene *sc = st->scene;
+    const r8_objx *o;
+    const r8_face *fc;
+    const r8_s16 *base, *p;
+    const r8_u8 *fv;
+    r8_u8 i = 0, n, j, top = 0;
+    r8_s16 ymin, ymax, y;
+    while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
+        i++;
+    *oi = i;
+    o = &st->obj[i];
+    fc = &sc->objects[i].mesh->faces[g - o->fbase];
+    base = st->sv + 2u * o->vbase;
+    n = R8_RDU8(&fc->n);
+    if (n < 3)
+        return 0;              /* (r8_scanx_begin: no rows) */
+    fv = fc->v;
+    p = base + 2u * R8_RDU8(fv);
+    c->vp[0] = p;
+    ymin = ymax = p[1];
+    for (j = 1; j < n; j++) {
+        r8_s16 vy;
+        p = base + 2u * R8_RDU8(fv + j);
+        c->vp[j] = p;
+        vy = p[1];
+        if (vy < ymin) {
+            ymin = vy;
+            top = j;
+        }
+        if (vy > ymax)
+            ymax = vy;
+    }
+#if R8_W_PAINTER
+    if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
+        r8_s16 t, b;
+        face_rows(st, c->vp, n, &t, &b);
+        if (t >= y1)
+            return 2;          /* starts lower down */
+    }
+#else
+    (void)y1;
+#endif
+    c->n = n;
+    c->backface = 0;
+    c->front = 0;
+    c->ybot = R8_ROW_OF(ymax);
+    y = R8_ROW_OF(ymin);
+    if (y < y0)
+        y = y0;
+    c->y = y;
+    if (y >= c->ybot)
+        return 0;
+    r8k_estart(c, &c->l, y, top);
+    r8k_estart(c, &c->r, y, top);
+    return 1;
+}
+#endif
+
 /* Draw face g's rows in [y0, y1).  Returns 1 when the face is finished
  * (or a back face), 0 when it goes on below y1, 2 when it starts below. */
 static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
@@ -1168,19 +1243,28 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         if (k != R8_NO_SLOT)
             e = (r8_acthead *)(void *)ENTRY(st, k);
 #endif
-        n = face_setup(st, g, e->c.vp, &oi);
-#if R8_W_PAINTER
-        if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
-            /* (with ftop, r8_render_band has already skipped the faces
-             * that start lower down) */
-            r8_s16 top, bot;
-            face_rows(st, e->c.vp, n, &top, &bot);
-            if (top >= y1)
-                return 2;          /* starts lower down */
-        }
+#ifdef R8_BANDK
+        if (g < st->nfaces) {
+            int b = face_begin(st, g, &e->c, y0, y1, &oi);
+            if (b != 1)
+                return b ? 2 : 1;  /* starts lower down; no row from y0 on */
+        } else
 #endif
-        if (!r8_scanx_begin(&e->c, n, y0))
-            return 1;              /* nothing from this band on */
+        {
+            n = face_setup(st, g, e->c.vp, &oi);
+#if R8_W_PAINTER
+            if (st->method == R8_VIS_PAINTER && (!st->ftop || st->ftop[g] == 255)) {
+                /* (with ftop, r8_render_band has already skipped the faces
+                 * that start lower down) */
+                r8_s16 top, bot;
+                face_rows(st, e->c.vp, n, &top, &bot);
+                if (top >= y1)
+                    return 2;          /* starts lower down */
+            }
+#endif
+            if (!r8_scanx_begin(&e->c, n, y0))
+                return 1;              /* nothing from this band on */
+        }
 #ifndef R8_NO_POOL
         if (k != R8_NO_SLOT) {
             st->pool_free = e->level;       /* off the free list */
@@ -1222,7 +1306,19 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
             draw_span(st, fb, e->level, g, &sp);
     } else
 #endif
+#ifdef R8_BANDK
+    {
+        /* r8_scanx_fill's page-1 case (y1 is never below the band) */
+        r8_s16 lim = c->ybot < y1 ? c->ybot : y1;
+        if (c->y >= y0 && (!st->judd || c->front)) {
+            if (c->y < lim)
+                r8k_scanband(c, fb, lim, e->level);
+        } else
+            r8_scanx_fill(c, y1, st->judd, fb, e->level);
+    }
+#else
         r8_scanx_fill(c, y1, st->judd, fb, e->level);
+#endif
     done = c->y >= c->ybot || c->backface;
 #ifndef R8_NO_POOL
     if (done && k != R8_NO_SLOT) {
@@ -1277,42 +1373,75 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         st->sused = 0;
     }
 #endif
-#if R8_W_PAINTER
-    if (st->method == R8_VIS_PAINTER) {
+    {
+        /* painter's: the draw list, skipping the faces that start lower
+         * down, dropping the finished ones.  Else merge the faces going
+         * on from above (st->first) with the band's bucket, both in
+         * scene order; those that go on form the next band's list.  (One
+         * loop, one call of draw_face: inlined.) */
         r8_u16 b = band_of(st, y0, r->cfg.band);
+#if R8_W_PAINTER
+        r8_u8 paint = st->method == R8_VIS_PAINTER;
         r8_u8 b8 = (r8_u8)(b > 255 ? 255 : b);
-        for (g = *link; g != (r8_fid)R8_FID_END; g = *link) {
-            if (st->ftop && st->ftop[g] > b8) {
-                link = &st->next[g];      /* starts lower down */
+        const r8_u8 *ftop = st->ftop;
+        r8_fid *nx = st->next;
+#endif
+        r8_fid a = head, n = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
+        if (!paint)
+#endif
+            if (b < st->nbands)
+                n = st->heads[b];
+#if R8_W_PAINTER
+        for (;;) {
+#else
+        while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
+#endif
+            int d;
+#if R8_W_PAINTER
+            if (paint) {
+                g = *link;
+                if (ftop)                 /* past those starting lower down */
+                    while (g != (r8_fid)R8_FID_END && ftop[g] > b8) {
+                        link = &nx[g];
+                        g = *link;
+                    }
+                if (g == (r8_fid)R8_FID_END)
+                    break;
+            } else
+#endif
+            {
+#if R8_W_PAINTER
+                if (a == (r8_fid)R8_FID_END && n == (r8_fid)R8_FID_END)
+                    break;
+#endif
+                if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
+                    g = a;
+                    a = st->next[a];
+                } else {
+                    g = n;
+                    n = st->next[n];
+                }
+            }
+            d = draw_face(st, g, y0, y1, fb);
+#if R8_W_PAINTER
+            if (paint) {
+                if (d == 1)
+                    *link = st->next[g];  /* finished: leaves the list */
+                else
+                    link = &st->next[g];
                 continue;
             }
-            if (draw_face(st, g, y0, y1, fb) == 1)
-                *link = st->next[g];      /* finished: leaves the list */
-            else
-                link = &st->next[g];
-        }
-    } else
 #endif
-    {
-        /* merge the faces going on from above (st->first) with the band's
-         * bucket, both in scene order; those that go on form the next
-         * band's list */
-        r8_u16 b = band_of(st, y0, r->cfg.band);
-        r8_fid a = head, n = b < st->nbands ? st->heads[b] : (r8_fid)R8_FID_END;
-        while (a != (r8_fid)R8_FID_END || n != (r8_fid)R8_FID_END) {
-            if (n == (r8_fid)R8_FID_END || (a != (r8_fid)R8_FID_END && a < n)) {
-                g = a;
-                a = st->next[a];
-            } else {
-                g = n;
-                n = st->next[n];
-            }
-            if (draw_face(st, g, y0, y1, fb) != 1) {
+            if (d != 1) {
                 *link = g;
                 link = &st->next[g];
             }
         }
-        *link = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
+        if (!paint)
+#endif
+            *link = (r8_fid)R8_FID_END;
     }
     st->first = head;
 #ifndef R8_NO_SBUF
