@@ -15,6 +15,7 @@
  *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
  *   r8k_zsum    a face's painter's depth sum (R8_ASM_ZSUM)
  *   r8k_fwalk   an object's faces: cull, screen box, rows (R8_ASM_FWALK)
+ *   r8k_vertex  a model vertex to its screen vertex (R8_ASM_VERTEX)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -170,5 +171,11 @@ void r8k_fwpaint(void);
 struct r8_state;
 struct r8_objx;
 void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
+/* r8k_fwalk's vertex call on AVR (fwalk.S): r8_tf_vertex(st, o, mv, g)
+ * exactly; the kernel (ports/avr/vertex.S, R8_ASM_VERTEX) does the
+ * screen vertices of 4 bytes (vsh 1) with small model coordinates in
+ * one piece, and hands every other case to r8_tf_vertex.  Reference:
+ * src/transform.c. */
+void r8k_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
 
 #endif

@@ -226,6 +226,25 @@ void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
 #endif
 }
 
+/* r8k_vertex (r8kern.h): the reference is r8_tf_vertex itself (not on
+ * the 6502 and Z80, whose face loop calls r8_tf_vertex). */
+#if !defined(R8_ASM_VERTEX) && !defined(__SDCC) && !defined(__CC65__)
+void r8k_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    r8_tf_vertex(st, o, mv, g);
+}
+#elif defined(R8_ASM_VERTEX)
+#include <stddef.h>
+/* AVR: ports/avr/vertex.S reads these offsets */
+R8_CASSERT(vertex_cam_at_2, offsetof(r8_state, cam) == 2);
+R8_CASSERT(vertex_vsh_at_26, offsetof(r8_state, vsh) == 26);
+R8_CASSERT(vertex_sv_at_37, offsetof(r8_state, sv) == 37);
+R8_CASSERT(vertex_zn16_at_83, offsetof(r8_state, zn16) == 83);
+R8_CASSERT(vertex_t_at_18, offsetof(r8_objx, t) == 18 && offsetof(r8_objx, m) == 0);
+R8_CASSERT(vertex_proj, offsetof(r8_proj, guard) == 10 && offsetof(r8_proj, fn) == 12 &&
+                        offsetof(r8_proj, fsh) == 14 && offsetof(r8_proj, cy) == 2);
+#endif
+
 /* Every vertex of every shown object, or (lazy) only marked R8_VX_TODO:
  * the frame loop then transforms the vertices of the faces it keeps. */
 void r8_tf_vertices(r8_state *st, int lazy)
