@@ -173,9 +173,12 @@ struct r8_objx;
 void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
 /* r8k_fwalk's vertex call on AVR (fwalk.S): r8_tf_vertex(st, o, mv, g)
  * exactly; the kernel (ports/avr/vertex.S, R8_ASM_VERTEX) does the
- * screen vertices of 4 bytes (vsh 1) with small model coordinates in
- * one piece, and hands every other case to r8_tf_vertex.  Reference:
- * src/transform.c. */
+ * vertices without Gouraud (vsh 1, or vsh 2 with the depth through
+ * r8k_vdepth) with small model coordinates in one piece, and hands
+ * every other case to r8_tf_vertex.  Reference: src/transform.c. */
 void r8k_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
+/* AVR (vertex.S): out[2] of a vsh-2 vertex from its reciprocal m, e
+ * (r8_tf_depth when st->attrs has R8_ATTR_D, else 0; src/transform.c) */
+r8_s16 r8k_vdepth(const struct r8_state *st, r8_u16 m, r8_s8 e);
 
 #endif

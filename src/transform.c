@@ -237,12 +237,20 @@ void r8k_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
 #include <stddef.h>
 /* AVR: ports/avr/vertex.S reads these offsets */
 R8_CASSERT(vertex_cam_at_2, offsetof(r8_state, cam) == 2);
-R8_CASSERT(vertex_vsh_at_26, offsetof(r8_state, vsh) == 26);
+R8_CASSERT(vertex_vsh_at_26, offsetof(r8_state, vsh) == 26 && offsetof(r8_state, attrs) == 25);
 R8_CASSERT(vertex_sv_at_37, offsetof(r8_state, sv) == 37);
 R8_CASSERT(vertex_zn16_at_83, offsetof(r8_state, zn16) == 83);
 R8_CASSERT(vertex_t_at_18, offsetof(r8_objx, t) == 18 && offsetof(r8_objx, m) == 0);
 R8_CASSERT(vertex_proj, offsetof(r8_proj, guard) == 10 && offsetof(r8_proj, fn) == 12 &&
                         offsetof(r8_proj, fsh) == 14 && offsetof(r8_proj, cy) == 2);
+#endif
+#if defined(R8_ASM_VERTEX) && (R8_W_DEPTH || R8_W_TEXTURE)
+/* vertex.S's depth of a vsh-2 vertex, as r8_tf_camera sets out[2] (a
+ * build without depth or texture has vertex.S's weak r8k_vdepth) */
+r8_s16 r8k_vdepth(const r8_state *st, r8_u16 m, r8_s8 e)
+{
+    return st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
+}
 #endif
 
 /* Every vertex of every shown object, or (lazy) only marked R8_VX_TODO:

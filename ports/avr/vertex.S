@@ -2,31 +2,34 @@
  *
  *   void r8k_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g);
  *
- * r8_tf_vertex (src/transform.c) for the screen vertices of 4 bytes (vsh
- * 1: x, y, no depth, shade or texture), r8k_fwalk's per-vertex call
- * (fwalk.S): r8k_xform, r8_tf_camera's near test and r8k_project in one,
- * the camera point kept in registers, without the three calls, their
- * register saves and the C between them.  It takes the common case:
+ * r8_tf_vertex (src/transform.c) without Gouraud, r8k_fwalk's
+ * per-vertex call (fwalk.S): r8k_xform, r8_tf_camera's near test and
+ * r8k_project in one, the camera point kept in registers, without the
+ * three calls, their register saves and the C between them; for vsh 2
+ * (8-byte screen vertices) out[2] then comes from r8k_vdepth(st, m, e)
+ * (transform.c: the depth when st->attrs has R8_ATTR_D, else 0), m, e
+ * the reciprocal project.S gives.  It takes the common case:
  *
  *   - every model component a signed byte (xform.S's 16 x 8 rows);
  *   - camera x and y within 16 bits, z within [1, 65535] (after the
  *     near test: z < st->zn16 marks the vertex R8_VX_CLIP);
  *
- * and hands any other input, and vsh 2, to r8_tf_vertex unchanged
- * (which does the whole vertex again through the general kernels).
- * Bit for bit: the rows are xform.S's (floor((S + 512) / 1024) + t, S
- * exact in 32 bits), the projection project.S's for 16-bit x, y (its
- * steps 1 to 4; the reciprocal's *m, *e are not kept: vsh 1 has no
- * depth).  Reference: r8_tf_vertex (transform.c's r8k_vertex when
- * R8_ASM_VERTEX is not defined); tests/targets/test_avr_kern.c compares
- * the two on random inputs.  transform.c asserts the offsets below.
+ * and hands any other input, and Gouraud (vsh 2 with R8_ATTR_S), to
+ * r8_tf_vertex unchanged (which does the whole vertex again through the
+ * general kernels).  Bit for bit: the rows are xform.S's (floor((S +
+ * 512) / 1024) + t, S exact in 32 bits), the projection project.S's for
+ * 16-bit x, y (its steps 1 to 4).  Reference: r8_tf_vertex
+ * (transform.c's r8k_vertex when R8_ASM_VERTEX is not defined);
+ * tests/targets/test_avr_kern.c compares the two on random inputs.
+ * transform.c asserts the offsets below.
  *
  * Registers (avr-gcc ABI): st r25:r24, o r23:r22, mv r21:r20, g r19:r18.
  * Y = st, Z = o (then the table), r15:r14 = mv then x, r13:r12 = g then
  * the vertex's screen entry, r17:r16 = x then the reciprocal and kk,
- * r11:r10 = y.  The rows: vertex bytes r18, r20, r22; matrix entry
- * r21:r19; sum r26:r23:r25:r24 (bytes 3..0), zero r27.  Saves r10..r17,
- * r28, r29; clears r1.
+ * r11:r10 = y; T set for vsh 2 (then also r9:r8 = m, r21 = e, saved).
+ * The rows: vertex bytes r18, r20, r22; matrix entry r21:r19; sum
+ * r26:r23:r25:r24 (bytes 3..0), zero r27.  Saves r10..r17, r28, r29
+ * (and r8, r9 for vsh 2); clears r1.
  */
 #ifdef R8_NO_PROGMEM
 #define RDV(r) ld r, Z+
@@ -36,6 +39,7 @@
 
 /* r8_state, r8_objx, r8_proj offsets (avr-gcc; transform.c asserts) */
 #define ST_CAM   2
+#define ST_ATTRS 25
 #define ST_VSH  26
 #define ST_SV   37
 #define ST_ZN16 83
@@ -180,9 +184,13 @@
 r8k_vertex:
     movw  r30, r24
     ldd   r26, Z+ST_VSH
+    clt                     /* T: vsh 2 */
     cpi   r26, 1
     breq  1f
-    jmp   r8_tf_vertex      /* vsh 2: the C */
+    ldd   r26, Z+ST_ATTRS
+    sbrc  r26, 1            /* R8_ATTR_S: Gouraud, the C */
+    jmp   r8_tf_vertex
+    set
 1:  push  r10
     push  r11
     push  r12
@@ -193,7 +201,10 @@ r8k_vertex:
     push  r17
     push  r28
     push  r29
-    movw  r28, r24          /* Y = st */
+    brtc  1f
+    push  r8                /* vsh 2: m r9:r8, e r21 for the depth */
+    push  r9
+1:  movw  r28, r24          /* Y = st */
     movw  r12, r18          /* g */
     movw  r14, r20          /* mv */
     movw  r26, r22          /* o */
@@ -233,10 +244,14 @@ r8k_vertex:
     brne  2f
 1:  rjmp  .Lfall
 2:
-    lsl   r12               /* the entry: sv + 4 g */
+    lsl   r12               /* the entry: sv + 4 g (8 g: vsh 2) */
     rol   r13
     lsl   r12
     rol   r13
+    brtc  1f
+    lsl   r12
+    rol   r13
+1:
     ldd   r0, Y+ST_SV
     add   r12, r0
     ldd   r0, Y+ST_SV+1
@@ -305,6 +320,10 @@ r8k_vertex:
     rol   r27
     sub   r16, r31          /* m = t0 - that */
     sbc   r17, r27
+    brtc  1f
+    movw  r8, r16           /* vsh 2: m, e kept */
+    mov   r21, r26
+1:
     /* kk (r17:r16), k = sh - 1 (r27), L (r26), lim (r31:r30) */
     clr   r20
     ldd   r18, Y+ST_CAM+P_FN    /* k = m fn: r31:r30:r23:r22 */
@@ -381,8 +400,25 @@ r8k_vertex:
     std   Z+1, r15
     std   Z+2, r23
     std   Z+3, r24
-    rjmp  .Lret
+    brtc  .Lret1
+    /* vsh 2: out[2] = r8k_vdepth(st, m, e) (transform.c: the depth when
+     * st->attrs has R8_ATTR_D, else 0) */
+    movw  r24, r28
+    movw  r22, r8
+    mov   r20, r21
+    clr   r1
+    call  r8k_vdepth
+    movw  r30, r12
+    std   Z+4, r24
+    std   Z+5, r25
+    pop   r9
+    pop   r8
+    rjmp  .Lret1
 .Lret:
+    brtc  .Lret1
+    pop   r9
+    pop   r8
+.Lret1:
     clr   r1
     pop   r29
     pop   r28
@@ -412,7 +448,10 @@ r8k_vertex:
     movw  r20, r14
     movw  r18, r12
     clr   r1
-    pop   r29
+    brtc  1f
+    pop   r9
+    pop   r8
+1:  pop   r29
     pop   r28
     pop   r17
     pop   r16
@@ -424,3 +463,15 @@ r8k_vertex:
     pop   r10
     jmp   r8_tf_vertex
     .size r8k_vertex, .-r8k_vertex
+
+/* r8k_vdepth for builds without depth or texture (transform.c defines
+ * it otherwise): their screen vertices are 4 bytes, vsh 1, and this is
+ * never called; its being weak keeps r8_tf_depth out of them */
+    .section .text.r8k_vdepth,"ax",@progbits
+    .weak   r8k_vdepth
+    .type   r8k_vdepth, @function
+r8k_vdepth:
+    ldi   r24, 0
+    ldi   r25, 0
+    ret
+    .size r8k_vdepth, .-r8k_vdepth

@@ -400,8 +400,8 @@ static r8_s16 fw_row[3];
 static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
-/* r8k_fwalk's st is vx_st here (with vsh 2, so that fwalk.S's call of
- * r8k_vertex, vertex.S, hands it on to r8_tf_vertex below unchanged);
+/* r8k_fwalk's st is vx_st here (with vsh 2 and Gouraud, so that fwalk.S's
+ * call of r8k_vertex, vertex.S, hands it on to r8_tf_vertex below unchanged);
  * the walk is fw_cur; o is fw_o */
 static const char fw_o[1];
 static r8_fwalk *fw_cur;
@@ -549,6 +549,7 @@ static void test_fwalk_random(void)
             w[1].pk = &fw_pk[1];
         w[1].base = fw_sv[1];
         vx_st.vsh = 2;
+        vx_st.attrs = R8_ATTR_S;     /* (Gouraud: r8k_vertex hands every call on) */
         w[0].st = &vx_st;
         w[1].st = &vx_st;
         fw_nlog[0] = fw_nlog[1] = 0;
@@ -607,18 +608,27 @@ static void test_scanband_random(void);
 #define VX_CASES 8000
 #endif
 static r8_objx vx_o;
-static r8_s16 vx_sv[2][12];
+static r8_s16 vx_sv[2][16];
 static const r8_s16 *vx_mv;
 static r8_u16 vx_g;
-static unsigned long vx_fall, vx_bad;
+static unsigned long vx_fall, vx_bad, vx_depth;
+/* the depth call (transform.c's r8k_vdepth, which this replaces here):
+ * a value made of its arguments */
+r8_s16 r8k_vdepth(const struct r8_state *st, r8_u16 m, r8_s8 e)
+{
+    if (st != &vx_st)
+        vx_bad++;
+    vx_depth++;
+    return (r8_s16)(m ^ ((r8_u16)(r8_u8)e << 9) ^ 0x5A3Cu);
+}
 static void vx_ref(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
 {
     r8_vec3l c;
-    r8_s16 *out = st->sv + 2u * g;
+    r8_s16 *out = st->sv + ((unsigned)g << st->vsh);
     r8_u16 m;
     r8_s8 e;
-    if (st->vsh != 1)
-        return;                       /* (only the call is checked) */
+    if (st->vsh != 1 && (st->attrs & R8_ATTR_S))
+        return;                       /* Gouraud: only the call is checked */
     r8k_xform_ref(&o->m, &o->t, mv, &c);
     if (c.z < st->zn16) {
         out[0] = R8_VX_CLIP;
@@ -626,6 +636,8 @@ static void vx_ref(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
     }
     if (r8k_project_ref(&st->cam, &c, out, &m, &e))
         out[0] = R8_VX_CLIP;
+    else if (st->vsh != 1)
+        out[2] = r8k_vdepth(st, m, e);
 }
 static void vx_tf(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
 {
@@ -669,7 +681,8 @@ static void test_vertex_random(void)
             vx_st.cam.fn = (r8_s16)rnd();
             vx_st.cam.fsh = (r8_u8)rnd();
         }
-        vx_st.vsh = (r8_u8)(rndn(16) ? 1 : 2);
+        vx_st.vsh = (r8_u8)(rndn(4) ? 1 : 2);
+        vx_st.attrs = (r8_u8)(rndn(4) ? rndn(2) : rnd());     /* D, S (Gouraud) */
         /* the camera point */
         c.z = rndn(4) ? 16 + (r8_s32)rndn(20000) : rnd_z();
         if (rndn(16) == 0) {
@@ -711,7 +724,7 @@ static void test_vertex_random(void)
         m0 = vx_o.m;
         t0 = vx_o.t;
         vx_g = (r8_u16)rndn(4);
-        for (k = 0; k < 12; k++)
+        for (k = 0; k < 16; k++)
             vx_sv[0][k] = vx_sv[1][k] = (r8_s16)rnd();
         vx_st.sv = vx_sv[0];
         vx_ref(&vx_st, &vx_o, vx_mv, vx_g);
@@ -722,7 +735,7 @@ static void test_vertex_random(void)
         vx_mode = 0;
         if (memcmp(vx_sv[0], vx_sv[1], sizeof vx_sv[0]) || vx_bad || vx_st.sv != vx_sv[1] ||
             memcmp(&m0, &vx_o.m, sizeof m0) || memcmp(&t0, &vx_o.t, sizeof t0) ||
-            (vx_st.vsh != 1 && fall0 == (unsigned)vx_fall)) {
+            (vx_st.vsh != 1 && (vx_st.attrs & R8_ATTR_S) && fall0 == (unsigned)vx_fall)) {
             print_case("r8k_vertex", i);
             unity_print("x ");
             unity_print_long(c.x);
@@ -733,13 +746,14 @@ static void test_vertex_random(void)
             unity_print(" zn16 ");
             unity_print_long(vx_st.zn16);
             unity_print("\n");
-            TEST_ASSERT_EQUAL_INT16(vx_sv[0][2 * vx_g], vx_sv[1][2 * vx_g]);
-            TEST_ASSERT_EQUAL_INT16(vx_sv[0][2 * vx_g + 1], vx_sv[1][2 * vx_g + 1]);
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][vx_g << vx_st.vsh], vx_sv[1][vx_g << vx_st.vsh]);
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][(vx_g << vx_st.vsh) + 1], vx_sv[1][(vx_g << vx_st.vsh) + 1]);
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][(vx_g << vx_st.vsh) + 2], vx_sv[1][(vx_g << vx_st.vsh) + 2]);
             TEST_FAIL_MESSAGE("r8k_vertex: sv, its arguments or the call handed on differ");
         }
         if (fall0 != (unsigned)vx_fall)
             hit[3]++;
-        else if (vx_sv[1][2 * vx_g] != R8_VX_CLIP)
+        else if (vx_sv[1][vx_g << vx_st.vsh] != R8_VX_CLIP)
             hit[0]++;
         else
             hit[(r8k_xform_ref(&vx_o.m, &vx_o.t, vx_mv, &c0), c0.z < vx_st.zn16) ? 1 : 2]++;
@@ -749,6 +763,11 @@ static void test_vertex_random(void)
         unity_print_long((long)hit[i]);
         unity_print(i < 3 ? " " : "\n");
     }
+    unity_print("r8k_vertex: depth calls ");
+    unity_print_long((long)vx_depth);
+    unity_print("\n");
+    if (vx_depth < VX_CASES / 40)
+        unity_fail_int(__LINE__, "r8k_vertex: too few depth calls", VX_CASES / 40, (long)vx_depth);
     for (i = 0; i < 4; i++)
         if (hit[i] < VX_CASES / 40)
             unity_fail_int(__LINE__, "r8k_vertex: an outcome too rare", VX_CASES / 40, (long)hit[i]);
