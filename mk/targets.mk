@@ -26,7 +26,8 @@
 # and zfill.S with -DR8_ASM_ZFILL (src/r8zrows.h: src/zrows.c's reference),
 # fwalk.S with -DR8_ASM_FWALK (its painter's part, fwpaint.S, is an object of
 # its own, linked only by firmwares with painter's), vertex.S with
-# -DR8_ASM_VERTEX (r8k_vertex, fwalk.S's vertex call; needs project.S); the
+# -DR8_ASM_VERTEX -DR8_ASM_DEPTH (r8k_vertex, fwalk.S's vertex call, and
+# r8k_depth, r8_tf_depth's arithmetic; needs project.S); the
 # host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
 # project fill facecull facelevel facez zfill fwalk vertex) with those only, for before/after figures; as an environment
@@ -124,7 +125,7 @@ AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP -DR8_ASM_SCANFILL) $
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
               $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM) \
               $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL) $(if $(filter fwalk,$(AVR_KERN)),-DR8_ASM_FWALK) \
-              $(if $(filter vertex,$(AVR_KERN)),-DR8_ASM_VERTEX)
+              $(if $(filter vertex,$(AVR_KERN)),-DR8_ASM_VERTEX -DR8_ASM_DEPTH)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p

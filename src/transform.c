@@ -138,11 +138,11 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
 #endif
 }
 
-r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
+/* r8k_depth (r8kern.h): r8_tf_depth's arithmetic (AVR: vertex.S) */
+#ifndef R8_ASM_DEPTH
+r8_s16 r8k_depth(r8_u16 m, r8_u16 znm, r8_s16 sh, r8_u32 wf, r8_u32 gh)
 {
-    /* W = zn/z = znm 2^zne m 2^(e-31), in Q20 */
-    r8_u32 p = (r8_u32)m * (r8_u16)st->znm;   /* [2^29, 2^31) */
-    int sh = 11 - st->zne - e;
+    r8_u32 p = (r8_u32)m * znm;         /* [2^29, 2^31) from r8_tf_depth */
     r8_u32 w, dw;
     if (sh <= 0)
         w = 1UL << 20;                  /* z <= znear/2^k: nearest */
@@ -152,10 +152,17 @@ r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
         w = (r8_u32)r8_asr32((r8_s32)p, (r8_u8)sh);
     if (w > (1UL << 20))
         w = 1UL << 20;
-    if (w <= st->wf)
+    if (w <= wf)
         return 0;
-    dw = w - st->wf;
-    return (r8_s16)((dw * st->gh + 32768UL) >> 16);
+    dw = w - wf;
+    return (r8_s16)((dw * gh + 32768UL) >> 16);
+}
+#endif
+
+r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
+{
+    /* W = zn/z = znm 2^zne m 2^(e-31), in Q20 */
+    return r8k_depth(m, (r8_u16)st->znm, (r8_s16)(11 - st->zne - e), st->wf, st->gh);
 }
 
 /* Shade in 8.8 (level 0..16 << 8) of a surface with unit normal n under

@@ -475,3 +475,121 @@ r8k_vdepth:
     ldi   r25, 0
     ret
     .size r8k_vdepth, .-r8k_vdepth
+
+/* r8k_depth (include/r8kern.h, R8_ASM_DEPTH): r8_tf_depth's arithmetic,
+ * bit for bit the C reference in src/kern.c:
+ *
+ *   r8_s16 r8k_depth(r8_u16 m, r8_u16 znm, r8_s16 sh, r8_u32 wf, r8_u32 gh);
+ *
+ * p = m znm (32 bits); w = 2^20 for sh <= 0, 0 for sh > 31, else p
+ * shifted right arithmetically by sh (whole bytes, then bits), at most
+ * 2^20; 0 when w <= wf; else bits 16..31 of (w - wf) gh + 2^15 (modulo
+ * 2^32: w - wf <= 2^20 has three bytes, so nine MULs make the low four
+ * bytes of the product).  Registers: m r25:r24, znm r23:r22, sh r21:r20,
+ * wf r19:r16, gh r15:r12; p and w r27:r26:r31:r30; the product r25..r22;
+ * zero r21.  Clears r1. */
+    .section .text.r8k_depth,"ax",@progbits
+    .global r8k_depth
+    .type   r8k_depth, @function
+r8k_depth:
+    tst   r21
+    brmi  .Ldnear           /* sh < 0 */
+    breq  1f
+.Ldzero0:                   /* sh > 31: w = 0 <= wf */
+    ldi   r24, 0
+    ldi   r25, 0
+    ret
+1:  tst   r20
+    breq  .Ldnear           /* sh = 0 */
+    cpi   r20, 32
+    brsh  .Ldzero0
+    mul   r24, r22          /* p = m znm */
+    movw  r30, r0
+    mul   r25, r23
+    movw  r26, r0
+    mul   r24, r23
+    add   r31, r0
+    adc   r26, r1
+    adc   r27, r21
+    mul   r25, r22
+    add   r31, r0
+    adc   r26, r1
+    adc   r27, r21
+    sbrs  r20, 4            /* >> 16 */
+    rjmp  1f
+    movw  r30, r26
+    lsl   r27
+    sbc   r27, r27
+    mov   r26, r27
+1:  sbrs  r20, 3            /* >> 8 */
+    rjmp  2f
+    mov   r30, r31
+    mov   r31, r26
+    mov   r26, r27
+    lsl   r27
+    sbc   r27, r27
+2:  andi  r20, 7            /* then bit by bit */
+    breq  4f
+3:  asr   r27
+    ror   r26
+    ror   r31
+    ror   r30
+    dec   r20
+    brne  3b
+4:  cpi   r30, 0x01         /* w > 2^20 (unsigned): 2^20 */
+    cpc   r31, r21
+    ldi   r20, 0x10
+    cpc   r26, r20
+    cpc   r27, r21
+    brlo  .Ldw
+.Ldnear:
+    clr   r21
+    clr   r30               /* w = 2^20 */
+    clr   r31
+    ldi   r26, 0x10
+    clr   r27
+.Ldw:
+    cp    r16, r30          /* w <= wf: 0 */
+    cpc   r17, r31
+    cpc   r18, r26
+    cpc   r19, r27
+    brsh  .Ldzero
+    sub   r30, r16          /* dw = w - wf: r26:r31:r30 */
+    sbc   r31, r17
+    sbc   r26, r18
+    mul   r30, r12          /* dw gh, the low four bytes */
+    movw  r22, r0
+    mul   r30, r14
+    movw  r24, r0
+    mul   r30, r13
+    add   r23, r0
+    adc   r24, r1
+    adc   r25, r21
+    mul   r31, r12
+    add   r23, r0
+    adc   r24, r1
+    adc   r25, r21
+    mul   r31, r13
+    add   r24, r0
+    adc   r25, r1
+    mul   r26, r12
+    add   r24, r0
+    adc   r25, r1
+    mul   r30, r15
+    add   r25, r0
+    mul   r31, r14
+    add   r25, r0
+    mul   r26, r13
+    add   r25, r0
+    ldi   r20, 0x80         /* + 2^15, bits 16..31 */
+    add   r23, r20
+    adc   r24, r21
+    adc   r25, r21
+    clr   r1
+    ret
+.Ldzero:
+    clr   r1
+    ldi   r24, 0
+    ldi   r25, 0
+    ret
+    .size r8k_depth, .-r8k_depth

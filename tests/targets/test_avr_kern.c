@@ -773,6 +773,87 @@ static void test_vertex_random(void)
             unity_fail_int(__LINE__, "r8k_vertex: an outcome too rare", VX_CASES / 40, (long)hit[i]);
 }
 
+/* ---- r8k_depth (ports/avr/vertex.S) against its reference in
+ * src/transform.c (compiled in here with that file's other functions
+ * renamed out of the way): m mostly a reciprocal ([2^15, 2^16)), znm
+ * normalised ([2^14, 2^15)), sh around 1..31, wf below 2^20 and gh near
+ * 32767 2^16 / (2^20 - wf), as r8_tf_frame sets them; also any 16 and
+ * 32 bits (p past 2^31: the arithmetic shift; products that wrap).
+ * Each outcome must be hit: sh <= 0, sh > 31, w <= wf, w clamped to 2^20,
+ * a depth ---- */
+#define r8_tf_frame tfref_frame
+#define r8_tf_depth tfref_depth
+#define r8_tf_shade tfref_shade
+#define r8_tf_camera tfref_camera
+#define r8_tf_vertex tfref_vertex
+#define r8_tf_vertices tfref_vertices
+#define r8k_vertex tfref_kvertex
+#define r8k_depth r8k_depth_ref
+#include "transform.c"
+#undef r8_tf_frame
+#undef r8_tf_depth
+#undef r8_tf_shade
+#undef r8_tf_camera
+#undef r8_tf_vertex
+#undef r8_tf_vertices
+#undef r8k_vertex
+#undef r8k_depth
+#ifndef DEPTH_CASES
+#define DEPTH_CASES 12000
+#endif
+static void test_depth_random(void)
+{
+    unsigned long i, hit[5] = {0, 0, 0, 0, 0};
+    for (i = 0; i < DEPTH_CASES; i++) {
+        r8_u16 m = (r8_u16)(rndn(8) ? 32768u + rndn(32768u) : rnd());
+        r8_u16 znm = (r8_u16)(rndn(8) ? 16384u + rndn(16384u) : rnd());
+        r8_s16 sh = rndn(8) ? rnds(-2, 34) : (r8_s16)rnd();
+        r8_u32 wf = rndn(4) ? (rnd() % (1UL << 20)) >> rndn(16) : rnd(), gh;
+        r8_s16 ra, rr;
+        r8_u32 w;
+        if (rndn(4))
+            gh = (r8_u32)(32767UL * 65536UL / ((1UL << 20) - (wf & 0xFFFFFUL)));
+        else
+            gh = rnd();
+        if (rndn(4) == 0)             /* sh near where w meets wf */
+            sh = (r8_s16)(10 + rndn(12));
+        rr = r8k_depth_ref(m, znm, sh, wf, gh);
+        ra = r8k_depth(m, znm, sh, wf, gh);
+        if (ra != rr) {
+            print_case("r8k_depth", i);
+            unity_print("m ");
+            unity_print_long((long)m);
+            unity_print(" znm ");
+            unity_print_long((long)znm);
+            unity_print(" sh ");
+            unity_print_long((long)sh);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_INT16(rr, ra);
+        }
+        if (sh <= 0)
+            hit[0]++;
+        else if (sh > 31)
+            hit[1]++;
+        else {
+            w = (r8_u32)r8_asr32((r8_s32)((r8_u32)m * znm), (r8_u8)sh);
+            if (w > (1UL << 20))
+                hit[3]++;
+            else if (w <= wf)
+                hit[2]++;
+            else
+                hit[4]++;
+        }
+    }
+    unity_print("r8k_depth: sh <= 0, sh > 31, w <= wf, clamped, a depth: ");
+    for (i = 0; i < 5; i++) {
+        unity_print_long((long)hit[i]);
+        unity_print(i < 4 ? " " : "\n");
+    }
+    for (i = 0; i < 5; i++)
+        if (hit[i] < DEPTH_CASES / 50)
+            unity_fail_int(__LINE__, "r8k_depth: an outcome too rare", DEPTH_CASES / 50, (long)hit[i]);
+}
+
 /* ---- r8k_zrows (ports/avr/zfill.S) against its reference (src/zrows.c,
  * renamed r8k_zrows_ref): random triangles and quads scanned with depth
  * (r8_scan_begin; both runs from one copy of the scan, edges moved on
@@ -1031,6 +1112,7 @@ int main(void)
     RUN_TEST(test_zsum_random);
     RUN_TEST(test_fwalk_random);
     RUN_TEST(test_vertex_random);
+    RUN_TEST(test_depth_random);
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);
