@@ -15,6 +15,8 @@
  *   r8k_level   a face's Lambert dither level (R8_ASM_LEVEL)
  *   r8k_zsum    a face's painter's depth sum (R8_ASM_ZSUM)
  *   r8k_fwalk   an object's faces: cull, screen box, rows (R8_ASM_FWALK)
+ *   r8k_vertex  a model vertex to its screen vertex (R8_ASM_VERTEX)
+ *   r8k_depth   a vertex's depth from its reciprocal (R8_ASM_DEPTH)
  */
 #ifndef R8KERN_H
 #define R8KERN_H
@@ -170,5 +172,20 @@ void r8k_fwpaint(void);
 struct r8_state;
 struct r8_objx;
 void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
+/* r8k_fwalk's vertex call on AVR (fwalk.S): r8_tf_vertex(st, o, mv, g)
+ * exactly; the kernel (ports/avr/vertex.S, R8_ASM_VERTEX) does the
+ * vertices without Gouraud (vsh 1, or vsh 2 with the depth through
+ * r8k_vdepth) with small model coordinates in one piece, and hands
+ * every other case to r8_tf_vertex.  Reference: src/transform.c. */
+void r8k_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g);
+/* r8_tf_depth's arithmetic (src/transform.c): with p = m znm (32 bits),
+ * w = 2^20 for sh <= 0, 0 for sh > 31, else min(2^20, (r8_u32)
+ * r8_asr32(p, sh)); 0 when w <= wf, else ((w - wf) gh + 2^15) >> 16
+ * (modulo 2^32).  AVR: vertex.S (R8_ASM_DEPTH); reference in
+ * src/transform.c. */
+r8_s16 r8k_depth(r8_u16 m, r8_u16 znm, r8_s16 sh, r8_u32 wf, r8_u32 gh);
+/* AVR (vertex.S): out[2] of a vsh-2 vertex from its reciprocal m, e
+ * (r8_tf_depth when st->attrs has R8_ATTR_D, else 0; src/transform.c) */
+r8_s16 r8k_vdepth(const struct r8_state *st, r8_u16 m, r8_s8 e);
 
 #endif

@@ -25,10 +25,12 @@
 # -DR8_ASM_PROJECT -DR8_ASM_FILL -DR8_ASM_CULL -DR8_ASM_LEVEL -DR8_ASM_ZSUM (src/kern.c then leaves its C references out),
 # and zfill.S with -DR8_ASM_ZFILL (src/r8zrows.h: src/zrows.c's reference),
 # fwalk.S with -DR8_ASM_FWALK (its painter's part, fwpaint.S, is an object of
-# its own, linked only by firmwares with painter's); the
+# its own, linked only by firmwares with painter's), vertex.S with
+# -DR8_ASM_VERTEX -DR8_ASM_DEPTH (r8k_vertex, fwalk.S's vertex call, and
+# r8k_depth, r8_tf_depth's arithmetic; needs project.S); the
 # host, 6502 and Z80 keep the references.  AVR_ASM=0 builds the AVR
 # libraries without them; AVR_ASM="trap edge" (any of trap xform edge
-# project fill facecull facelevel facez zfill) with those only, for before/after figures; as an environment
+# project fill facecull facelevel facez zfill fwalk vertex) with those only, for before/after figures; as an environment
 # variable it also reaches make bench (`AVR_ASM=0 make bench`).
 # build/x/avr-kernels.txt records the choice and AVR_CFLAGS, so changing
 # either rebuilds the AVR objects.
@@ -114,13 +116,16 @@ Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
 AVR_ASM    ?= 1
-AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk
-AVR_KERN   := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
+AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk vertex
+AVR_KERN0  := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))
+# vertex (vertex.S, R8_ASM_VERTEX: r8k_vertex) reads project.S's reciprocal table
+AVR_KERN   := $(if $(filter project,$(AVR_KERN0)),$(AVR_KERN0),$(filter-out vertex,$(AVR_KERN0)))
 AVR_KDEFS  := $(if $(filter trap,$(AVR_KERN)),-DR8_ASM_TRAP -DR8_ASM_SCANFILL) $(if $(filter xform,$(AVR_KERN)),-DR8_ASM_XFORM) \
               $(if $(filter edge,$(AVR_KERN)),-DR8_ASM_EDGE -DR8_ASM_ESTART) $(if $(filter project,$(AVR_KERN)),-DR8_ASM_PROJECT) \
               $(if $(filter fill,$(AVR_KERN)),-DR8_ASM_FILL) $(if $(filter facecull,$(AVR_KERN)),-DR8_ASM_CULL) \
               $(if $(filter facelevel,$(AVR_KERN)),-DR8_ASM_LEVEL) $(if $(filter facez,$(AVR_KERN)),-DR8_ASM_ZSUM) \
-              $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL) $(if $(filter fwalk,$(AVR_KERN)),-DR8_ASM_FWALK)
+              $(if $(filter zfill,$(AVR_KERN)),-DR8_ASM_ZFILL) $(if $(filter fwalk,$(AVR_KERN)),-DR8_ASM_FWALK) \
+              $(if $(filter vertex,$(AVR_KERN)),-DR8_ASM_VERTEX -DR8_ASM_DEPTH)
 AVR_KSTAMP := $(XB)/avr-kernels.txt
 MCU_avr328  := atmega328p
 MCU_avr1284 := atmega1284p

@@ -138,11 +138,11 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
 #endif
 }
 
-r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
+/* r8k_depth (r8kern.h): r8_tf_depth's arithmetic (AVR: vertex.S) */
+#ifndef R8_ASM_DEPTH
+r8_s16 r8k_depth(r8_u16 m, r8_u16 znm, r8_s16 sh, r8_u32 wf, r8_u32 gh)
 {
-    /* W = zn/z = znm 2^zne m 2^(e-31), in Q20 */
-    r8_u32 p = (r8_u32)m * (r8_u16)st->znm;   /* [2^29, 2^31) */
-    int sh = 11 - st->zne - e;
+    r8_u32 p = (r8_u32)m * znm;         /* [2^29, 2^31) from r8_tf_depth */
     r8_u32 w, dw;
     if (sh <= 0)
         w = 1UL << 20;                  /* z <= znear/2^k: nearest */
@@ -152,10 +152,17 @@ r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
         w = (r8_u32)r8_asr32((r8_s32)p, (r8_u8)sh);
     if (w > (1UL << 20))
         w = 1UL << 20;
-    if (w <= st->wf)
+    if (w <= wf)
         return 0;
-    dw = w - st->wf;
-    return (r8_s16)((dw * st->gh + 32768UL) >> 16);
+    dw = w - wf;
+    return (r8_s16)((dw * gh + 32768UL) >> 16);
+}
+#endif
+
+r8_s16 r8_tf_depth(const r8_state *st, r8_u16 m, r8_s8 e)
+{
+    /* W = zn/z = znm 2^zne m 2^(e-31), in Q20 */
+    return r8k_depth(m, (r8_u16)st->znm, (r8_s16)(11 - st->zne - e), st->wf, st->gh);
 }
 
 /* Shade in 8.8 (level 0..16 << 8) of a surface with unit normal n under
@@ -225,6 +232,33 @@ void r8_tf_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
     }
 #endif
 }
+
+/* r8k_vertex (r8kern.h): the reference is r8_tf_vertex itself (not on
+ * the 6502 and Z80, whose face loop calls r8_tf_vertex). */
+#if !defined(R8_ASM_VERTEX) && !defined(__SDCC) && !defined(__CC65__)
+void r8k_vertex(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    r8_tf_vertex(st, o, mv, g);
+}
+#elif defined(R8_ASM_VERTEX)
+#include <stddef.h>
+/* AVR: ports/avr/vertex.S reads these offsets */
+R8_CASSERT(vertex_cam_at_2, offsetof(r8_state, cam) == 2);
+R8_CASSERT(vertex_vsh_at_26, offsetof(r8_state, vsh) == 26 && offsetof(r8_state, attrs) == 25);
+R8_CASSERT(vertex_sv_at_37, offsetof(r8_state, sv) == 37);
+R8_CASSERT(vertex_zn16_at_83, offsetof(r8_state, zn16) == 83);
+R8_CASSERT(vertex_t_at_18, offsetof(r8_objx, t) == 18 && offsetof(r8_objx, m) == 0);
+R8_CASSERT(vertex_proj, offsetof(r8_proj, guard) == 10 && offsetof(r8_proj, fn) == 12 &&
+                        offsetof(r8_proj, fsh) == 14 && offsetof(r8_proj, cy) == 2);
+#endif
+#if defined(R8_ASM_VERTEX) && (R8_W_DEPTH || R8_W_TEXTURE)
+/* vertex.S's depth of a vsh-2 vertex, as r8_tf_camera sets out[2] (a
+ * build without depth or texture has vertex.S's weak r8k_vdepth) */
+r8_s16 r8k_vdepth(const r8_state *st, r8_u16 m, r8_s8 e)
+{
+    return st->attrs & R8_ATTR_D ? r8_tf_depth(st, m, e) : 0;
+}
+#endif
 
 /* Every vertex of every shown object, or (lazy) only marked R8_VX_TODO:
  * the frame loop then transforms the vertices of the faces it keeps. */

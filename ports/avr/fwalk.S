@@ -5,7 +5,8 @@
  * r8_bucket_object's face loop (src/render.c): from face w->f - 1 down,
  * the next face to draw - its n checked, r8k_cull's test (facecull.S's
  * code, inline here) when w->normals is set, its vertices transformed where their x is -32767
- * (R8_VX_TODO: a call of r8_tf_vertex(st, o, verts + 3 i, vbase + i), C), the rows of its
+ * (R8_VX_TODO: a call of r8k_vertex(st, o, verts + 3 i, vbase + i), r8_tf_vertex's
+ * kernel, vertex.S or C), the rows of its
  * vertices' box tested against the frame - returns 1 with w->f, top,
  * bot set (painter's with w->paint: on at r8k_fwpaint, fwpaint.S, which
  * puts the face in its depth bucket); 2 for a face the caller takes (n not 3..4, r8k_cull -1, a
@@ -188,7 +189,7 @@ mark:
     brsh  xok               /* an ordinary x */
     cpi   r22, 1
     brne  other             /* -32768: the clipper's */
-    /* -32767: r8_tf_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
+    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
      * vertex again */
     push  r0
     push  r1
@@ -214,7 +215,7 @@ mark:
     ldd   r25, Y+W_ST+1
     ldd   r22, Y+W_O
     ldd   r23, Y+W_O+1
-    call  r8_tf_vertex
+    call  r8k_vertex        /* (vertex.S; else transform.c: r8_tf_vertex) */
     pop   r31
     pop   r30
     pop   r21

@@ -362,6 +362,7 @@ r8k_project:
 /* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16
  * bits): the table of src/proj.c */
     .section .progmem.data.r8k_rec_tab,"a",@progbits
+    .global r8k_rec_tab     /* (vertex.S reads it too) */
     .type   r8k_rec_tab, @object
 r8k_rec_tab:
     .word 65535, 65028, 64528, 64035, 63550, 63072, 62602, 62138, 61681, 61231

@@ -22,6 +22,7 @@
 #include "unity.h"
 #include "r8kern.h"
 #include "r8flash.h"
+#include "r8int.h"                     /* (r8k_vertex's r8_state, r8_objx) */
 
 /* the C references, renamed */
 void r8k_trap_ref(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
@@ -399,13 +400,25 @@ static r8_s16 fw_row[3];
 static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
-/* r8k_fwalk's st is the walk itself here; o is fw_o */
+/* r8k_fwalk's st is vx_st here (with vsh 2 and Gouraud, so that fwalk.S's
+ * call of r8k_vertex, vertex.S, hands it on to r8_tf_vertex below unchanged);
+ * the walk is fw_cur; o is fw_o */
 static const char fw_o[1];
+static r8_fwalk *fw_cur;
+static r8_state vx_st;                 /* (the r8k_vertex test's) */
+static unsigned vx_mode;
+static void vx_tf(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g);
 void r8_tf_vertex(struct r8_state *st, const struct r8_objx *o, const r8_s16 *mv, r8_u16 g)
 {
-    r8_fwalk *w = (r8_fwalk *)st;
-    r8_u8 i = (r8_u8)(g - w->vbase);
-    if ((r8_u16)(g - w->vbase) < FW_NV && mv == w->verts + 3u * i && (const void *)o == (const void *)fw_o) {
+    r8_fwalk *w = fw_cur;
+    r8_u8 i;
+    if (vx_mode) {
+        vx_tf(st, o, mv, g);          /* the r8k_vertex test */
+        return;
+    }
+    i = (r8_u8)(g - w->vbase);
+    if ((r8_u16)(g - w->vbase) < FW_NV && mv == w->verts + 3u * i && (const void *)o == (const void *)fw_o &&
+        st == &vx_st) {
         r8_s16 *v = (r8_s16 *)w->base + ((unsigned)i << w->vsh);
         v[0] = fw_tf[i][0];
         v[1] = fw_tf[i][1];
@@ -535,13 +548,17 @@ static void test_fwalk_random(void)
         if (w[0].pk)
             w[1].pk = &fw_pk[1];
         w[1].base = fw_sv[1];
-        w[0].st = &w[0];
-        w[1].st = &w[1];
+        vx_st.vsh = 2;
+        vx_st.attrs = R8_ATTR_S;     /* (Gouraud: r8k_vertex hands every call on) */
+        w[0].st = &vx_st;
+        w[1].st = &vx_st;
         fw_nlog[0] = fw_nlog[1] = 0;
         do {                          /* the two walks in step */
             fw_run = 0;
+            fw_cur = &w[0];
             r[0] = r8k_fwalk_ref(&w[0]);
             fw_run = 1;
+            fw_cur = &w[1];
             r[1] = r8k_fwalk(&w[1]);
             if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
                 w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
@@ -576,6 +593,266 @@ static void test_fwalk_random(void)
 }
 static void test_estart_random(void);
 static void test_scanband_random(void);
+
+/* ---- r8k_vertex (ports/avr/vertex.S) against r8_tf_vertex for vsh 1
+ * (the references r8k_xform_ref, the near test, r8k_project_ref, as
+ * r8_tf_camera does them), on camera points chosen as the r8k_project
+ * test chooses them (t is set so that the vertex lands there), model
+ * vertices small (the kernel's rows), extreme and arbitrary (handed on),
+ * znear around the point, and vsh 2 now and then: every entry of sv
+ * around the vertex is compared; a call handed on to r8_tf_vertex (the
+ * reference here: vx_tf) must carry st, o, mv and g unchanged.  Each
+ * outcome must be hit: projected, behind the near plane and outside the
+ * guard band by the kernel itself, and handed on ---- */
+#ifndef VX_CASES
+#define VX_CASES 8000
+#endif
+static r8_objx vx_o;
+static r8_s16 vx_sv[2][16];
+static const r8_s16 *vx_mv;
+static r8_u16 vx_g;
+static unsigned long vx_fall, vx_bad, vx_depth;
+/* the depth call (transform.c's r8k_vdepth, which this replaces here):
+ * a value made of its arguments */
+r8_s16 r8k_vdepth(const struct r8_state *st, r8_u16 m, r8_s8 e)
+{
+    if (st != &vx_st)
+        vx_bad++;
+    vx_depth++;
+    return (r8_s16)(m ^ ((r8_u16)(r8_u8)e << 9) ^ 0x5A3Cu);
+}
+static void vx_ref(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    r8_vec3l c;
+    r8_s16 *out = st->sv + ((unsigned)g << st->vsh);
+    r8_u16 m;
+    r8_s8 e;
+    if (st->vsh != 1 && (st->attrs & R8_ATTR_S))
+        return;                       /* Gouraud: only the call is checked */
+    r8k_xform_ref(&o->m, &o->t, mv, &c);
+    if (c.z < st->zn16) {
+        out[0] = R8_VX_CLIP;
+        return;
+    }
+    if (r8k_project_ref(&st->cam, &c, out, &m, &e))
+        out[0] = R8_VX_CLIP;
+    else if (st->vsh != 1)
+        out[2] = r8k_vdepth(st, m, e);
+}
+static void vx_tf(r8_state *st, const r8_objx *o, const r8_s16 *mv, r8_u16 g)
+{
+    if (st != &vx_st || o != &vx_o || mv != vx_mv || g != vx_g)
+        vx_bad++;
+    vx_fall++;
+    vx_ref(st, o, mv, g);
+}
+static void test_vertex_random(void)
+{
+    unsigned long i, hit[4] = {0, 0, 0, 0};
+    for (i = 0; i < VX_CASES; i++) {
+        r8_vec3l c, c0, t0;
+        r8_mat3 m0;
+        r8_s32 *pc = &c.x, *p0 = &c0.x, *pt = &vx_o.t.x;
+        r8_s16 focal;
+        unsigned k = rndn(16), fall0;
+        if (k < 6)
+            focal = 128;
+        else if (k < 11)
+            focal = (r8_s16)(1 + rndn(2047));
+        else if (k < 13)
+            focal = (r8_s16)(1025 + rndn(1023));
+        else
+            focal = (r8_s16)(1 + rndn(64));
+        r8_proj_init(&vx_st.cam, 128, 64, focal, 16);
+        k = rndn(16);
+        if (k < 10)
+            vx_st.cam.guard = 900;
+        else if (k < 13)
+            vx_st.cam.guard = (r8_s16)rndn(1024);
+        else if (k < 15)
+            vx_st.cam.guard = rnds(1018, 2047);
+        else
+            vx_st.cam.guard = rnds(-4, 3);
+        if (rndn(8) == 0) {
+            vx_st.cam.cx = (r8_s16)rnd();
+            vx_st.cam.cy = (r8_s16)rnd();
+        }
+        if (rndn(16) == 0) {
+            vx_st.cam.fn = (r8_s16)rnd();
+            vx_st.cam.fsh = (r8_u8)rnd();
+        }
+        vx_st.vsh = (r8_u8)(rndn(4) ? 1 : 2);
+        vx_st.attrs = (r8_u8)(rndn(4) ? rndn(2) : rnd());     /* D, S (Gouraud) */
+        /* the camera point */
+        c.z = rndn(4) ? 16 + (r8_s32)rndn(20000) : rnd_z();
+        if (rndn(16) == 0) {
+            c.z = (r8_s32)rndn(3) - 1;
+            c.x = rndn(2) ? 0 : rnds(-2, 2);
+            c.y = rndn(2) ? 0 : rnds(-2, 2);
+        } else {
+            unsigned n = rndn(4) ? 6 : 1;    /* mostly within 16 bits */
+            do {
+                c.x = rnd_coord(c.z, focal);
+                c.y = rnd_coord(c.z, focal);
+            } while (--n && (c.x != (r8_s16)c.x || c.y != (r8_s16)c.y));
+        }
+        k = rndn(8);
+        if (k < 4)
+            vx_st.zn16 = 16 + (r8_s32)rndn(400);
+        else if (k < 6)
+            vx_st.zn16 = c.z + rnds(-2, 2);
+        else if (k < 7)
+            vx_st.zn16 = rnd_z();
+        else
+            vx_st.zn16 = (r8_s32)rnd();
+        /* the model vertex and the matrix; t puts the vertex at c */
+        k = rndn(10);
+        if (k < 8)
+            vx_mv = vt_small + rndn(94);
+        else if (k < 9)
+            vx_mv = vt_ext + rndn(94);
+        else
+            vx_mv = KERN_CODE_PTR();
+        for (k = 0; k < 9; k++)
+            vx_o.m.m[k] = rndn(4) ? rnds(-16384, 16384) : rnd_m();
+        memset(&vx_o.t, 0, sizeof vx_o.t);
+        r8k_xform_ref(&vx_o.m, &vx_o.t, vx_mv, &c0);
+        for (k = 0; k < 3; k++)
+            pt[k] = (r8_s32)((r8_u32)pc[k] - (r8_u32)p0[k]);
+        if (rndn(16) == 0)
+            vx_o.t.z = rnd_t();
+        m0 = vx_o.m;
+        t0 = vx_o.t;
+        vx_g = (r8_u16)rndn(4);
+        for (k = 0; k < 16; k++)
+            vx_sv[0][k] = vx_sv[1][k] = (r8_s16)rnd();
+        vx_st.sv = vx_sv[0];
+        vx_ref(&vx_st, &vx_o, vx_mv, vx_g);
+        vx_st.sv = vx_sv[1];
+        fall0 = (unsigned)vx_fall;
+        vx_mode = 1;
+        r8k_vertex(&vx_st, &vx_o, vx_mv, vx_g);
+        vx_mode = 0;
+        if (memcmp(vx_sv[0], vx_sv[1], sizeof vx_sv[0]) || vx_bad || vx_st.sv != vx_sv[1] ||
+            memcmp(&m0, &vx_o.m, sizeof m0) || memcmp(&t0, &vx_o.t, sizeof t0) ||
+            (vx_st.vsh != 1 && (vx_st.attrs & R8_ATTR_S) && fall0 == (unsigned)vx_fall)) {
+            print_case("r8k_vertex", i);
+            unity_print("x ");
+            unity_print_long(c.x);
+            unity_print(" y ");
+            unity_print_long(c.y);
+            unity_print(" z ");
+            unity_print_long(c.z);
+            unity_print(" zn16 ");
+            unity_print_long(vx_st.zn16);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][vx_g << vx_st.vsh], vx_sv[1][vx_g << vx_st.vsh]);
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][(vx_g << vx_st.vsh) + 1], vx_sv[1][(vx_g << vx_st.vsh) + 1]);
+            TEST_ASSERT_EQUAL_INT16(vx_sv[0][(vx_g << vx_st.vsh) + 2], vx_sv[1][(vx_g << vx_st.vsh) + 2]);
+            TEST_FAIL_MESSAGE("r8k_vertex: sv, its arguments or the call handed on differ");
+        }
+        if (fall0 != (unsigned)vx_fall)
+            hit[3]++;
+        else if (vx_sv[1][vx_g << vx_st.vsh] != R8_VX_CLIP)
+            hit[0]++;
+        else
+            hit[(r8k_xform_ref(&vx_o.m, &vx_o.t, vx_mv, &c0), c0.z < vx_st.zn16) ? 1 : 2]++;
+    }
+    unity_print("r8k_vertex: projected, near, out, handed on: ");
+    for (i = 0; i < 4; i++) {
+        unity_print_long((long)hit[i]);
+        unity_print(i < 3 ? " " : "\n");
+    }
+    unity_print("r8k_vertex: depth calls ");
+    unity_print_long((long)vx_depth);
+    unity_print("\n");
+    if (vx_depth < VX_CASES / 40)
+        unity_fail_int(__LINE__, "r8k_vertex: too few depth calls", VX_CASES / 40, (long)vx_depth);
+    for (i = 0; i < 4; i++)
+        if (hit[i] < VX_CASES / 40)
+            unity_fail_int(__LINE__, "r8k_vertex: an outcome too rare", VX_CASES / 40, (long)hit[i]);
+}
+
+/* ---- r8k_depth (ports/avr/vertex.S) against its reference in
+ * src/transform.c (compiled in here with that file's other functions
+ * renamed out of the way): m mostly a reciprocal ([2^15, 2^16)), znm
+ * normalised ([2^14, 2^15)), sh around 1..31, wf below 2^20 and gh near
+ * 32767 2^16 / (2^20 - wf), as r8_tf_frame sets them; also any 16 and
+ * 32 bits (p past 2^31: the arithmetic shift; products that wrap).
+ * Each outcome must be hit: sh <= 0, sh > 31, w <= wf, w clamped to 2^20,
+ * a depth ---- */
+#define r8_tf_frame tfref_frame
+#define r8_tf_depth tfref_depth
+#define r8_tf_shade tfref_shade
+#define r8_tf_camera tfref_camera
+#define r8_tf_vertex tfref_vertex
+#define r8_tf_vertices tfref_vertices
+#define r8k_vertex tfref_kvertex
+#define r8k_depth r8k_depth_ref
+#include "transform.c"
+#undef r8_tf_frame
+#undef r8_tf_depth
+#undef r8_tf_shade
+#undef r8_tf_camera
+#undef r8_tf_vertex
+#undef r8_tf_vertices
+#undef r8k_vertex
+#undef r8k_depth
+#ifndef DEPTH_CASES
+#define DEPTH_CASES 12000
+#endif
+static void test_depth_random(void)
+{
+    unsigned long i, hit[5] = {0, 0, 0, 0, 0};
+    for (i = 0; i < DEPTH_CASES; i++) {
+        r8_u16 m = (r8_u16)(rndn(8) ? 32768u + rndn(32768u) : rnd());
+        r8_u16 znm = (r8_u16)(rndn(8) ? 16384u + rndn(16384u) : rnd());
+        r8_s16 sh = rndn(8) ? rnds(-2, 34) : (r8_s16)rnd();
+        r8_u32 wf = rndn(4) ? (rnd() % (1UL << 20)) >> rndn(16) : rnd(), gh;
+        r8_s16 ra, rr;
+        r8_u32 w;
+        if (rndn(4))
+            gh = (r8_u32)(32767UL * 65536UL / ((1UL << 20) - (wf & 0xFFFFFUL)));
+        else
+            gh = rnd();
+        if (rndn(4) == 0)             /* sh near where w meets wf */
+            sh = (r8_s16)(10 + rndn(12));
+        rr = r8k_depth_ref(m, znm, sh, wf, gh);
+        ra = r8k_depth(m, znm, sh, wf, gh);
+        if (ra != rr) {
+            print_case("r8k_depth", i);
+            unity_print("m ");
+            unity_print_long((long)m);
+            unity_print(" znm ");
+            unity_print_long((long)znm);
+            unity_print(" sh ");
+            unity_print_long((long)sh);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_INT16(rr, ra);
+        }
+        if (sh <= 0)
+            hit[0]++;
+        else if (sh > 31)
+            hit[1]++;
+        else {
+            w = (r8_u32)r8_asr32((r8_s32)((r8_u32)m * znm), (r8_u8)sh);
+            if (w > (1UL << 20))
+                hit[3]++;
+            else if (w <= wf)
+                hit[2]++;
+            else
+                hit[4]++;
+        }
+    }
+    unity_print("r8k_depth: sh <= 0, sh > 31, w <= wf, clamped, a depth: ");
+    for (i = 0; i < 5; i++) {
+        unity_print_long((long)hit[i]);
+        unity_print(i < 4 ? " " : "\n");
+    }
+    for (i = 0; i < 5; i++)
+        if (hit[i] < DEPTH_CASES / 50)
+            unity_fail_int(__LINE__, "r8k_depth: an outcome too rare", DEPTH_CASES / 50, (long)hit[i]);
+}
 
 /* ---- r8k_zrows (ports/avr/zfill.S) against its reference (src/zrows.c,
  * renamed r8k_zrows_ref): random triangles and quads scanned with depth
@@ -834,6 +1111,8 @@ int main(void)
     RUN_TEST(test_level_random);
     RUN_TEST(test_zsum_random);
     RUN_TEST(test_fwalk_random);
+    RUN_TEST(test_vertex_random);
+    RUN_TEST(test_depth_random);
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);
