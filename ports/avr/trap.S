@@ -71,15 +71,14 @@
 /* X = page + xl, Z = page + xr (from X = xl, Z = xr); T0 = n = xr - xl
  * (low byte: the loop is entered at column (-n) & 3) */
 .macro SETUP
-    sub   r30, r26
-    sbc   r31, r27          /* Z = n */
-    mov   T0, r30
-    ldd   NM, Y+0
-    add   r26, NM
+    ldd   T0, Y+0
     ldd   NM, Y+1
+    add   r26, T0
     adc   r27, NM           /* X = page + xl */
-    add   r30, r26
-    adc   r31, r27          /* Z = page + xr */
+    add   r30, T0
+    adc   r31, NM           /* Z = page + xr */
+    mov   T0, r30
+    sub   T0, r26           /* n (low byte) */
 .endm
 
 /* jump to column c[(-T0) & 3] of the loop */
