@@ -275,9 +275,10 @@ wrap:                       /* m = 1, page += w */
     adc   T0, NM
     std   Y+1, T0
     dec   ROWS
-    breq  1f
-    rjmp  grp               /* the next page: a new group */
-1:  rjmp  fin
+    brne  grp               /* the next page: a new group */
+    rjmp  fin
+sclrt:
+    rjmp  sclr
 
 span:                       /* X = xl < Z = xr */
     sbrc  K, 1              /* Q = pat[k] */
@@ -289,13 +290,10 @@ span:                       /* X = xl < Z = xr */
 3:  ldd   Q, Y+6
     sbrc  K, 0
     ldd   Q, Y+7
-4:  andi  Q, 0x0F
-    brne  5f
-    rjmp  sclr
-5:  cpi   Q, 0x0F
-    brne  6f
-    rjmp  sset
-6:
+4:  andi  Q, 0x0F          /* nibble 0: clear, F: set, else dither */
+    breq  sclrt
+    cpi   Q, 0x0F
+    breq  sset
     mov   NM, Q             /* dither: nibble in both halves, */
     swap  NM
     or    Q, NM
