@@ -15,9 +15,11 @@
  * r8_tf_shade's truncations give it, in one shift).
  *
  * Registers (avr-gcc ABI): arguments n r25:r24, light r23:r22, amb
- * r21:r20, colour r18.  amb goes to r13:r12, colour to r14, the light to
- * r19:r18, r21:r20, r23:r22; Z = n; the sum r27:r26:r25:r24; the normal
- * component r17:r16; r15 zero.  Saves r12..r17; clears r1.
+ * r21:r20, colour r18.  amb goes to r25:r24, colour to r14; Z = n, X =
+ * light, read a component at a time (r23:r22) beside the normal's
+ * (r17:r16); the sum r21:r20:r19:r18; r15 zero.  Saves r14..r17 (two
+ * fewer than with the light held in six registers); clears r1.  A face
+ * turned from the light (d < 0: i = 0, q = amb) skips the w i product.
  */
 #ifdef R8_NO_PROGMEM
 #define RD(r) ld r, Z+
@@ -27,95 +29,118 @@
 
 #define ZERO r15
 
-#include "facemac.h"   /* ACC: the sum += n component * l */
-
+/* the sum r21:r18 (+)= n component (read here into r17:r16) * light
+ * component (read through X into r23:r22), both signed 16 (MULS and
+ * MULSU take r16..r23); \first: the first product sets the sum */
+.macro LACC first
+    RD(r16)
+    RD(r17)
+    ld    r22, X+
+    ld    r23, X+
+    mul   r16, r22          /* u x u, at byte 0 */
+.if \first
+    movw  r18, r0
+    muls  r17, r23          /* s x s, at byte 2 */
+    movw  r20, r0
+.else
+    add   r18, r0
+    adc   r19, r1
+    adc   r20, ZERO
+    adc   r21, ZERO
+    muls  r17, r23          /* s x s, at byte 2 */
+    add   r20, r0
+    adc   r21, r1
+.endif
+    mulsu r17, r22          /* s x u, at byte 1; C = its sign */
+    sbc   r21, ZERO         /* the sign extension: -2^24 */
+    add   r19, r0
+    adc   r20, r1
+    adc   r21, ZERO
+    mulsu r23, r16          /* s x u, at byte 1 */
+    sbc   r21, ZERO
+    add   r19, r0
+    adc   r20, r1
+    adc   r21, ZERO
+.endm
 
     .section .text.r8k_level,"ax",@progbits
     .global r8k_level
     .type   r8k_level, @function
 r8k_level:
-    push  r12
-    push  r13
     push  r14
     push  r15
     push  r16
     push  r17
-    movw  r12, r20          /* amb */
-    mov   r14, r18          /* colour */
-    movw  r26, r22          /* X = light */
-    ld    r18, X+
-    ld    r19, X+
-    ld    r20, X+
-    ld    r21, X+
-    ld    r22, X+
-    ld    r23, X
     movw  r30, r24          /* Z = n (flash) */
-    DOT3                    /* r27:r24 = n . d (facemac.h) */
+    movw  r24, r20          /* amb */
+    mov   r14, r18          /* colour */
+    clr   ZERO
+    movw  r26, r22          /* X = light */
+    LACC  1
+    LACC  0
+    LACC  0                 /* r21:r18 = n . light */
     /* i = d > 0 ? min(d >> 14, 16384) : 0 in r23:r22 (d < 3 2^28) */
-    clr   r22
-    clr   r23
-    sbrc  r27, 7
-    rjmp  1f                /* d < 0: i = 0 */
-    lsl   r25
-    rol   r26
-    rol   r27
-    lsl   r25
-    rol   r26
-    rol   r27
-    movw  r22, r26          /* d >> 14, as r8_s16 */
+    movw  r16, r24          /* q = amb when d < 0 */
+    sbrc  r21, 7
+    rjmp  2f                /* d < 0: i = 0 */
+    lsl   r19
+    rol   r20
+    rol   r21
+    lsl   r19
+    rol   r20
+    rol   r21
+    movw  r22, r20          /* d >> 14, as r8_s16 */
     cpi   r22, 0x01
-    ldi   r16, 0x40
-    cpc   r23, r16
+    ldi   r18, 0x40
+    cpc   r23, r18
     brlt  1f                /* <= 16384 (signed, as the C) */
     ldi   r22, 0x00
     ldi   r23, 0x40
-1:  ldi   r16, 0x00         /* w = 16384 - amb (>= 0) */
-    ldi   r17, 0x40
-    sub   r16, r12
-    sbc   r17, r13
-    mul   r16, r22          /* w i, signed 16 x 16 */
-    movw  r24, r0
-    muls  r17, r23
-    movw  r26, r0
-    mulsu r17, r22
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r23, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    lsl   r25               /* bits 14..29: r27:r26 */
-    rol   r26
-    rol   r27
-    lsl   r25
-    rol   r26
-    rol   r27
-    add   r26, r12          /* q = amb + w i >> 14 (16 bits) */
-    adc   r27, r13
-    mul   r27, r14          /* T = q colour (< 2^24) in r26:r25:r24 */
+1:  ldi   r18, 0x00         /* w = 16384 - amb (>= 0) */
+    ldi   r19, 0x40
+    sub   r18, r24
+    sbc   r19, r25
+    mul   r18, r22          /* w i, signed 16 x 16 (i may be negative: */
+    movw  r20, r0           /* d >> 14 past 32767, as the C) */
+    muls  r19, r23
+    movw  r16, r0
+    mulsu r19, r22
+    sbc   r17, ZERO
+    add   r21, r0
+    adc   r16, r1
+    adc   r17, ZERO
+    mulsu r23, r18
+    sbc   r17, ZERO
+    add   r21, r0
+    adc   r16, r1
+    adc   r17, ZERO
+    lsl   r21               /* bits 14..29: r17:r16 */
+    rol   r16
+    rol   r17
+    lsl   r21
+    rol   r16
+    rol   r17
+    add   r16, r24          /* q = amb + w i >> 14 (16 bits) */
+    adc   r17, r25
+2:  mul   r17, r14          /* T = q colour (< 2^24) in r20:r19:r18 */
     movw  r22, r0
-    mul   r26, r14
-    movw  r24, r0
-    add   r25, r22
-    clr   r26
-    adc   r26, r23
-    subi  r24, 0xE0         /* + 8224 */
-    sbci  r25, 0xDF
-    sbci  r26, 0xFF
-    lsl   r25               /* >> 14: r26 */
-    rol   r26
-    lsl   r25
-    rol   r26
-    mov   r24, r26
+    mul   r16, r14
+    movw  r18, r0
+    add   r19, r22
+    mov   r20, ZERO
+    adc   r20, r23
+    subi  r18, 0xE0         /* + 8224 */
+    sbci  r19, 0xDF
+    sbci  r20, 0xFF
+    lsl   r19               /* >> 14: r20 */
+    rol   r20
+    lsl   r19
+    rol   r20
+    mov   r24, r20
     clr   r1
     pop   r17
     pop   r16
     pop   r15
     pop   r14
-    pop   r13
-    pop   r12
     ret
     .size r8k_level, .-r8k_level

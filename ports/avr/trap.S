@@ -40,6 +40,14 @@
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
  */
 
+/* the page groups' thresholds (grp2 below) */
+#ifndef GMIN
+#define GMIN 7
+#endif
+#ifndef IMIN
+#define IMIN 16
+#endif
+
 #define T0   r0     /* scratch: column byte, loop entry */
 #define NM   r1     /* ~m (cleared before returning) */
 #define LVL  r2     /* left edge: val, err, ~q, r, den */
@@ -71,15 +79,14 @@
 /* X = page + xl, Z = page + xr (from X = xl, Z = xr); T0 = n = xr - xl
  * (low byte: the loop is entered at column (-n) & 3) */
 .macro SETUP
-    sub   r30, r26
-    sbc   r31, r27          /* Z = n */
-    mov   T0, r30
-    ldd   NM, Y+0
-    add   r26, NM
+    ldd   T0, Y+0
     ldd   NM, Y+1
+    add   r26, T0
     adc   r27, NM           /* X = page + xl */
-    add   r30, r26
-    adc   r31, r27          /* Z = page + xr */
+    add   r30, T0
+    adc   r31, NM           /* Z = page + xr */
+    mov   T0, r30
+    sub   T0, r26           /* n (low byte) */
 .endm
 
 /* jump to column c[(-T0) & 3] of the loop */
@@ -220,7 +227,13 @@ r8k_trap:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+/* a call's first page, or a new page (from wrap): a group (grp2) when
+ * GMIN rows or more are left, else (T clear) the rows as they are */
+grp:
+    clt
+    cpi   ROWS, GMIN
+    brlo  row
+    rjmp  grp2
 
 row:
     ldd   r30, Y+8          /* Z = min(r->val, w) */
@@ -262,9 +275,10 @@ wrap:                       /* m = 1, page += w */
     adc   T0, NM
     std   Y+1, T0
     dec   ROWS
-    breq  1f
-    rjmp  grp               /* the next page: a new group */
-1:  rjmp  fin
+    brne  grp               /* the next page: a new group */
+    rjmp  fin
+sclrt:
+    rjmp  sclr
 
 span:                       /* X = xl < Z = xr */
     sbrc  K, 1              /* Q = pat[k] */
@@ -276,13 +290,10 @@ span:                       /* X = xl < Z = xr */
 3:  ldd   Q, Y+6
     sbrc  K, 0
     ldd   Q, Y+7
-4:  andi  Q, 0x0F
-    brne  5f
-    rjmp  sclr
-5:  cpi   Q, 0x0F
-    brne  6f
-    rjmp  sset
-6:
+4:  andi  Q, 0x0F          /* nibble 0: clear, F: set, else dither */
+    breq  sclrt
+    cpi   Q, 0x0F
+    breq  sset
     mov   NM, Q             /* dither: nibble in both halves, */
     swap  NM
     or    Q, NM
@@ -421,12 +432,6 @@ c3: CCLR
  * bit 0; 8 rows are two dither periods), bit 3 - (x & 3).  GMIN and
  * IMIN: the cube / torus / teapot figures (docs/benchmarks.md); smaller
  * groups and narrower spans lose more in set-up than they save. */
-#ifndef GMIN
-#define GMIN 7
-#endif
-#ifndef IMIN
-#define IMIN 16
-#endif
 /* a row of a group with an interior [A, B) (T set): its pieces [xl, A)
  * and [B, xr) (xl <= A < B <= xr) */
 growr:
@@ -473,9 +478,7 @@ growr:
 nogrp:
     clt                     /* the rows: whole spans */
     rjmp  row
-grp:
-    cpi   ROWS, GMIN        /* fewer than GMIN rows left, or on the page */
-    brlo  nogrp
+grp2:                       /* GMIN rows or more left: on the page too? */
     cpi   M, (1 << (8 - GMIN)) + 1
     brsh  nogrp
 #if GMIN == 7
@@ -904,24 +907,18 @@ one:
     movw  r30, r24
 2:  cp    r26, r30
     cpc   r27, r31
+    ldd   M, Y+2            /* (flags kept) m and k: the span's and */
+    ldd   K, Y+3            /* the step's */
     brge  ostep
-    ldd   M, Y+2
-    ldd   K, Y+3
     set                     /* T set: the span returns */
     rcall span
 ostep:
-    movw  r30, r22          /* l */
-    MSTEP
-    movw  r30, r20          /* r */
-    MSTEP
-    ldd   r24, Y+3          /* k = (k + 1) & 3 */
-    inc   r24
-    andi  r24, 3
-    std   Y+3, r24
-    ldd   r24, Y+2          /* m <<= 1; past bit 7: m = 1, page += w */
-    lsl   r24
+    inc   K                 /* k = (k + 1) & 3 */
+    andi  K, 3
+    std   Y+3, K
+    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
     brne  3f
-    inc   r24
+    inc   M
     ldd   r26, Y+0
     ldd   r27, Y+1
     ldd   r18, Y+8
@@ -930,7 +927,11 @@ ostep:
     adc   r27, r19
     std   Y+0, r26
     std   Y+1, r27
-3:  std   Y+2, r24
+3:  std   Y+2, M
+    movw  r30, r22          /* l */
+    MSTEP
+    movw  r30, r20          /* r */
+    MSTEP
     pop   r29
     pop   r28
     clr   r1

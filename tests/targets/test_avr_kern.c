@@ -196,6 +196,74 @@ static void test_trap_groups(void)
         unity_fail_int(__LINE__, "r8k_trap page groups: a class too rare", 300, (long)full);
 }
 
+/* ---- r8k_trap's short calls (the renderer's: 1..3 rows, spans of 1..6
+ * columns): every span width and column phase (xl & 3), each pattern
+ * class (nibble F: set, 0: clear, others: dither; the high nibble
+ * random), unclamped, clamped at 0 and at w, m one bit (page wraps
+ * within the call) or any byte, every k ---- */
+static void test_trap_short(void)
+{
+    unsigned rows, n, ph, cls, cm, k;
+    unsigned long i = 0;
+    for (rows = 1; rows <= 3; rows++)
+        for (n = 1; n <= 6; n++)
+            for (ph = 0; ph < 4; ph++)
+                for (cls = 0; cls < 4; cls++)
+                    for (cm = 0; cm < 3; cm++, i++) {
+                        r8_trapfill ta, tr;
+                        r8_interp la, lr_, ra, rr_;
+                        r8_s16 w = (r8_s16)(24 + rndn(16));
+                        unsigned off = rndn(256), len = GUARD + 2u * (unsigned)w + GUARD;
+                        r8_u8 *wa = band_asm + off, *wr = band_ref + off, b = (r8_u8)rnd();
+                        for (k = 0; k < len; k++) {
+                            b = (r8_u8)(b + 151u);
+                            wa[k] = b;
+                        }
+                        memcpy(wr, wa, len);
+                        ta.page = wa + GUARD;
+                        ta.m = (r8_u8)(rndn(4) ? 1u << rndn(8) : rnd());
+                        ta.k = (r8_u8)rndn(4);
+                        for (k = 0; k < 4; k++) {
+                            r8_u8 hi = (r8_u8)(rnd() & 0xF0u), lo = (r8_u8)(1u + rndn(14));
+                            if (cls == 0 || (cls == 3 && rndn(3) == 0))
+                                lo = 0x0F;
+                            else if (cls == 1 || (cls == 3 && rndn(2) == 0))
+                                lo = 0x00;
+                            ta.pat[k] = (r8_u8)(hi | lo);
+                        }
+                        ta.w = w;
+                        rnd_interp(&la, w);
+                        rnd_interp(&ra, w);
+                        la.q = (r8_s16)rnds(-1, 1);
+                        ra.q = (r8_s16)rnds(-1, 1);
+                        if (cm == 0) {          /* [8 + ph, + n) */
+                            la.val = (r8_s16)(8 + ph);
+                            ra.val = (r8_s16)(la.val + n);
+                        } else if (cm == 1) {   /* clamped to [0, n) */
+                            la.val = (r8_s16)(-1 - (int)ph);
+                            ra.val = (r8_s16)n;
+                        } else {                /* clamped to [w - n, w) */
+                            la.val = (r8_s16)(w - (r8_s16)n);
+                            ra.val = (r8_s16)(w + 1 + (r8_s16)ph);
+                        }
+                        tr = ta;
+                        tr.page = wr + GUARD;
+                        lr_ = la;
+                        rr_ = ra;
+                        r8k_trap_ref(&tr, &lr_, &rr_, (r8_u16)rows);
+                        r8k_trap(&ta, &la, &ra, (r8_u16)rows);
+                        if (memcmp(wa - off, wr - off, off + len) != 0 || ta.page - wa != tr.page - wr ||
+                            ta.m != tr.m || ta.k != tr.k || memcmp(&la, &lr_, sizeof la) != 0 ||
+                            memcmp(&ra, &rr_, sizeof ra) != 0) {
+                            print_case("r8k_trap short", i);
+                            unity_fail_int(__LINE__, "r8k_trap differs from the reference", (long)n, (long)rows);
+                        }
+                    }
+    unity_print("r8k_trap short: ");
+    unity_print_long((long)i);
+    unity_print(" cases\n");
+}
+
 /* ---- r8k_xform inputs, r8k_edge, r8k_project: tests/targets/kern_cases.h ---- */
 extern const char _etext[];   /* end of the program's code (avr-libc's linker script) */
 #define KERN_CODE_PTR() ((const r8_s16 *)(rndn((unsigned)_etext - 6u)))
@@ -1103,6 +1171,7 @@ int main(void)
     RUN_TEST(test_trap_random);
     RUN_TEST(test_trap_many_rows);
     RUN_TEST(test_trap_groups);
+    RUN_TEST(test_trap_short);
     RUN_TEST(test_xform_random);
     RUN_TEST(test_edge_random);
     RUN_TEST(test_project_random);
