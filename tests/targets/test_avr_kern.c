@@ -374,9 +374,12 @@ static void test_zsum_random(void)
  * order of r8_tf_vertex's calls (their mv, g and o checked); with bsh >= 0 (faces put in band
  * buckets: 8- or 16-bit ids, slots or none) also the buckets, links,
  * slots and npoly; with bsh < 0, half the time painter's (pk: faces put
- * in depth buckets, ftop or none): the buckets, links, slots, ftop, vi
- * and zs too, keys 0, 63 and between each hit in 50 walks; each outcome must
- * be hit ---- */
+ * in depth buckets, ftop or none): the buckets, links, slots and ftop
+ * too, keys 0, 63 and between each hit in 50 walks; half the painter's
+ * walks over fw_big, whose x components make the depth sums of
+ * fwpaint.S's every path (a 16-bit overflow on the way, the exact sums
+ * then in range or not; -32768 without one), each walked over 100
+ * times; each outcome must be hit ---- */
 #define FW_NV 48
 #define FW_NI(i, j) (((i) * 37 + (j) * 13 + ((i) >> 2) * 7 + 5) % FW_NV)
 #define FW_N(i) ((i) % 16 == 6 ? 2 : (i) % 16 == 11 ? 5 : (i) % 16 == 15 ? 0 : 3 + ((i) * 5 % 3 != 0))
@@ -384,6 +387,45 @@ static void test_zsum_random(void)
 static const r8_face fw_faces[] R8_FLASH = {
     KC_64(FW_F, 0), KC_16(FW_F, 64), KC_16(FW_F, 80)
 };
+#define FW_BS(h) ((h) == 3 ? -16384 : (h) == 5 ? 16384 : (h) == 6 ? -32767 - 1 : (h) == 7 ? 24000 : (h) == 2)
+#define FW_B1(i) (r8_s16)((i) % 3 ? KC_V1(i) : FW_BS(((i) * 11 + ((i) >> 3)) % 8))
+static const r8_s16 fw_big[] R8_FLASH = {   /* FW_NV model vertices from */
+    KC_64(FW_B1, 0), KC_64(FW_B1, 64), KC_16(FW_B1, 128), FW_B1(144), FW_B1(145)   /* 0, 1, 2 */
+};
+/* face f's depth sums over fw_big + o as fwpaint.S meets them: 0 plain,
+ * 1 a 16-bit overflow on the way and the exact sums in [-32767, 32767],
+ * 2 the same out of it, 3 no overflow and a sum of -32768; 4 n not 3,
+ * 4.  (The big values are the x components at o = 0, z at 1, y at 2.) */
+static unsigned fw_class(unsigned f, unsigned o)
+{
+    r8_u8 n = R8_RDU8(&fw_faces[f].n), j, c, ov = 0, out = 0;
+    if (n < 3 || n > 4)
+        return 4;
+    for (c = 0; c < 3; c++) {
+        r8_s32 t = 0;
+        for (j = 0; j < n; j++) {
+            t += R8_RDS16(fw_big + o + 3u * R8_RDU8(&fw_faces[f].v[j]) + c);
+            if (t < -32768L || t > 32767L)
+                ov = 1;           /* (t stays exact: the 16-bit sum wraps) */
+            if (t < -32768L)
+                t += 65536L;
+            else if (t > 32767L)
+                t -= 65536L;
+        }
+        out |= t == -32768L;
+    }
+    if (ov) {                     /* the exact sums */
+        out = 0;
+        for (c = 0; c < 3; c++) {
+            r8_s32 t = 0;
+            for (j = 0; j < n; j++)
+                t += R8_RDS16(fw_big + o + 3u * R8_RDU8(&fw_faces[f].v[j]) + c);
+            out |= t < -32767L || t > 32767L;
+        }
+        return out ? 2 : 1;
+    }
+    return out ? 3 : 0;
+}
 static r8_s16 fw_tf[FW_NV][2];        /* what r8_tf_vertex writes */
 #define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
 /* the heads (64 keys) and ftop in band_ref, the vertices, links and
@@ -397,6 +439,7 @@ static r8_u8 (*fw_ftop)[FW_NID];
 static r8_fwpk fw_pk[2];               /* painter's keys (one per walk) */
 static r8_s16 fw_row[3];
 static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
+static unsigned long fw_cls[5];        /* faces walked over fw_big, by fw_class */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
 /* r8k_fwalk's st is the walk itself here; o is fw_o */
@@ -513,11 +556,16 @@ static void test_fwalk_random(void)
                 fw_row[k] = rndn(4) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
             w[0].pk = &fw_pk[0];
             w[0].paint = r8k_fwpaint;
+            if (rndn(2)) {            /* sums past 16 bits (no cull: its -1) */
+                c = rndn(3);
+                w[0].verts = fw_big + c;
+                w[0].normals = 0;
+                for (k = 0; k < nf; k++)
+                    fw_cls[fw_class(off + k, c)]++;
+            }
             fw_pk[0].row = fw_row;
             fw_pk[0].fbsh = (r8_s8)rndn(6);
         }
-        fw_pk[0].zs = 0;
-        memset(fw_pk[0].vi, 0, sizeof fw_pk[0].vi);
         fw_pk[0].ftop = rndn(2) ? fw_ftop[0] : 0;
         fw_pk[1] = fw_pk[0];
         fw_pk[1].ftop = fw_pk[0].ftop ? fw_ftop[1] : 0;
@@ -546,8 +594,7 @@ static void test_fwalk_random(void)
             if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
                 w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
                 memcmp(fw_next[0], fw_next[1], sizeof fw_next[0]) || memcmp(fw_slot[0], fw_slot[1], sizeof fw_slot[0]) ||
-                memcmp(fw_ftop[0], fw_ftop[1], sizeof fw_ftop[0]) || fw_pk[0].zs != fw_pk[1].zs ||
-                memcmp(fw_pk[0].vi, fw_pk[1].vi, sizeof fw_pk[0].vi) ||
+                memcmp(fw_ftop[0], fw_ftop[1], sizeof fw_ftop[0]) ||
                 memcmp(fw_sv[0], fw_sv[1], sizeof fw_sv[0]) || fw_nlog[0] != fw_nlog[1] ||
                 memcmp(fw_log[0], fw_log[1], fw_nlog[0])) {
                 print_case("r8k_fwalk", i);
@@ -569,6 +616,9 @@ static void test_fwalk_random(void)
     for (i = 0; i < 3; i++)
         if (fw_keys[i] < 50)
             unity_fail_int(__LINE__, "r8k_fwalk: a painter's key class too rare", 50, (long)fw_keys[i]);
+    for (i = 0; i < 4; i++)
+        if (fw_cls[i] < 100)
+            unity_fail_int(__LINE__, "r8k_fwalk: a depth sum class too rare", 100, (long)fw_cls[i]);
     hit[2] = fw_calls;
     for (i = 0; i < 4; i++)
         if (hit[i] < 1000)
