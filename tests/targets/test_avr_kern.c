@@ -331,18 +331,52 @@ static void test_level_random(void)
             unity_fail_int(__LINE__, "r8k_level: a class too rare", 1000, (long)hit[i]);
 }
 
+/* model vertices whose x components (at fw_big + 0; z at + 1, y at + 2)
+ * make depth sums past 16 bits and of -32768: 48 of them */
+#define FW_BS(h) ((h) == 3 ? -16384 : (h) == 5 ? 16384 : (h) == 6 ? -32767 - 1 : (h) == 7 ? 24000 : (h) == 2)
+#define FW_B1(i) (r8_s16)((i) % 3 ? KC_V1(i) : FW_BS(((i) * 11 + ((i) >> 3)) % 8))
+static const r8_s16 fw_big[] R8_FLASH = {
+    KC_64(FW_B1, 0), KC_64(FW_B1, 64), KC_16(FW_B1, 128), FW_B1(144), FW_B1(145)
+};
+/* the depth sums of verts[3 vi[k] ..] as r8k_zsum's and fwpaint.S's 16-bit
+ * sums meet them: 0 plain, 1 a 16-bit overflow on the way and the exact
+ * sums in [-32767, 32767], 2 the same out of it, 3 no overflow and a sum
+ * of -32768 */
+static unsigned zs_class(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n)
+{
+    r8_u8 j, c, ov = 0, out = 0;
+    for (c = 0; c < 3; c++) {
+        r8_s32 t = 0, e = 0;
+        for (j = 0; j < n; j++) {
+            r8_s16 v = R8_RDS16(verts + 3u * vi[j] + c);
+            e += v;
+            t += v;
+            if (t < -32768L || t > 32767L)
+                ov = 1;
+            if (t < -32768L)      /* t: the 16-bit sum, wrapped */
+                t += 65536L;
+            else if (t > 32767L)
+                t -= 65536L;
+        }
+        out |= (r8_u8)(ov ? e < -32767L || e > 32767L : t == -32768L);
+    }
+    return ov ? (out ? 2u : 1u) : (out ? 3u : 0u);
+}
+
 /* ---- r8k_zsum (ports/avr/facez.S): the vertex table the program's own
- * code (arbitrary words: sums past 16 bits) or kc_verts (small), n 1..4,
- * indices 0..255 (code) or within kc_verts, row entries Q1.14; the
- * result and *out compared (out left as it was on 0); both classes of
- * result must be hit ---- */
+ * code (arbitrary words: sums past 16 bits), fw_big + 0..2 or kc_verts
+ * (small), n 1..4, indices 0..255 (code) or within the table, row
+ * entries Q1.14; the result and *out compared (out left as it was on 0);
+ * both results and every zs_class must be hit ---- */
 static void test_zsum_random(void)
 {
-    unsigned long i, hit[2] = {0, 0};
+    unsigned long i, hit[6] = {0, 0, 0, 0, 0, 0};
     for (i = 0; i < 20000; i++) {
-        int code = rndn(3) == 0;
-        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) : kc_verts;
-        unsigned nv = code ? 256u : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
+        unsigned src = rndn(6);
+        int code = src < 2;
+        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) :
+                              src < 4 ? fw_big + rndn(3) : kc_verts;
+        unsigned nv = code ? 256u : src < 4 ? (unsigned)(sizeof fw_big / sizeof fw_big[0] / 3u) : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
         r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
         r8_s16 row[3];
         r8_s32 oa = 0x5A5A5A5AL, orf = 0x5A5A5A5AL;
@@ -358,9 +392,13 @@ static void test_zsum_random(void)
             unity_fail_int(__LINE__, "r8k_zsum differs from the reference", (long)orf, (long)oa);
         }
         hit[rr ? 1 : 0]++;
+        hit[2 + zs_class(verts, vi, n)]++;
     }
     if (hit[0] < 300 || hit[1] < 3000)
         unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
+    for (i = 2; i < 6; i++)
+        if (hit[i] < 100)
+            unity_fail_int(__LINE__, "r8k_zsum: a zs_class too rare", (long)i - 2, (long)hit[i]);
 }
 
 /* ---- r8k_fwalk (ports/avr/fwalk.S): walks over a flash table of faces
@@ -387,45 +425,6 @@ static void test_zsum_random(void)
 static const r8_face fw_faces[] R8_FLASH = {
     KC_64(FW_F, 0), KC_16(FW_F, 64), KC_16(FW_F, 80)
 };
-#define FW_BS(h) ((h) == 3 ? -16384 : (h) == 5 ? 16384 : (h) == 6 ? -32767 - 1 : (h) == 7 ? 24000 : (h) == 2)
-#define FW_B1(i) (r8_s16)((i) % 3 ? KC_V1(i) : FW_BS(((i) * 11 + ((i) >> 3)) % 8))
-static const r8_s16 fw_big[] R8_FLASH = {   /* FW_NV model vertices from */
-    KC_64(FW_B1, 0), KC_64(FW_B1, 64), KC_16(FW_B1, 128), FW_B1(144), FW_B1(145)   /* 0, 1, 2 */
-};
-/* face f's depth sums over fw_big + o as fwpaint.S meets them: 0 plain,
- * 1 a 16-bit overflow on the way and the exact sums in [-32767, 32767],
- * 2 the same out of it, 3 no overflow and a sum of -32768; 4 n not 3,
- * 4.  (The big values are the x components at o = 0, z at 1, y at 2.) */
-static unsigned fw_class(unsigned f, unsigned o)
-{
-    r8_u8 n = R8_RDU8(&fw_faces[f].n), j, c, ov = 0, out = 0;
-    if (n < 3 || n > 4)
-        return 4;
-    for (c = 0; c < 3; c++) {
-        r8_s32 t = 0;
-        for (j = 0; j < n; j++) {
-            t += R8_RDS16(fw_big + o + 3u * R8_RDU8(&fw_faces[f].v[j]) + c);
-            if (t < -32768L || t > 32767L)
-                ov = 1;           /* (t stays exact: the 16-bit sum wraps) */
-            if (t < -32768L)
-                t += 65536L;
-            else if (t > 32767L)
-                t -= 65536L;
-        }
-        out |= t == -32768L;
-    }
-    if (ov) {                     /* the exact sums */
-        out = 0;
-        for (c = 0; c < 3; c++) {
-            r8_s32 t = 0;
-            for (j = 0; j < n; j++)
-                t += R8_RDS16(fw_big + o + 3u * R8_RDU8(&fw_faces[f].v[j]) + c);
-            out |= t < -32767L || t > 32767L;
-        }
-        return out ? 2 : 1;
-    }
-    return out ? 3 : 0;
-}
 static r8_s16 fw_tf[FW_NV][2];        /* what r8_tf_vertex writes */
 #define FW_NID 96                     /* face ids: fbase < 32, f < 64 */
 /* the heads (64 keys) and ftop in band_ref, the vertices, links and
@@ -439,7 +438,7 @@ static r8_u8 (*fw_ftop)[FW_NID];
 static r8_fwpk fw_pk[2];               /* painter's keys (one per walk) */
 static r8_s16 fw_row[3];
 static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
-static unsigned long fw_cls[5];        /* faces walked over fw_big, by fw_class */
+static unsigned long fw_cls[5];        /* faces walked over fw_big, by zs_class (4: n not 3, 4) */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
 /* r8k_fwalk's st is the walk itself here; o is fw_o */
@@ -560,8 +559,13 @@ static void test_fwalk_random(void)
                 c = rndn(3);
                 w[0].verts = fw_big + c;
                 w[0].normals = 0;
-                for (k = 0; k < nf; k++)
-                    fw_cls[fw_class(off + k, c)]++;
+                for (k = 0; k < nf; k++) {
+                    const r8_face *fc = &fw_faces[off + k];
+                    r8_u8 vi[4], j, n = R8_RDU8(&fc->n);
+                    for (j = 0; j < 4; j++)
+                        vi[j] = R8_RDU8(&fc->v[j]);
+                    fw_cls[n < 3 || n > 4 ? 4 : zs_class(fw_big + c, vi, n)]++;
+                }
             }
             fw_pk[0].row = fw_row;
             fw_pk[0].fbsh = (r8_s8)rndn(6);
