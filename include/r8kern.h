@@ -106,8 +106,6 @@ typedef struct r8_fwpk {
     const r8_s16 *row;      /* r8k_zsum's row (RAM) */
     r8_u8 *ftop;            /* first band per face id, or 0 */
     r8_s8 fbsh;             /* its log2 band rows (>= 0 when ftop is set) */
-    r8_u8 vi[R8_MAX_FACE_VERTS];   /* (r8k_zsum's vi) */
-    r8_s32 zs;              /* (r8k_zsum's out) */
 } r8_fwpk;
 
 /* r8k_fwalk's walk over one object's faces (r8_bucket_object). */
@@ -152,8 +150,8 @@ typedef struct r8_fwalk {
  * r8_bucket_object does (id = fbase + f; next[id] = heads[key], heads[key]
  * = id, key = top >> bsh or 0 for top < 0; slot[id] = 0xFF; npoly + 1),
  * and the walk goes on; with bsh < 0 w->top, w->bot are set and, with pk,
- * when r8k_zsum(verts, pk->vi, n, pk->row, &pk->zs) gives 1 for the face's
- * vertex indices (copied to pk->vi), it is put in its depth bucket (key =
+ * when r8k_zsum(verts, vi, n, pk->row, &zs) gives 1 for the face's
+ * vertex indices vi, it is put in its depth bucket (key =
  * 63 - min(63, k) for z = zs + zc in [0, zr), k = (r8_u16)(z kmul >> 16),
  * >> 2 more for n = 4; key 0 for z >= zr, z < 0 taken as 0; the constants
  * pk->k[0..2] for n = 3, k[3..5] for n = 4, arithmetic wrapping; then

@@ -201,16 +201,18 @@ r8_u8 r8k_fwalk(r8_fwalk *w)
                 r8_fwpk *p = w->pk;
                 const r8_s32 *pk;
                 r8_u32 z;
+                r8_u8 vi[R8_MAX_FACE_VERTS];
+                r8_s32 zs;
                 w->top = top;
                 w->bot = bot;
                 if (!p)
                     return 1;
                 for (j = 0; j < n; j++)
-                    p->vi[j] = R8_RDU8(&fc->v[j]);
-                if (!r8k_zsum(w->verts, p->vi, n, p->row, &p->zs))
+                    vi[j] = R8_RDU8(&fc->v[j]);
+                if (!r8k_zsum(w->verts, vi, n, p->row, &zs))
                     return 1;
                 pk = p->k + (n == 4 ? 3 : 0);
-                z = (r8_u32)p->zs + (r8_u32)pk[0];
+                z = (r8_u32)zs + (r8_u32)pk[0];
                 if (z & 0x80000000UL)
                     z = 0;
                 if ((r8_s32)z < pk[1]) {
@@ -281,8 +283,6 @@ R8_CASSERT(fwalk_paint_at_41, offsetof(r8_fwalk, paint) == 41);
 R8_CASSERT(fwpk_row_at_24, offsetof(r8_fwpk, row) == 24);
 R8_CASSERT(fwpk_ftop_at_26, offsetof(r8_fwpk, ftop) == 26);
 R8_CASSERT(fwpk_fbsh_at_28, offsetof(r8_fwpk, fbsh) == 28);
-R8_CASSERT(fwpk_vi_at_29, offsetof(r8_fwpk, vi) == 29);
-R8_CASSERT(fwpk_zs_at_33, offsetof(r8_fwpk, zs) == 33);
 R8_CASSERT(fwalk_face_6, sizeof(r8_face) == 6 && offsetof(r8_face, v) == 2);
 #endif
 

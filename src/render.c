@@ -747,7 +747,7 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
 #if !defined(R8_NO_FWALK) && (defined(R8_ASM_FWALK) || !(defined(__SDCC) || defined(__CC65__)))
 #define R8_FWALK_K 1
 /* R8_FWALK_PK: with painter's, r8k_fwalk puts the faces in their depth
- * buckets itself (an r8_fwpk: 37 B more stack, which the 2 KB parts,
+ * buckets itself (an r8_fwpk: 29 B more stack, which the 2 KB parts,
  * built with R8_SMALL_SCENE, cannot spare: they keep the C keys) */
 #ifndef R8_SMALL_SCENE
 #define R8_FWALK_PK 1

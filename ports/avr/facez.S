@@ -12,10 +12,13 @@
  *
  * Registers (avr-gcc ABI): arguments verts r25:r24, vi r23:r22, n r20,
  * row r19:r18, out r17:r16 (call-saved: pushed, and popped back into
- * r17:r16 to be used).  X = vi, then row; Z = the vertex; the sums
- * r14:r19:r18, r15:r21:r20, r13:r23:r22; n in r12; row in r11:r10; the
- * product sum r27:r26:r25:r24; r15 zero after the loop.  Saves
- * r10..r17; clears r1.
+ * r17:r16 to be used).  First the sums in 16 bits: X = vi, r16 = 6, r17
+ * counts, Z the vertex, sums r11:r10, r13:r12, r15:r14; a signed
+ * overflow (V) starts again with the 24-bit sums (the arguments are
+ * still there): X = vi, then row; Z = the vertex; the sums
+ * r14:r19:r18, r15:r21:r20, r13:r23:r22; n in r12; row in r11:r10.
+ * Then Z = row, the product sum r27:r26:r25:r24 of the sums in r19:r18,
+ * r21:r20, r23:r22; r15 zero.  Saves r10..r17; clears r1.
  */
 #ifdef R8_NO_PROGMEM
 #define RD(r) ld r, Z+
@@ -88,6 +91,63 @@ r8k_zsum:
     push  r17               /* out (popped back at the end) */
     push  r16
     movw  r26, r22          /* X = vi */
+    ldi   r16, 6
+    mov   r17, r20
+    ld    r30, X+           /* the first vertex sets the 16-bit sums */
+    mul   r30, r16
+    movw  r30, r0
+    add   r30, r24
+    adc   r31, r25
+    RD(r10)
+    RD(r11)
+    RD(r12)
+    RD(r13)
+    RD(r14)
+    RD(r15)
+    dec   r17
+    breq  4f
+3:  ld    r30, X+
+    mul   r30, r16
+    movw  r30, r0
+    add   r30, r24
+    adc   r31, r25
+    RD(r0)                  /* (lpm and ld leave C and V) */
+    add   r10, r0
+    RD(r0)
+    adc   r11, r0
+    brvs  z24
+    RD(r0)
+    add   r12, r0
+    RD(r0)
+    adc   r13, r0
+    brvs  z24
+    RD(r0)
+    add   r14, r0
+    RD(r0)
+    adc   r15, r0
+    brvs  z24
+    dec   r17
+    brne  3b
+4:  movw  r30, r18          /* Z = row */
+    movw  r18, r10
+    movw  r20, r12
+    movw  r22, r14
+    ldi   r16, 0x80         /* a sum of -32768: out */
+    tst   r18
+    brne  5f
+    cp    r19, r16
+    breq  zo
+5:  tst   r20
+    brne  5f
+    cp    r21, r16
+    breq  zo
+5:  tst   r22
+    brne  prod
+    cp    r23, r16
+    brne  prod
+zo: rjmp  out
+z24:
+    movw  r26, r22          /* X = vi */
     movw  r10, r18          /* row */
     mov   r12, r20          /* n */
     clr   r18
@@ -111,16 +171,10 @@ r8k_zsum:
     ADDV  r22, r23, r13
     dec   r12
     brne  1b
-    RANGE r18, r19, r14
-    RANGE r20, r21, r15
-    RANGE r22, r23, r13
-    rjmp  2f
-out:
-    pop   r16               /* 0: a sum needs more than 16 bits */
-    pop   r17
-    ldi   r24, 0
-    rjmp  done
-2:  movw  r30, r10          /* Z = row */
+    rjmp  z24r
+z24p:
+    movw  r30, r10          /* Z = row */
+prod:
     clr   ZERO
     ld    r16, Z+           /* the first product sets the sum */
     ld    r17, Z+
@@ -170,4 +224,14 @@ done:
     pop   r11
     pop   r10
     ret
+z24r:                       /* (the 24-bit sums' tests, out of the way) */
+    RANGE r18, r19, r14
+    RANGE r20, r21, r15
+    RANGE r22, r23, r13
+    rjmp  z24p
+out:
+    pop   r16               /* 0: a sum needs more than 16 bits */
+    pop   r17
+    ldi   r24, 0
+    rjmp  done
     .size r8k_zsum, .-r8k_zsum

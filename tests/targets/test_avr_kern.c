@@ -400,18 +400,52 @@ static void test_level_random(void)
             unity_fail_int(__LINE__, "r8k_level: a class too rare", 1000, (long)hit[i]);
 }
 
+/* model vertices whose x components (at fw_big + 0; z at + 1, y at + 2)
+ * make depth sums past 16 bits and of -32768: 48 of them */
+#define FW_BS(h) ((h) == 3 ? -16384 : (h) == 5 ? 16384 : (h) == 6 ? -32767 - 1 : (h) == 7 ? 24000 : (h) == 2)
+#define FW_B1(i) (r8_s16)((i) % 3 ? KC_V1(i) : FW_BS(((i) * 11 + ((i) >> 3)) % 8))
+static const r8_s16 fw_big[] R8_FLASH = {
+    KC_64(FW_B1, 0), KC_64(FW_B1, 64), KC_16(FW_B1, 128), FW_B1(144), FW_B1(145)
+};
+/* the depth sums of verts[3 vi[k] ..] as r8k_zsum's and fwpaint.S's 16-bit
+ * sums meet them: 0 plain, 1 a 16-bit overflow on the way and the exact
+ * sums in [-32767, 32767], 2 the same out of it, 3 no overflow and a sum
+ * of -32768 */
+static unsigned zs_class(const r8_s16 *verts, const r8_u8 *vi, r8_u8 n)
+{
+    r8_u8 j, c, ov = 0, out = 0;
+    for (c = 0; c < 3; c++) {
+        r8_s32 t = 0, e = 0;
+        for (j = 0; j < n; j++) {
+            r8_s16 v = R8_RDS16(verts + 3u * vi[j] + c);
+            e += v;
+            t += v;
+            if (t < -32768L || t > 32767L)
+                ov = 1;
+            if (t < -32768L)      /* t: the 16-bit sum, wrapped */
+                t += 65536L;
+            else if (t > 32767L)
+                t -= 65536L;
+        }
+        out |= (r8_u8)(ov ? e < -32767L || e > 32767L : t == -32768L);
+    }
+    return ov ? (out ? 2u : 1u) : (out ? 3u : 0u);
+}
+
 /* ---- r8k_zsum (ports/avr/facez.S): the vertex table the program's own
- * code (arbitrary words: sums past 16 bits) or kc_verts (small), n 1..4,
- * indices 0..255 (code) or within kc_verts, row entries Q1.14; the
- * result and *out compared (out left as it was on 0); both classes of
- * result must be hit ---- */
+ * code (arbitrary words: sums past 16 bits), fw_big + 0..2 or kc_verts
+ * (small), n 1..4, indices 0..255 (code) or within the table, row
+ * entries Q1.14; the result and *out compared (out left as it was on 0);
+ * both results and every zs_class must be hit ---- */
 static void test_zsum_random(void)
 {
-    unsigned long i, hit[2] = {0, 0};
+    unsigned long i, hit[6] = {0, 0, 0, 0, 0, 0};
     for (i = 0; i < 20000; i++) {
-        int code = rndn(3) == 0;
-        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) : kc_verts;
-        unsigned nv = code ? 256u : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
+        unsigned src = rndn(6);
+        int code = src < 2;
+        const r8_s16 *verts = code ? (const r8_s16 *)(2u * rndn(((unsigned)_etext - 1600u) / 2u)) :
+                              src < 4 ? fw_big + rndn(3) : kc_verts;
+        unsigned nv = code ? 256u : src < 4 ? (unsigned)(sizeof fw_big / sizeof fw_big[0] / 3u) : (unsigned)(sizeof kc_verts / sizeof kc_verts[0] / 3u), k;
         r8_u8 vi[4], n = (r8_u8)(1 + rndn(4));
         r8_s16 row[3];
         r8_s32 oa = 0x5A5A5A5AL, orf = 0x5A5A5A5AL;
@@ -427,9 +461,13 @@ static void test_zsum_random(void)
             unity_fail_int(__LINE__, "r8k_zsum differs from the reference", (long)orf, (long)oa);
         }
         hit[rr ? 1 : 0]++;
+        hit[2 + zs_class(verts, vi, n)]++;
     }
     if (hit[0] < 300 || hit[1] < 3000)
         unity_fail_int(__LINE__, "r8k_zsum: a class too rare", (long)hit[0], (long)hit[1]);
+    for (i = 2; i < 6; i++)
+        if (hit[i] < 100)
+            unity_fail_int(__LINE__, "r8k_zsum: a zs_class too rare", (long)i - 2, (long)hit[i]);
 }
 
 /* ---- r8k_fwalk (ports/avr/fwalk.S): walks over a flash table of faces
@@ -443,9 +481,12 @@ static void test_zsum_random(void)
  * order of r8_tf_vertex's calls (their mv, g and o checked); with bsh >= 0 (faces put in band
  * buckets: 8- or 16-bit ids, slots or none) also the buckets, links,
  * slots and npoly; with bsh < 0, half the time painter's (pk: faces put
- * in depth buckets, ftop or none): the buckets, links, slots, ftop, vi
- * and zs too, keys 0, 63 and between each hit in 50 walks; each outcome must
- * be hit ---- */
+ * in depth buckets, ftop or none): the buckets, links, slots and ftop
+ * too, keys 0, 63 and between each hit in 50 walks; half the painter's
+ * walks over fw_big, whose x components make the depth sums of
+ * fwpaint.S's every path (a 16-bit overflow on the way, the exact sums
+ * then in range or not; -32768 without one), each walked over 100
+ * times; each outcome must be hit ---- */
 #define FW_NV 48
 #define FW_NI(i, j) (((i) * 37 + (j) * 13 + ((i) >> 2) * 7 + 5) % FW_NV)
 #define FW_N(i) ((i) % 16 == 6 ? 2 : (i) % 16 == 11 ? 5 : (i) % 16 == 15 ? 0 : 3 + ((i) * 5 % 3 != 0))
@@ -466,6 +507,7 @@ static r8_u8 (*fw_ftop)[FW_NID];
 static r8_fwpk fw_pk[2];               /* painter's keys (one per walk) */
 static r8_s16 fw_row[3];
 static unsigned long fw_keys[3];       /* painter's keys: 0, 1..62, 63 */
+static unsigned long fw_cls[5];        /* faces walked over fw_big, by zs_class (4: n not 3, 4) */
 static r8_u8 fw_log[2][FW_NV + 1], fw_nlog[2], fw_run;
 static unsigned long fw_calls;
 /* r8k_fwalk's st is vx_st here (with vsh 2 and Gouraud, so that fwalk.S's
@@ -594,11 +636,21 @@ static void test_fwalk_random(void)
                 fw_row[k] = rndn(4) ? rnds(-16384, 16384) : (rndn(2) ? 16384 : -16384);
             w[0].pk = &fw_pk[0];
             w[0].paint = r8k_fwpaint;
+            if (rndn(2)) {            /* sums past 16 bits (no cull: its -1) */
+                c = rndn(3);
+                w[0].verts = fw_big + c;
+                w[0].normals = 0;
+                for (k = 0; k < nf; k++) {
+                    const r8_face *fc = &fw_faces[off + k];
+                    r8_u8 vi[4], j, n = R8_RDU8(&fc->n);
+                    for (j = 0; j < 4; j++)
+                        vi[j] = R8_RDU8(&fc->v[j]);
+                    fw_cls[n < 3 || n > 4 ? 4 : zs_class(fw_big + c, vi, n)]++;
+                }
+            }
             fw_pk[0].row = fw_row;
             fw_pk[0].fbsh = (r8_s8)rndn(6);
         }
-        fw_pk[0].zs = 0;
-        memset(fw_pk[0].vi, 0, sizeof fw_pk[0].vi);
         fw_pk[0].ftop = rndn(2) ? fw_ftop[0] : 0;
         fw_pk[1] = fw_pk[0];
         fw_pk[1].ftop = fw_pk[0].ftop ? fw_ftop[1] : 0;
@@ -631,8 +683,7 @@ static void test_fwalk_random(void)
             if (r[0] != r[1] || w[0].f != w[1].f || w[0].top != w[1].top || w[0].bot != w[1].bot ||
                 w[0].npoly != w[1].npoly || memcmp(fw_heads[0], fw_heads[1], sizeof fw_heads[0]) ||
                 memcmp(fw_next[0], fw_next[1], sizeof fw_next[0]) || memcmp(fw_slot[0], fw_slot[1], sizeof fw_slot[0]) ||
-                memcmp(fw_ftop[0], fw_ftop[1], sizeof fw_ftop[0]) || fw_pk[0].zs != fw_pk[1].zs ||
-                memcmp(fw_pk[0].vi, fw_pk[1].vi, sizeof fw_pk[0].vi) ||
+                memcmp(fw_ftop[0], fw_ftop[1], sizeof fw_ftop[0]) ||
                 memcmp(fw_sv[0], fw_sv[1], sizeof fw_sv[0]) || fw_nlog[0] != fw_nlog[1] ||
                 memcmp(fw_log[0], fw_log[1], fw_nlog[0])) {
                 print_case("r8k_fwalk", i);
@@ -654,6 +705,9 @@ static void test_fwalk_random(void)
     for (i = 0; i < 3; i++)
         if (fw_keys[i] < 50)
             unity_fail_int(__LINE__, "r8k_fwalk: a painter's key class too rare", 50, (long)fw_keys[i]);
+    for (i = 0; i < 4; i++)
+        if (fw_cls[i] < 100)
+            unity_fail_int(__LINE__, "r8k_fwalk: a depth sum class too rare", 100, (long)fw_cls[i]);
     hit[2] = fw_calls;
     for (i = 0; i < 4; i++)
         if (hit[i] < 1000)
