@@ -74,6 +74,15 @@ ts_pt:  .ds     2               ; t, l, r themselves
 ts_pl:  .ds     2
 ts_pr:  .ds     2
 ts_ph:  .ds     1               ; a dither span's first phase
+ts_nm:  .ds     1               ; its ~mask
+ga:     .ds     8               ; a group's rows: clamp(l.val, 0, w)
+gb:     .ds     8               ; clamp(r.val, 0, w) (ga + 8)
+gg:     .ds     1               ; the group's rows (2..8)
+gA:     .ds     1               ; max ga, or 255: no common columns
+gB:     .ds     1               ; min gb, or 255
+gpn:    .ds     2               ; the next row's pattern (in p12)
+gmi:    .ds     1               ; the next row's bit
+p12:    .ds     12              ; pat[0..3] three times
 
         .area   _CODE
 
@@ -95,6 +104,13 @@ _r8k_trap:
         ld      (ts_rows), de
         ld      de, #tr
         ld      bc, #10
+        ldir
+        ld      hl, #ts_pat     ; p12: the patterns three times over
+        ld      de, #p12
+        ld      c, #4
+        ldir
+        ld      hl, #p12
+        ld      c, #8
         ldir
         push    ix
         jp      next
@@ -247,7 +263,38 @@ next:   ld      hl, (ts_rows)
         ld      a, h
         or      a, l
         jr      z, done
-        dec     hl
+        ld      a, (ts_w + 1)   ; a group of rows needs w <= 255 and m
+        or      a, a            ; one bit
+        jr      nz, single
+        ld      a, (ts_m)
+        or      a, a
+        jr      z, single
+        ld      b, a
+        dec     a
+        and     a, b
+        jr      nz, single
+        ld      a, b
+        ld      c, #0
+1$:     inc     c               ; C = the rows to the page's end
+        add     a, a
+        jr      nz, 1$
+        ld      a, h            ; g = min(C, rows)
+        or      a, a
+        jr      nz, 2$
+        ld      a, l
+        cp      a, c
+        jr      nc, 2$
+        ld      c, a
+2$:     ld      a, c
+        cp      a, #2
+        jr      c, single
+        ld      e, c
+        ld      d, #0
+        or      a, a
+        sbc     hl, de
+        ld      (ts_rows), hl
+        jp      grp
+single: dec     hl
         ld      (ts_rows), hl
         jp      row
 
@@ -305,7 +352,43 @@ fdith:  ld      d, a            ; D = pat
         ld      a, e
         and     a, #3
         ld      (ts_ph), a
-        push    hl              ; the first byte
+        push    bc              ; n
+        ld      a, (ts_m)
+        ld      c, a            ; C = m
+        cpl
+        ld      (ts_nm), a
+        ld      b, d            ; the nibble's bits from bit 0 (phase 3)
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      d, a            ; phase 3
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXL_A                ; phase 2
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXH_A                ; phase 1
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      e, a            ; phase 0
+        pop     bc
+        call    dspan
+        jp      step
+
+;; dspan: columns [x, x + n) of one page byte row: HL = the first byte,
+;; BC = n >= 1, (ts_ph) = x & 3, (ts_nm) = ~mask, the four column values
+;; (phases 0..3) in E, IXH, IXL, D.  Each byte = (byte & ~mask) | value.
+;; With ph = (ts_ph), the span passes phase 3 G = (ph + n) / 4 times: the
+;; unchecked loop g0..g3 is entered at phase ph and runs G times (B,
+;; then IYL passes of 256), then the T = (ph + n) & 3 columns left (IYH)
+;; go through d0.., which counts each column in B; a span that never
+;; reaches phase 3 (G = 0, n < 4) goes there too, entered at ph.
+;; Clobbers A, BC, HL, IY.
+dspan:  push    hl              ; the first byte
+        ld      a, (ts_ph)
         ld      l, a
         ld      h, #0
         add     hl, bc          ; ph + n
@@ -331,31 +414,9 @@ fdith:  ld      d, a            ; D = pat
         ld      a, l
         or      a, a            ; carry clear
 2$:     pop     hl
-        push    af              ; the count for B, and the carry
-        ld      a, (ts_m)
-        ld      c, a            ; C = m
-        ld      b, d            ; the nibble's bits from bit 0 (phase 3)
-        srl     b
-        sbc     a, a
-        and     a, c
-        ld      d, a            ; phase 3
-        srl     b
-        sbc     a, a
-        and     a, c
-        LD_IXL_A                ; phase 2
-        srl     b
-        sbc     a, a
-        and     a, c
-        LD_IXH_A                ; phase 1
-        srl     b
-        sbc     a, a
-        and     a, c
-        ld      e, a            ; phase 0
-        ld      a, c
-        cpl
-        ld      c, a            ; C = ~m
-        pop     af
         ld      b, a
+        ld      a, (ts_nm)
+        ld      c, a            ; C = ~mask
         ld      a, (ts_ph)
         jr      c, dsh
         or      a, a            ; G >= 1: enter the loop at ph
@@ -390,7 +451,7 @@ g3:     ld      a, (hl)
         jr      nz, g0
         LD_A_IYH                ; T columns left, from phase 0
         or      a, a
-        jp      z, step
+        ret     z
         ld      b, a
         jr      d0
 dsh:    or      a, a            ; G = 0: n columns from ph (ph + n <= 3)
@@ -404,16 +465,271 @@ d0:     ld      a, (hl)         ; (never past phase 2 here)
         ld      (hl), a
         inc     hl
         dec     b
-        jp      z, step
+        ret     z
 d1:     ld      a, (hl)
         and     a, c
         OR_IXH
         ld      (hl), a
         inc     hl
         dec     b
-        jp      z, step
+        ret     z
 d2:     ld      a, (hl)
         and     a, c
         OR_IXL
         ld      (hl), a
-        jp      step
+        ret
+
+        ;; ---- a group: g = (gg) rows (2..8) in one page, m one bit, w
+        ;; <= 255 (ts_rows already less g).  Both DDAs give each row's
+        ;; clamped columns (ga, gb); the columns every row covers, [gA,
+        ;; gB), are filled once a byte under the group's bits; each row's
+        ;; columns left and right of them one by one.  Then k, m and the
+        ;; page move on g rows.
+grp:    ld      (gg), a
+        ld      b, a
+        ld      ix, #ga
+        ld      iy, #tl
+        call    dda
+        ld      a, (gg)
+        ld      b, a
+        ld      ix, #gb
+        ld      iy, #tr
+        call    dda
+        ld      a, (gg)         ; gA = max ga
+        ld      b, a
+        ld      hl, #ga
+        xor     a, a
+1$:     cp      a, (hl)
+        jr      nc, 2$
+        ld      a, (hl)
+2$:     inc     hl
+        djnz    1$
+        ld      (gA), a
+        ld      a, (gg)         ; gB = min gb
+        ld      b, a
+        ld      hl, #gb
+        ld      a, #255
+3$:     cp      a, (hl)
+        jr      c, 4$
+        ld      a, (hl)
+4$:     inc     hl
+        djnz    3$
+        ld      (gB), a
+        ld      hl, #gA
+        cp      a, (hl)         ; gB - gA
+        jr      c, 5$
+        jr      nz, 6$
+5$:     ld      a, #255         ; no column common to all rows
+        ld      (gA), a
+        ld      (gB), a
+        jp      grag
+6$:     ;; the column values per phase: bit i of row i's pattern's
+        ;; nibble bit 3 - phase, under the row's bit (E, IXH, IXL, D:
+        ;; phases 0..3, as dspan takes them)
+        ld      a, (ts_k)
+        ld      hl, #p12
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a            ; HL = &p12[k]
+        ld      a, (ts_m)
+        ld      c, a
+        ld      a, (gg)
+        LD_IYL_A
+        ld      de, #0
+        ld      ix, #0
+7$:     ld      b, (hl)
+        inc     hl
+        srl     b
+        sbc     a, a
+        and     a, c
+        or      a, d
+        ld      d, a            ; phase 3
+        srl     b
+        sbc     a, a
+        and     a, c
+        OR_IXL
+        LD_IXL_A                ; phase 2
+        srl     b
+        sbc     a, a
+        and     a, c
+        OR_IXH
+        LD_IXH_A                ; phase 1
+        srl     b
+        sbc     a, a
+        and     a, c
+        or      a, e
+        ld      e, a            ; phase 0
+        sla     c
+        DEC_IYL
+        jr      nz, 7$
+        ld      a, c            ; the group's bits: (m << g) - m
+        ld      hl, #ts_m
+        sub     a, (hl)
+        cpl
+        ld      (ts_nm), a
+        ld      a, (gA)
+        ld      c, a
+        and     a, #3
+        ld      (ts_ph), a
+        ld      b, #0
+        ld      hl, (ts_page)
+        add     hl, bc          ; HL = page + gA
+        ld      a, (gB)
+        sub     a, c
+        ld      c, a            ; BC = gB - gA >= 1
+        call    dspan
+grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb)
+        ld      a, (ts_k)
+        ld      hl, #p12
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a
+        ld      (gpn), hl
+        ld      a, (ts_m)
+        ld      (gmi), a
+        ld      ix, #ga
+        ld      a, (gg)
+        LD_IYL_A
+1$:     ld      hl, (gpn)       ; D = the row's nibble twice
+        ld      a, (hl)
+        inc     hl
+        ld      (gpn), hl
+        and     a, #0x0F
+        ld      d, a
+        add     a, a
+        add     a, a
+        add     a, a
+        add     a, a
+        or      a, d
+        ld      d, a
+        ld      a, (gmi)
+        ld      c, a
+        ld      a, (gA)         ; left: [ga, min(gb, gA))
+        ld      b, 8 (ix)
+        cp      a, b
+        jr      c, 2$
+        ld      a, b
+2$:     sub     a, 0 (ix)
+        jr      z, 3$
+        jr      c, 3$
+        ld      b, a
+        ld      a, 0 (ix)
+        call    ragf
+3$:     ld      a, (gB)         ; right: [max(ga, gB), gb)
+        cp      a, 0 (ix)
+        jr      nc, 4$
+        ld      a, 0 (ix)
+4$:     ld      e, a
+        ld      a, 8 (ix)
+        sub     a, e
+        jr      z, 5$
+        jr      c, 5$
+        ld      b, a
+        ld      a, e
+        call    ragf
+5$:     ld      hl, #gmi
+        sla     (hl)
+        inc     ix
+        DEC_IYL
+        jr      nz, 1$
+        ld      a, (gg)         ; k, m and the page: g rows on
+        ld      b, a
+        ld      a, (ts_k)
+        add     a, b
+        and     a, #3
+        ld      (ts_k), a
+        ld      a, (ts_m)
+6$:     add     a, a
+        djnz    6$
+        or      a, a
+        jr      nz, 7$
+        ld      hl, (ts_page)   ; the page's last row done: the next page
+        ld      de, (ts_w)
+        add     hl, de
+        ld      (ts_page), hl
+        inc     a
+7$:     ld      (ts_m), a
+        jp      next
+
+;; ragf: columns [x, x + n) of one row, one by one: A = x, B = n >= 1,
+;; C = the row's bit, D = its pattern nibble twice (bit 7: phase 0).
+;; Each byte = (byte & ~C) | (C if bit 3 - (x & 3) of the nibble).
+;; Clobbers A, B, E, HL.
+ragf:   ld      e, a
+        ld      hl, (ts_page)
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a            ; HL = page + x
+        ld      a, e
+        ld      e, d
+        and     a, #3
+        jr      z, 2$
+1$:     rlc     e               ; bit 7: phase x & 3
+        dec     a
+        jr      nz, 1$
+2$:     rlc     e
+        sbc     a, a
+        xor     a, (hl)
+        and     a, c
+        xor     a, (hl)
+        ld      (hl), a
+        inc     hl
+        djnz    2$
+        ret
+
+;; dda: B = g >= 1 rows of the column DDA copy at IY (val +0, q +2, err
+;; +4, r +6, den +8): each row's clamp(val, 0, w) to (IX++), then the
+;; step (as `step`).  Uses the alternate registers for err, r, den.
+dda:    ld      a, (ts_w)
+        ld      c, a            ; C = w (<= 255)
+        ld      l, 0 (iy)
+        ld      h, 1 (iy)       ; HL = val
+        ld      e, 2 (iy)
+        ld      d, 3 (iy)       ; DE = q
+        exx
+        ld      l, 4 (iy)
+        ld      h, 5 (iy)       ; HL' = err
+        ld      e, 6 (iy)
+        ld      d, 7 (iy)       ; DE' = r
+        ld      c, 8 (iy)
+        ld      b, 9 (iy)       ; BC' = den
+        exx
+1$:     ld      a, h
+        or      a, a
+        jr      nz, 3$
+        ld      a, l
+        cp      a, c
+        jr      c, 4$
+2$:     ld      a, c            ; >= w: w
+        jr      4$
+3$:     bit     7, h
+        jr      z, 2$
+        xor     a, a            ; < 0: 0
+4$:     ld      0 (ix), a
+        inc     ix
+        add     hl, de          ; val += q
+        exx
+        add     hl, de          ; err += r (16 bits)
+        or      a, a
+        sbc     hl, bc          ; >= den?
+        jr      nc, 5$
+        add     hl, bc
+        exx
+        djnz    1$
+        jr      6$
+5$:     exx
+        inc     hl              ; val + 1
+        djnz    1$
+6$:     ld      0 (iy), l
+        ld      1 (iy), h
+        exx
+        ld      4 (iy), l
+        ld      5 (iy), h
+        exx
+        ret
