@@ -10,15 +10,24 @@
 ;; sdcc's __sdcccall(1): t in HL, l in DE, r and rows on the stack (this
 ;; function pops them: it returns void).  IX is kept.
 ;;
-;; The call's state (t's page, m, k, pat, w and both DDAs) is copied into
-;; static memory (the library is not reentrant) and back at the end.  A
-;; span of the pattern 0xFF or 0x00 is a loop of `or m` / `and ~m`, two
-;; columns a pass (~30 T a column); a dither span runs a four-column loop
-;; (the four column values in registers, ~31 T a column) entered at the
-;; first column's phase, and its last columns (after the last phase 3)
-;; counted one by one.  The DDAs step with the carry of the err compare
-;; (ccf; adc).  Round 6 (k-z80b): cube / cull 282,771 -> 266,571 T in
-;; r8k_trap over frames 2-3 (emu/z80sim -P -F 2).
+;; Rows come in groups: when w <= 255 and m is one bit, the rows up to
+;; the page's end (g = 2..8, at most `rows`) are done together.  Both
+;; DDAs step g rows in registers on the caller's l and r (dda: each row's
+;; columns clamped to [0, w] into ga, gb; ~195 T a row and edge); the
+;; columns all g rows cover, [max ga, min gb), get one read-modify-write
+;; a byte under the group's bits (dspan: the four phases' column values
+;; in registers, ~31 T a byte for up to 8 pixels; the values come from
+;; q16, the patterns transposed, cached while t->pat stays the same);
+;; each row's columns left and right of those one by one (ragf, ~56 T a
+;; pixel).  Other rows (m of several bits or 0, w > 255, the last row
+;; of a page alone) go one at a time as before: *l, *r copied into
+;; static memory, a dither span (0xFF and 0x00 are the nibbles 1111 and
+;; 0000) in the same dspan loop, the DDAs stepped with the carry of the
+;; err compare (ccf; adc), and copied back.
+;; Round 7 (k-z80c): cube / cull frames 2-3 (emu/z80sim -P -F 2, Zilog
+;; T) r8k_trap 266,571 -> ~196,000 T; the frames 591,075 + 741,200 ->
+;; 546,273 + 714,315 (ucsim: see docs/benchmarks.md); the image +566 B.
+;; Round 6 (k-z80b): 282,771 -> 266,571 T in r8k_trap.
 ;;
 ;; The cube / cull firmware (bench/kernz80.py, emu/z80sim, frames 1-3):
 ;; Z80_ASM="mul16 mullong" 1,612,609 T a frame, with trap 1,336,504
@@ -74,6 +83,26 @@ ts_pt:  .ds     2               ; t, l, r themselves
 ts_pl:  .ds     2
 ts_pr:  .ds     2
 ts_ph:  .ds     1               ; a dither span's first phase
+ts_nm:  .ds     1               ; its ~mask
+ga:     .ds     8               ; a group's rows: clamp(l.val, 0, w)
+gb:     .ds     8               ; clamp(r.val, 0, w) (ga + 8)
+gg:     .ds     1               ; the group's rows (2..8)
+gA:     .ds     1               ; max ga, or 255: no common columns
+gB:     .ds     1               ; min gb, or 255
+gC:     .ds     1               ; the rows to the page's end
+pr12:   .ds     2               ; this call's slot's r12 and q16
+pq16:   .ds     2
+        ;; the pattern cache, rebuilt when t->pat differs from its
+        ;; patterns (all zero at start: consistent).  The patterns (4),
+        ;; r12 (12): pat[0..3]'s
+        ;; low nibbles, each twice in its byte (bit 7: phase 0), three
+        ;; times over; q16 (16): q16[4 j + ph] the column byte of phase ph
+        ;; for rows from phase j: bit i = bit 3 - ph of pat[(j + i) & 3]
+        .area   _INITIALIZED
+cache:  .ds     32
+        .area   _INITIALIZER
+        .db     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+        .db     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
 
         .area   _CODE
 
@@ -83,20 +112,80 @@ _r8k_trap:
         ld      de, #ts
         ld      bc, #10
         ldir
-        ld      hl, (ts_pl)
-        ld      de, #tl
-        ld      c, #10
-        ldir
         pop     bc              ; the return address
         pop     hl              ; r
         pop     de              ; rows
         push    bc
         ld      (ts_pr), hl
         ld      (ts_rows), de
-        ld      de, #tr
-        ld      bc, #10
-        ldir
         push    ix
+        ld      hl, #cache + 4  ; the pattern cache
+        ld      (pr12), hl
+        ld      hl, #cache + 16
+        ld      (pq16), hl
+        ld      hl, #cache
+        ld      de, #ts_pat     ; the slot's patterns the same?
+        ld      b, #4
+2$:     ld      a, (de)
+        cp      a, (hl)
+        jr      nz, newpat
+        inc     hl
+        inc     de
+        djnz    2$
+        jp      next
+
+newpat: ld      hl, (pr12)      ; the slot: patterns, r12, q16
+        ld      de, #-4
+        add     hl, de
+        ex      de, hl
+        ld      hl, #ts_pat
+        ld      bc, #4
+        ldir
+        ld      hl, #ts_pat     ; r12 (DE)
+        ld      b, #4
+1$:     ld      a, (hl)
+        and     a, #0x0F
+        ld      c, a
+        add     a, a
+        add     a, a
+        add     a, a
+        add     a, a
+        or      a, c
+        ld      (de), a
+        inc     hl
+        inc     de
+        djnz    1$
+        ld      hl, (pr12)
+        ld      c, #8
+        ldir
+        ld      ix, (pr12)      ; q16[0..3]: bit i = bit 3 - ph of
+        ld      b, #8           ; pat[i & 3] (r12[7] down to r12[0])
+3$:     ld      c, 7 (ix)
+        dec     ix
+        rr      c
+        rl      l               ; phase 3
+        rr      c
+        rl      h               ; phase 2
+        rr      c
+        rl      e               ; phase 1
+        rr      c
+        rl      d               ; phase 0
+        djnz    3$
+        ld      iy, (pq16)      ; q16[4 j + ph]: q16[ph] rotated right j
+        ld      b, #4
+4$:     ld      0 (iy), d
+        ld      1 (iy), e
+        ld      2 (iy), h
+        ld      3 (iy), l
+        rrc     d
+        rrc     e
+        rrc     h
+        rrc     l
+        inc     iy
+        inc     iy
+        inc     iy
+        inc     iy
+        djnz    4$
         jp      next
 
 row:    ; ---- the span: xl = max(l.val, 0), xr = min(r.val, w)
@@ -135,66 +224,7 @@ row:    ; ---- the span: xl = max(l.val, 0), xr = min(r.val, w)
         ld      a, (hl)         ; pat[k]
         ex      de, hl          ; HL = the first byte
         pop     de              ; E: xl's low byte
-        inc     a
-        jr      z, fset         ; 0xFF
-        dec     a
-        jr      z, fclr         ; 0x00
-        jp      fdith
-
-        ;; ---- the pattern 0xFF: or m; BC = n >= 1, HL = the first byte
-fset:   ld      a, (ts_m)
-        ld      e, a
-        srl     b
-        rr      c               ; BC = pairs, carry: n is odd
-        jr      nc, 1$
-        ld      a, (hl)
-        or      a, e
-        ld      (hl), a
-        inc     hl
-1$:     ld      a, b
-        or      a, c
-        jr      z, step
-        call    cnt2            ; B, C: the two-level count of the pairs
-2$:     ld      a, (hl)
-        or      a, e
-        ld      (hl), a
-        inc     hl
-        ld      a, (hl)
-        or      a, e
-        ld      (hl), a
-        inc     hl
-        djnz    2$
-        dec     c
-        jr      nz, 2$
-        jr      step
-
-        ;; ---- the pattern 0x00: and ~m
-fclr:   ld      a, (ts_m)
-        cpl
-        ld      e, a
-        srl     b
-        rr      c
-        jr      nc, 1$
-        ld      a, (hl)
-        and     a, e
-        ld      (hl), a
-        inc     hl
-1$:     ld      a, b
-        or      a, c
-        jr      z, step
-        call    cnt2
-2$:     ld      a, (hl)
-        and     a, e
-        ld      (hl), a
-        inc     hl
-        ld      a, (hl)
-        and     a, e
-        ld      (hl), a
-        inc     hl
-        djnz    2$
-        dec     c
-        jr      nz, 2$
-        jr      step
+        jp      fdith           ; (0xFF and 0x00 too: their nibbles)
 
         ;; ---- step both DDAs, then m, page and k.  err += r; when the
         ;; 16-bit sum is >= den: err -= den and val += q + 1, else val +=
@@ -243,15 +273,6 @@ step:   ld      hl, (tl + 4)    ; l: err += r
         ld      (ts_page), hl
         inc     a
 5$:     ld      (ts_m), a
-next:   ld      hl, (ts_rows)
-        ld      a, h
-        or      a, l
-        jr      z, done
-        dec     hl
-        ld      (ts_rows), hl
-        jp      row
-
-done:   pop     ix
         ld      hl, (ts_pl)     ; l->val, l->err
         ld      de, (tl)
         ld      (hl), e
@@ -276,20 +297,60 @@ done:   pop     ix
         ld      (hl), e
         inc     hl
         ld      (hl), d
+next:   ld      hl, (ts_rows)
+        ld      a, h
+        or      a, l
+        jr      z, done
+        ld      a, (ts_w + 1)   ; a group of rows needs w <= 255 and m
+        or      a, a            ; one bit
+        jr      nz, single
+        ld      a, (ts_m)
+        or      a, a
+        jr      z, single
+        ld      b, a
+        dec     a
+        and     a, b
+        jr      nz, single
+        ld      a, b
+        ld      c, #0
+1$:     inc     c               ; C = the rows to the page's end
+        add     a, a
+        jr      nz, 1$
+        ld      a, c
+        ld      (gC), a
+        ld      a, h            ; g = min(C, rows)
+        or      a, a
+        jr      nz, 2$
+        ld      a, l
+        cp      a, c
+        jr      nc, 2$
+        ld      c, a
+2$:     ld      a, c
+        cp      a, #2
+        jr      c, single
+        ld      e, c
+        ld      d, #0
+        or      a, a
+        sbc     hl, de
+        ld      (ts_rows), hl
+        jp      grp
+single: dec     hl              ; one row: *l, *r copied in and out
+        ld      (ts_rows), hl
+        ld      hl, (ts_pl)
+        ld      de, #tl
+        ld      bc, #10
+        ldir
+        ld      hl, (ts_pr)
+        ld      de, #tr
+        ld      c, #10
+        ldir
+        jp      row
+
+done:   pop     ix
         ld      de, (ts_pt)     ; t->page, t->m, t->k
         ld      hl, #ts
         ld      bc, #4
         ldir
-        ret
-
-;; cnt2: BC = a count >= 1 as B (the low byte, 0 = 256) and C (the
-;; passes of djnz plus one per 256) for `djnz; dec c; jr nz`
-cnt2:   ld      a, c
-        ld      c, b
-        ld      b, a
-        or      a, a
-        ret     z
-        inc     c
         ret
 
         ;; ---- a dither: column x gets m where bit 3 - (x & 3) of the
@@ -305,7 +366,43 @@ fdith:  ld      d, a            ; D = pat
         ld      a, e
         and     a, #3
         ld      (ts_ph), a
-        push    hl              ; the first byte
+        push    bc              ; n
+        ld      a, (ts_m)
+        ld      c, a            ; C = m
+        cpl
+        ld      (ts_nm), a
+        ld      b, d            ; the nibble's bits from bit 0 (phase 3)
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      d, a            ; phase 3
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXL_A                ; phase 2
+        srl     b
+        sbc     a, a
+        and     a, c
+        LD_IXH_A                ; phase 1
+        srl     b
+        sbc     a, a
+        and     a, c
+        ld      e, a            ; phase 0
+        pop     bc
+        call    dspan
+        jp      step
+
+;; dspan: columns [x, x + n) of one page byte row: HL = the first byte,
+;; BC = n >= 1, (ts_ph) = x & 3, (ts_nm) = ~mask, the four column values
+;; (phases 0..3) in E, IXH, IXL, D.  Each byte = (byte & ~mask) | value.
+;; With ph = (ts_ph), the span passes phase 3 G = (ph + n) / 4 times: the
+;; unchecked loop g0..g3 is entered at phase ph and runs G times (B,
+;; then IYL passes of 256), then the T = (ph + n) & 3 columns left (IYH)
+;; go through d0.., which counts each column in B; a span that never
+;; reaches phase 3 (G = 0, n < 4) goes there too, entered at ph.
+;; Clobbers A, BC, HL, IY.
+dspan:  push    hl              ; the first byte
+        ld      a, (ts_ph)
         ld      l, a
         ld      h, #0
         add     hl, bc          ; ph + n
@@ -331,31 +428,9 @@ fdith:  ld      d, a            ; D = pat
         ld      a, l
         or      a, a            ; carry clear
 2$:     pop     hl
-        push    af              ; the count for B, and the carry
-        ld      a, (ts_m)
-        ld      c, a            ; C = m
-        ld      b, d            ; the nibble's bits from bit 0 (phase 3)
-        srl     b
-        sbc     a, a
-        and     a, c
-        ld      d, a            ; phase 3
-        srl     b
-        sbc     a, a
-        and     a, c
-        LD_IXL_A                ; phase 2
-        srl     b
-        sbc     a, a
-        and     a, c
-        LD_IXH_A                ; phase 1
-        srl     b
-        sbc     a, a
-        and     a, c
-        ld      e, a            ; phase 0
-        ld      a, c
-        cpl
-        ld      c, a            ; C = ~m
-        pop     af
         ld      b, a
+        ld      a, (ts_nm)
+        ld      c, a            ; C = ~mask
         ld      a, (ts_ph)
         jr      c, dsh
         or      a, a            ; G >= 1: enter the loop at ph
@@ -390,7 +465,7 @@ g3:     ld      a, (hl)
         jr      nz, g0
         LD_A_IYH                ; T columns left, from phase 0
         or      a, a
-        jp      z, step
+        ret     z
         ld      b, a
         jr      d0
 dsh:    or      a, a            ; G = 0: n columns from ph (ph + n <= 3)
@@ -404,16 +479,263 @@ d0:     ld      a, (hl)         ; (never past phase 2 here)
         ld      (hl), a
         inc     hl
         dec     b
-        jp      z, step
+        ret     z
 d1:     ld      a, (hl)
         and     a, c
         OR_IXH
         ld      (hl), a
         inc     hl
         dec     b
-        jp      z, step
+        ret     z
 d2:     ld      a, (hl)
         and     a, c
         OR_IXL
         ld      (hl), a
-        jp      step
+        ret
+
+        ;; ---- a group: g = (gg) rows (2..8) in one page, m one bit, w
+        ;; <= 255 (ts_rows already less g).  Both DDAs give each row's
+        ;; clamped columns (ga, gb); the columns every row covers, [gA,
+        ;; gB), are filled once a byte under the group's bits; each row's
+        ;; columns left and right of them one by one.  Then k, m and the
+        ;; page move on g rows.
+grp:    ld      (gg), a
+        ld      b, a
+        ld      ix, #ga
+        ld      iy, (ts_pl)
+        call    dda
+        ld      a, (gg)
+        ld      b, a
+        ld      ix, #gb
+        ld      iy, (ts_pr)
+        call    dda
+        ld      a, (gg)         ; gA = max ga
+        ld      b, a
+        ld      hl, #ga
+        xor     a, a
+1$:     cp      a, (hl)
+        jr      nc, 2$
+        ld      a, (hl)
+2$:     inc     hl
+        djnz    1$
+        ld      (gA), a
+        ld      a, (gg)         ; gB = min gb
+        ld      b, a
+        ld      hl, #gb
+        ld      a, #255
+3$:     cp      a, (hl)
+        jr      c, 4$
+        ld      a, (hl)
+4$:     inc     hl
+        djnz    3$
+        ld      (gB), a
+        ld      hl, #gA
+        cp      a, (hl)         ; gB - gA
+        jr      c, 5$
+        jr      nz, 6$
+5$:     ld      a, #255         ; no column common to all rows
+        ld      (gA), a
+        ld      (gB), a
+        jp      grag
+6$:     ;; the column values: q16[4 j + ph] & G, G the group's bits
+        ;; (m << g) - m, j = (k - s) & 3 = (k + gC) & 3 for m = 1 << s
+        ;; (E, IXH, IXL, D: phases 0..3, as dspan takes them)
+        ld      a, (ts_m)
+        ld      c, a
+        ld      a, (gg)
+        ld      b, a
+        ld      a, c
+7$:     add     a, a
+        djnz    7$
+        sub     a, c
+        ld      c, a            ; C = G
+        cpl
+        ld      (ts_nm), a
+        ld      a, (gC)
+        ld      hl, #ts_k
+        add     a, (hl)
+        and     a, #3
+        add     a, a
+        add     a, a
+        ld      hl, (pq16)
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a
+        ld      a, (hl)
+        and     a, c
+        ld      e, a
+        inc     hl
+        ld      a, (hl)
+        and     a, c
+        LD_IXH_A
+        inc     hl
+        ld      a, (hl)
+        and     a, c
+        LD_IXL_A
+        inc     hl
+        ld      a, (hl)
+        and     a, c
+        ld      d, a
+        ld      a, (gA)
+        ld      c, a
+        and     a, #3
+        ld      (ts_ph), a
+        ld      b, #0
+        ld      hl, (ts_page)
+        add     hl, bc          ; HL = page + gA
+        ld      a, (gB)
+        sub     a, c
+        ld      c, a            ; BC = gB - gA >= 1
+        call    dspan
+grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
+        ;; r12 entry, C' its bit, B' the rows left
+        ld      a, (ts_k)
+        ld      hl, (pr12)
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a
+        push    hl
+        pop     iy
+        ld      a, (ts_m)
+        ld      c, a
+        ld      a, (gg)
+        ld      b, a
+        exx                     ; to C' and B'
+        ld      ix, #ga
+1$:     ld      a, (gA)         ; left: [ga, min(gb, gA))
+        ld      b, 8 (ix)
+        cp      a, b
+        jr      c, 2$
+        ld      a, b
+2$:     sub     a, 0 (ix)
+        jr      z, 3$
+        jr      c, 3$
+        ld      b, a
+        ld      a, 0 (ix)
+        call    ragf
+3$:     ld      a, (gB)         ; right: [max(ga, gB), gb)
+        cp      a, 0 (ix)
+        jr      nc, 4$
+        ld      a, 0 (ix)
+4$:     ld      e, a
+        ld      a, 8 (ix)
+        sub     a, e
+        jr      z, 5$
+        jr      c, 5$
+        ld      b, a
+        ld      a, e
+        call    ragf
+5$:     inc     ix
+        inc     iy
+        exx
+        sla     c
+        dec     b
+        exx
+        jr      nz, 1$
+        ld      a, (gg)         ; k, m and the page: g rows on
+        ld      b, a
+        ld      a, (ts_k)
+        add     a, b
+        and     a, #3
+        ld      (ts_k), a
+        ld      a, (ts_m)
+6$:     add     a, a
+        djnz    6$
+        or      a, a
+        jr      nz, 7$
+        ld      hl, (ts_page)   ; the page's last row done: the next page
+        ld      de, (ts_w)
+        add     hl, de
+        ld      (ts_page), hl
+        inc     a
+7$:     ld      (ts_m), a
+        jp      next
+
+;; ragf: columns [x, x + n) of one row, one by one: A = x, B = n >= 1,
+;; C' = the row's bit, (IY) = its pattern nibble twice (bit 7: phase 0).
+;; Each byte = (byte & ~bit) | (bit if bit 3 - (x & 3) of the nibble).
+;; Clobbers A, B, C, D, E, HL.
+ragf:   ld      e, a
+        exx
+        ld      a, c
+        exx
+        ld      c, a
+        ld      d, 0 (iy)
+        ld      a, e
+        ld      hl, (ts_page)
+        add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a            ; HL = page + x
+        ld      a, e
+        ld      e, d
+        and     a, #3
+        jr      z, 2$
+1$:     rlc     e               ; bit 7: phase x & 3
+        dec     a
+        jr      nz, 1$
+2$:     rlc     e
+        sbc     a, a
+        xor     a, (hl)
+        and     a, c
+        xor     a, (hl)
+        ld      (hl), a
+        inc     hl
+        djnz    2$
+        ret
+
+;; dda: B = g >= 1 rows of the column DDA copy at IY (val +0, q +2, err
+;; +4, r +6, den +8): each row's clamp(val, 0, w) to (IX++), then the
+;; step (as `step`).  Uses the alternate registers for err, r, den.
+dda:    ld      a, (ts_w)
+        ld      c, a            ; C = w (<= 255)
+        ld      l, 0 (iy)
+        ld      h, 1 (iy)       ; HL = val
+        ld      e, 2 (iy)
+        ld      d, 3 (iy)       ; DE = q
+        exx
+        ld      l, 4 (iy)
+        ld      h, 5 (iy)       ; HL' = err
+        ld      e, 6 (iy)
+        ld      d, 7 (iy)       ; DE' = r
+        ld      c, 8 (iy)
+        ld      b, 9 (iy)       ; BC' = den
+        exx
+1$:     ld      a, h
+        or      a, a
+        jr      nz, 3$
+        ld      a, l
+        cp      a, c
+        jr      c, 4$
+2$:     ld      a, c            ; >= w: w
+        jr      4$
+3$:     bit     7, h
+        jr      z, 2$
+        xor     a, a            ; < 0: 0
+4$:     ld      0 (ix), a
+        inc     ix
+        add     hl, de          ; val += q
+        exx
+        add     hl, de          ; err += r (16 bits)
+        or      a, a
+        sbc     hl, bc          ; >= den?
+        jr      nc, 5$
+        add     hl, bc
+        exx
+        djnz    1$
+        jr      6$
+5$:     exx
+        inc     hl              ; val + 1
+        djnz    1$
+6$:     ld      0 (iy), l
+        ld      1 (iy), h
+        exx
+        ld      4 (iy), l
+        ld      5 (iy), h
+        exx
+        ret
