@@ -162,6 +162,35 @@
     std   Z+1, r25
 .endm
 
+/* the same for the r8_interp at Z + o (Z = an r8_scanx, o = 25 or 38) */
+.macro MSTEPO o
+    ldd   r24, Z+\o+4      /* err += r */
+    ldd   r25, Z+\o+5
+    ldd   r26, Z+\o+6
+    ldd   r27, Z+\o+7
+    add   r24, r26
+    adc   r25, r27
+    ldd   r26, Z+\o+8      /* err -= den; on borrow back (C = 1) */
+    ldd   r27, Z+\o+9
+    sub   r24, r26
+    sbc   r25, r27
+    brcc  .+4
+    add   r24, r26
+    adc   r25, r27
+    std   Z+\o+4, r24
+    std   Z+\o+5, r25
+    ldd   r24, Z+\o        /* val += q + !C */
+    ldd   r25, Z+\o+1
+    ldd   r26, Z+\o+2
+    ldd   r27, Z+\o+3
+    brcs  .+2
+    adiw  r24, 1
+    add   r24, r26
+    adc   r25, r27
+    std   Z+\o, r24
+    std   Z+\o+1, r25
+.endm
+
     .section .text.r8k_trap,"ax",@progbits
     .global r8k_trap
     .type   r8k_trap, @function
@@ -1066,7 +1095,8 @@ r8k_scanfill:
     ldd   r25, Z+49
     cp    r20, r24
     cpc   r21, r25
-    brlt  2f
+    brlt  .Lsf_stop
+.Lsf_rre:
     movw  r24, r30
     movw  r22, r30
     subi  r22, lo8(-38)
@@ -1079,7 +1109,8 @@ r8k_scanfill:
     ldd   r21, Z+22
     ldd   r24, Z+48
     ldd   r25, Z+49
-2:  lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
+.Lsf_stop:
+    lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
     lds   r27, r8k_sf+3
     cp    r24, r26
     cpc   r25, r27
@@ -1110,9 +1141,51 @@ r8k_scanfill:
     sbci  r21, hi8(-38)
     cpi   r26, 1
     brne  .Lsf_rows
-    movw  r24, r28          /* one row: in memory (r2..r17 untouched) */
-    rcall one
-    rjmp  .Lsf_next
+    /* one row: `one`'s span and t step (r2..r17 untouched); its edges'
+     * DDA steps wait for .Lsf_next1, which skips the step of an edge
+     * that r8k_estart is about to rewrite (all five fields) */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  .Lsf_oneg
+.Lsf_o1:
+    movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  1f
+    movw  r30, r24
+1:  cp    r26, r30
+    cpc   r27, r31
+    ldd   M, Y+2            /* (flags kept) */
+    ldd   K, Y+3
+    brge  2f
+    set                     /* T set: the span returns */
+    rcall span
+2:  inc   K                 /* k = (k + 1) & 3 */
+    andi  K, 3
+    std   Y+3, K
+    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
+    brne  3f
+    inc   M
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, M
+    rjmp  .Lsf_next1
+.Lsf_oneg:
+    clr   r26
+    clr   r27
+    rjmp  .Lsf_o1
 .Lsf_rows:
     mov   ROWS, r26
     lds   r30, r8k_sf+4     /* the first of these rows in this call: */
@@ -1169,6 +1242,50 @@ r8k_scanfill:
     ldd   M, Y+2
     ldd   K, Y+3
     rjmp  grp
+/* after a one-row trapezoid: y = s->y; each edge's pending DDA step,
+ * unless the edge ends here and a trapezoid follows (r8k_estart
+ * rewrites it: the step would be lost) */
+.Lsf_next1:
+    clr   r1
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    lds   r24, r8k_sf+2
+    lds   r25, r8k_sf+3
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  1f
+    MSTEPO 25               /* y = lim: both steps, and out */
+    MSTEPO 38
+    rjmp  .Lsf_out
+1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no step */
+    ldd   r25, Z+36
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  2f
+    movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    ldd   r18, Z+37
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    rjmp  3f
+2:  MSTEPO 25
+3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no step */
+    ldd   r25, Z+49
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  4f
+    rjmp  .Lsf_rre
+4:  MSTEPO 38
+    ldd   r24, Z+48
+    ldd   r25, Z+49
+    rjmp  .Lsf_stop
 .Lsf_next:                  /* (from fin: both edges written back) */
     clr   r1
     lds   r30, r8k_sf
@@ -1181,6 +1298,7 @@ r8k_scanfill:
     cpc   r21, r25
     brge  7f
     rjmp  .Lsf_top
+.Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0
     breq  8f
