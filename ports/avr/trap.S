@@ -838,6 +838,9 @@ fin:
     andi  K, 3
     std   Y+2, M
     std   Y+3, K
+    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
+    sbrc  r0, 0
+    rjmp  .Lsf_fin
     pop   r31               /* r */
     pop   r30
     std   Z+0, RVL
@@ -850,9 +853,6 @@ fin:
     std   Z+1, LVH
     std   Z+4, LEL
     std   Z+5, LEH
-    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
-    sbrc  r0, 0
-    rjmp  .Lsf_next
     pop   r29
     pop   r28
     pop   r17
@@ -1209,11 +1209,7 @@ r8k_scanfill:
     push  r17
     ldi   r30, 1            /* saved, and fin comes back */
     sts   r8k_sf+4, r30
-6:  push  r22               /* as r8k_trap's entry: l, r for fin */
-    push  r23
-    push  r20
-    push  r21
-    movw  r30, r22
+6:  movw  r30, r22
     ld    LVL, Z+
     ld    LVH, Z+
     ld    LNQL, Z+
@@ -1286,7 +1282,11 @@ r8k_scanfill:
     ldd   r24, Z+48
     ldd   r25, Z+49
     rjmp  .Lsf_stop
-.Lsf_next:                  /* (from fin: both edges written back) */
+/* after a trapezoid of several rows (from fin: the edges' val and err
+ * still in r2..r5, r12..r15, which r8k_estart keeps): each edge's write
+ * back, unless it ends here and a trapezoid follows (r8k_estart
+ * rewrites it) */
+.Lsf_fin:
     clr   r1
     lds   r30, r8k_sf
     lds   r31, r8k_sf+1
@@ -1296,8 +1296,47 @@ r8k_scanfill:
     lds   r25, r8k_sf+3
     cp    r20, r24
     cpc   r21, r25
-    brge  7f
-    rjmp  .Lsf_top
+    brlt  1f
+    std   Z+25, LVL         /* y = lim: both, and out */
+    std   Z+26, LVH
+    std   Z+29, LEL
+    std   Z+30, LEH
+    std   Z+38, RVL
+    std   Z+39, RVH
+    std   Z+42, REL
+    std   Z+43, REH
+    rjmp  .Lsf_out
+1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no write */
+    ldd   r25, Z+36
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  2f
+    movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    ldd   r18, Z+37
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    rjmp  3f
+2:  std   Z+25, LVL
+    std   Z+26, LVH
+    std   Z+29, LEL
+    std   Z+30, LEH
+3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no write */
+    ldd   r25, Z+49
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  4f
+    rjmp  .Lsf_rre
+4:  std   Z+38, RVL         /* (r25:r24 = r->yend) */
+    std   Z+39, RVH
+    std   Z+42, REL
+    std   Z+43, REH
+    rjmp  .Lsf_stop
 .Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0
