@@ -1052,13 +1052,17 @@ r8k_scanband:
  * From row s->y (< lim) to lim: restart an edge that ended (r8k_estart,
  * edge.S), fill the rows to the first end of either edge or lim (at
  * most 255 at a time) as r8k_trap does, and on; s->y = lim at the end.
- * A one-row trapezoid goes through `one` (its state in memory); longer
- * ones through the register body above, entered at grp with the stack
- * as r8k_trap's entry leaves it (the l and r pointers for fin): fin,
- * seeing r8k_sf+4 set, writes both edges back and comes back here
- * (.Lsf_next) instead of returning.  r2..r17 are saved at the first such
- * trapezoid of a call (a call of one-row trapezoids saves none), which
- * sets that flag.  r8k_sf: s (2 bytes), lim (2), the flag (1).
+ * A one-row trapezoid is `one`'s span and t step inline (its state in
+ * memory), its edges' DDA steps left to .Lsf_next1; longer ones go
+ * through the register body above, entered at grp: fin, seeing r8k_sf+4
+ * set, comes back here (.Lsf_fin) instead of writing back and
+ * returning.  Both skip the work on an edge that ends at y < lim, since
+ * r8k_estart then rewrites all five of its r8_interp fields (the step
+ * of a one-row trapezoid, the write-back of a longer one); at y = lim
+ * both edges are stepped or written, so s ends as the C reference
+ * leaves it.  r2..r17 are saved at the first longer trapezoid of a call
+ * (a call of one-row trapezoids saves none), which sets that flag.
+ * r8k_sf: s (2 bytes), lim (2), the flag (1).
  * r8_scanx offsets: y 21, l 25 (x 25, yend 35, vi 37), r 38 (x 38,
  * yend 48, vi 50) (src/kern.c asserts them). */
     .global r8k_scanfill
