@@ -1003,13 +1003,13 @@ r8k_scanband:
     ld    r0, Z             /* buf */
     ldd   r31, Z+1
     mov   r30, r0
-    mov   r19, r26          /* m = 1 << (by & 7) */
-    andi  r19, 7
-    ldi   r27, 1
-    rjmp  2f
-1:  lsl   r27
-2:  dec   r19
-    brpl  1b
+    ldi   r27, 1            /* m = 1 << (by & 7), in 7 cycles: */
+    sbrc  r26, 1            /* 1 or 4 by bit 1, times 2 by bit 0, */
+    ldi   r27, 4            /* times 16 (swap) by bit 2 */
+    sbrc  r26, 0
+    lsl   r27
+    sbrc  r26, 2
+    swap  r27
     sts   r8k_sft+2, r27
     lsr   r26               /* page = buf + (by >> 3) w (by < 2048) */
     lsr   r26
