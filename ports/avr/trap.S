@@ -191,6 +191,46 @@
     std   Z+\o+1, r25
 .endm
 
+/* r8k_scanfill's stop = min(lim, r->yend (in r25:r24), l->yend), s->y
+ * = stop, rows = stop - y (y in r21:r20, Z = s; at most 255), r23:r22
+ * = l, r21:r20 = r; one row on to .Lsf_one, more (ROWS) to \rows */
+.macro STOPCALC rows
+    lds   r26, r8k_sf+2
+    lds   r27, r8k_sf+3
+    cp    r24, r26
+    cpc   r25, r27
+    brlt  63f
+    movw  r24, r26
+63: ldd   r26, Z+35
+    ldd   r27, Z+36
+    cp    r26, r24
+    cpc   r27, r25
+    brge  64f
+    movw  r24, r26
+64: movw  r26, r24
+    sub   r26, r20
+    sbc   r27, r21
+    tst   r27
+    breq  65f
+    ldi   r26, 255
+    movw  r24, r20
+    subi  r24, lo8(-255)
+    sbci  r25, hi8(-255)
+65: std   Z+21, r24
+    std   Z+22, r25
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    movw  r20, r30
+    subi  r20, lo8(-38)
+    sbci  r21, hi8(-38)
+    cpi   r26, 1
+    breq  66f
+    mov   ROWS, r26
+    rjmp  \rows
+66: rjmp  .Lsf_one
+.endm
+
     .section .text.r8k_trap,"ax",@progbits
     .global r8k_trap
     .type   r8k_trap, @function
@@ -1060,7 +1100,9 @@ r8k_scanband:
  * r8k_estart then rewrites all five of its r8_interp fields (the step
  * of a one-row trapezoid, the write-back of a longer one); at y = lim
  * both edges are stepped or written, so s ends as the C reference
- * leaves it.  r2..r17 are saved at the first longer trapezoid of a call
+ * leaves it.  After a longer trapezoid that restarts one edge only, the
+ * next longer one loads only what r8k_estart did not keep (.Lsf_rowsA,
+ * .Lsf_rowsB).  r2..r17 are saved at the first longer trapezoid of a call
  * (a call of one-row trapezoids saves none), which sets that flag.
  * r8k_sf: s (2 bytes), lim (2), the flag (1).
  * r8_scanx offsets: y 21, l 25 (x 25, yend 35, vi 37), r 38 (x 38,
@@ -1145,6 +1187,7 @@ r8k_scanfill:
     sbci  r21, hi8(-38)
     cpi   r26, 1
     brne  .Lsf_rows
+.Lsf_one:
     /* one row: `one`'s span and t step (r2..r17 untouched); its edges'
      * DDA steps wait for .Lsf_next1, which skips the step of an edge
      * that r8k_estart is about to rewrite (all five fields) */
@@ -1314,8 +1357,9 @@ r8k_scanfill:
     ldd   r25, Z+36
     cp    r20, r24
     cpc   r21, r25
-    brlt  2f
-    movw  r24, r30
+    brge  2f
+    rjmp  .Lsf_lgo
+2:  movw  r24, r30
     movw  r22, r30
     subi  r22, lo8(-25)
     sbci  r23, hi8(-25)
@@ -1325,22 +1369,86 @@ r8k_scanfill:
     lds   r31, r8k_sf+1
     ldd   r20, Z+21
     ldd   r21, Z+22
-    rjmp  3f
-2:  std   Z+25, LVL
+    ldd   r24, Z+48         /* y >= r->yend: restart r too (all */
+    ldd   r25, Z+49         /* loaded again) */
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  3f
+    rjmp  .Lsf_rre
+3:  std   Z+38, RVL         /* r goes on: its val, err, ~q stay in */
+    std   Z+39, RVH         /* r12..r17 (r25:r24 = r->yend) */
+    std   Z+42, REL
+    std   Z+43, REH
+    STOPCALC .Lsf_rowsB
+.Lsf_lgo:                   /* l goes on */
+    std   Z+25, LVL
     std   Z+26, LVH
     std   Z+29, LEL
     std   Z+30, LEH
-3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no write */
+    ldd   r24, Z+48         /* y >= r->yend: restart r, no write */
     ldd   r25, Z+49
     cp    r20, r24
     cpc   r21, r25
-    brlt  4f
-    rjmp  .Lsf_rre
-4:  std   Z+38, RVL         /* (r25:r24 = r->yend) */
+    brge  4f
+    std   Z+38, RVL         /* neither ends (a 255-row trapezoid) */
     std   Z+39, RVH
     std   Z+42, REL
     std   Z+43, REH
     rjmp  .Lsf_stop
+4:  movw  r24, r30          /* l's state stays in r2..r11 */
+    movw  r22, r30
+    subi  r22, lo8(-38)
+    sbci  r23, hi8(-38)
+    ldd   r18, Z+50
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    ldd   r24, Z+48
+    ldd   r25, Z+49
+    STOPCALC .Lsf_rowsA
+/* the next trapezoid after .Lsf_fin restarted one edge only: l still
+ * in r2..r11 (A), or r's val, err, ~q in r12..r17 (B) */
+.Lsf_rowsA:
+    movw  r30, r20
+    ld    RVL, Z+
+    ld    RVH, Z+
+    ld    RNQL, Z+
+    ld    RNQH, Z+
+    ld    REL, Z+
+    ld    REH, Z+
+    ld    RRL, Z+
+    ld    RRH, Z+
+    ld    RDL, Z+
+    ld    RDH, Z
+    com   RNQL
+    com   RNQH
+    ldd   M, Y+2
+    ldd   K, Y+3
+    rjmp  grp
+.Lsf_rowsB:
+    movw  r30, r22
+    ld    LVL, Z+
+    ld    LVH, Z+
+    ld    LNQL, Z+
+    ld    LNQH, Z+
+    ld    LEL, Z+
+    ld    LEH, Z+
+    ld    LRL, Z+
+    ld    LRH, Z+
+    ld    LDL, Z+
+    ld    LDH, Z
+    com   LNQL
+    com   LNQH
+    movw  r30, r20
+    ldd   RRL, Z+6
+    ldd   RRH, Z+7
+    ldd   RDL, Z+8
+    ldd   RDH, Z+9
+    ldd   M, Y+2
+    ldd   K, Y+3
+    rjmp  grp
 .Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0
