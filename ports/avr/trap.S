@@ -162,6 +162,75 @@
     std   Z+1, r25
 .endm
 
+/* the same for the r8_interp at Z + o (Z = an r8_scanx, o = 25 or 38) */
+.macro MSTEPO o
+    ldd   r24, Z+\o+4      /* err += r */
+    ldd   r25, Z+\o+5
+    ldd   r26, Z+\o+6
+    ldd   r27, Z+\o+7
+    add   r24, r26
+    adc   r25, r27
+    ldd   r26, Z+\o+8      /* err -= den; on borrow back (C = 1) */
+    ldd   r27, Z+\o+9
+    sub   r24, r26
+    sbc   r25, r27
+    brcc  .+4
+    add   r24, r26
+    adc   r25, r27
+    std   Z+\o+4, r24
+    std   Z+\o+5, r25
+    ldd   r24, Z+\o        /* val += q + !C */
+    ldd   r25, Z+\o+1
+    ldd   r26, Z+\o+2
+    ldd   r27, Z+\o+3
+    brcs  .+2
+    adiw  r24, 1
+    add   r24, r26
+    adc   r25, r27
+    std   Z+\o, r24
+    std   Z+\o+1, r25
+.endm
+
+/* r8k_scanfill's stop = min(lim, r->yend (in r25:r24), l->yend), s->y
+ * = stop, rows = stop - y (y in r21:r20, Z = s; at most 255), r23:r22
+ * = l, r21:r20 = r; one row on to .Lsf_one, more (ROWS) to \rows */
+.macro STOPCALC rows
+    lds   r26, r8k_sf+2
+    lds   r27, r8k_sf+3
+    cp    r24, r26
+    cpc   r25, r27
+    brlt  63f
+    movw  r24, r26
+63: ldd   r26, Z+35
+    ldd   r27, Z+36
+    cp    r26, r24
+    cpc   r27, r25
+    brge  64f
+    movw  r24, r26
+64: movw  r26, r24
+    sub   r26, r20
+    sbc   r27, r21
+    tst   r27
+    breq  65f
+    ldi   r26, 255
+    movw  r24, r20
+    subi  r24, lo8(-255)
+    sbci  r25, hi8(-255)
+65: std   Z+21, r24
+    std   Z+22, r25
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    movw  r20, r30
+    subi  r20, lo8(-38)
+    sbci  r21, hi8(-38)
+    cpi   r26, 1
+    breq  66f
+    mov   ROWS, r26
+    rjmp  \rows
+66: rjmp  .Lsf_one
+.endm
+
     .section .text.r8k_trap,"ax",@progbits
     .global r8k_trap
     .type   r8k_trap, @function
@@ -809,6 +878,9 @@ fin:
     andi  K, 3
     std   Y+2, M
     std   Y+3, K
+    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
+    sbrc  r0, 0
+    rjmp  .Lsf_fin
     pop   r31               /* r */
     pop   r30
     std   Z+0, RVL
@@ -821,9 +893,6 @@ fin:
     std   Z+1, LVH
     std   Z+4, LEL
     std   Z+5, LEH
-    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
-    sbrc  r0, 0
-    rjmp  .Lsf_next
     pop   r29
     pop   r28
     pop   r17
@@ -974,13 +1043,13 @@ r8k_scanband:
     ld    r0, Z             /* buf */
     ldd   r31, Z+1
     mov   r30, r0
-    mov   r19, r26          /* m = 1 << (by & 7) */
-    andi  r19, 7
-    ldi   r27, 1
-    rjmp  2f
-1:  lsl   r27
-2:  dec   r19
-    brpl  1b
+    ldi   r27, 1            /* m = 1 << (by & 7), in 7 cycles: */
+    sbrc  r26, 1            /* 1 or 4 by bit 1, times 2 by bit 0, */
+    ldi   r27, 4            /* times 16 (swap) by bit 2 */
+    sbrc  r26, 0
+    lsl   r27
+    sbrc  r26, 2
+    swap  r27
     sts   r8k_sft+2, r27
     lsr   r26               /* page = buf + (by >> 3) w (by < 2048) */
     lsr   r26
@@ -1023,13 +1092,19 @@ r8k_scanband:
  * From row s->y (< lim) to lim: restart an edge that ended (r8k_estart,
  * edge.S), fill the rows to the first end of either edge or lim (at
  * most 255 at a time) as r8k_trap does, and on; s->y = lim at the end.
- * A one-row trapezoid goes through `one` (its state in memory); longer
- * ones through the register body above, entered at grp with the stack
- * as r8k_trap's entry leaves it (the l and r pointers for fin): fin,
- * seeing r8k_sf+4 set, writes both edges back and comes back here
- * (.Lsf_next) instead of returning.  r2..r17 are saved at the first such
- * trapezoid of a call (a call of one-row trapezoids saves none), which
- * sets that flag.  r8k_sf: s (2 bytes), lim (2), the flag (1).
+ * A one-row trapezoid is `one`'s span and t step inline (its state in
+ * memory), its edges' DDA steps left to .Lsf_next1; longer ones go
+ * through the register body above, entered at grp: fin, seeing r8k_sf+4
+ * set, comes back here (.Lsf_fin) instead of writing back and
+ * returning.  Both skip the work on an edge that ends at y < lim, since
+ * r8k_estart then rewrites all five of its r8_interp fields (the step
+ * of a one-row trapezoid, the write-back of a longer one); at y = lim
+ * both edges are stepped or written, so s ends as the C reference
+ * leaves it.  After a longer trapezoid that restarts one edge only, the
+ * next longer one loads only what r8k_estart did not keep (.Lsf_rowsA,
+ * .Lsf_rowsB).  r2..r17 are saved at the first longer trapezoid of a call
+ * (a call of one-row trapezoids saves none), which sets that flag.
+ * r8k_sf: s (2 bytes), lim (2), the flag (1).
  * r8_scanx offsets: y 21, l 25 (x 25, yend 35, vi 37), r 38 (x 38,
  * yend 48, vi 50) (src/kern.c asserts them). */
     .global r8k_scanfill
@@ -1066,7 +1141,8 @@ r8k_scanfill:
     ldd   r25, Z+49
     cp    r20, r24
     cpc   r21, r25
-    brlt  2f
+    brlt  .Lsf_stop
+.Lsf_rre:
     movw  r24, r30
     movw  r22, r30
     subi  r22, lo8(-38)
@@ -1079,7 +1155,8 @@ r8k_scanfill:
     ldd   r21, Z+22
     ldd   r24, Z+48
     ldd   r25, Z+49
-2:  lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
+.Lsf_stop:
+    lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
     lds   r27, r8k_sf+3
     cp    r24, r26
     cpc   r25, r27
@@ -1110,9 +1187,52 @@ r8k_scanfill:
     sbci  r21, hi8(-38)
     cpi   r26, 1
     brne  .Lsf_rows
-    movw  r24, r28          /* one row: in memory (r2..r17 untouched) */
-    rcall one
-    rjmp  .Lsf_next
+.Lsf_one:
+    /* one row: `one`'s span and t step (r2..r17 untouched); its edges'
+     * DDA steps wait for .Lsf_next1, which skips the step of an edge
+     * that r8k_estart is about to rewrite (all five fields) */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  .Lsf_oneg
+.Lsf_o1:
+    movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  1f
+    movw  r30, r24
+1:  cp    r26, r30
+    cpc   r27, r31
+    ldd   M, Y+2            /* (flags kept) */
+    ldd   K, Y+3
+    brge  2f
+    set                     /* T set: the span returns */
+    rcall span
+2:  inc   K                 /* k = (k + 1) & 3 */
+    andi  K, 3
+    std   Y+3, K
+    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
+    brne  3f
+    inc   M
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, M
+    rjmp  .Lsf_next1
+.Lsf_oneg:
+    clr   r26
+    clr   r27
+    rjmp  .Lsf_o1
 .Lsf_rows:
     mov   ROWS, r26
     lds   r30, r8k_sf+4     /* the first of these rows in this call: */
@@ -1136,11 +1256,7 @@ r8k_scanfill:
     push  r17
     ldi   r30, 1            /* saved, and fin comes back */
     sts   r8k_sf+4, r30
-6:  push  r22               /* as r8k_trap's entry: l, r for fin */
-    push  r23
-    push  r20
-    push  r21
-    movw  r30, r22
+6:  movw  r30, r22
     ld    LVL, Z+
     ld    LVH, Z+
     ld    LNQL, Z+
@@ -1169,7 +1285,10 @@ r8k_scanfill:
     ldd   M, Y+2
     ldd   K, Y+3
     rjmp  grp
-.Lsf_next:                  /* (from fin: both edges written back) */
+/* after a one-row trapezoid: y = s->y; each edge's pending DDA step,
+ * unless the edge ends here and a trapezoid follows (r8k_estart
+ * rewrites it: the step would be lost) */
+.Lsf_next1:
     clr   r1
     lds   r30, r8k_sf
     lds   r31, r8k_sf+1
@@ -1179,8 +1298,158 @@ r8k_scanfill:
     lds   r25, r8k_sf+3
     cp    r20, r24
     cpc   r21, r25
-    brge  7f
-    rjmp  .Lsf_top
+    brlt  1f
+    MSTEPO 25               /* y = lim: both steps, and out */
+    MSTEPO 38
+    rjmp  .Lsf_out
+1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no step */
+    ldd   r25, Z+36
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  2f
+    movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    ldd   r18, Z+37
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    rjmp  3f
+2:  MSTEPO 25
+3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no step */
+    ldd   r25, Z+49
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  4f
+    rjmp  .Lsf_rre
+4:  MSTEPO 38
+    ldd   r24, Z+48
+    ldd   r25, Z+49
+    rjmp  .Lsf_stop
+/* after a trapezoid of several rows (from fin: the edges' val and err
+ * still in r2..r5, r12..r15, which r8k_estart keeps): each edge's write
+ * back, unless it ends here and a trapezoid follows (r8k_estart
+ * rewrites it) */
+.Lsf_fin:
+    clr   r1
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    lds   r24, r8k_sf+2
+    lds   r25, r8k_sf+3
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  1f
+    std   Z+25, LVL         /* y = lim: both, and out */
+    std   Z+26, LVH
+    std   Z+29, LEL
+    std   Z+30, LEH
+    std   Z+38, RVL
+    std   Z+39, RVH
+    std   Z+42, REL
+    std   Z+43, REH
+    rjmp  .Lsf_out
+1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no write */
+    ldd   r25, Z+36
+    cp    r20, r24
+    cpc   r21, r25
+    brge  2f
+    rjmp  .Lsf_lgo
+2:  movw  r24, r30
+    movw  r22, r30
+    subi  r22, lo8(-25)
+    sbci  r23, hi8(-25)
+    ldd   r18, Z+37
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    ldd   r24, Z+48         /* y >= r->yend: restart r too (all */
+    ldd   r25, Z+49         /* loaded again) */
+    cp    r20, r24
+    cpc   r21, r25
+    brlt  3f
+    rjmp  .Lsf_rre
+3:  std   Z+38, RVL         /* r goes on: its val, err, ~q stay in */
+    std   Z+39, RVH         /* r12..r17 (r25:r24 = r->yend) */
+    std   Z+42, REL
+    std   Z+43, REH
+    STOPCALC .Lsf_rowsB
+.Lsf_lgo:                   /* l goes on */
+    std   Z+25, LVL
+    std   Z+26, LVH
+    std   Z+29, LEL
+    std   Z+30, LEH
+    ldd   r24, Z+48         /* y >= r->yend: restart r, no write */
+    ldd   r25, Z+49
+    cp    r20, r24
+    cpc   r21, r25
+    brge  4f
+    std   Z+38, RVL         /* neither ends (a 255-row trapezoid) */
+    std   Z+39, RVH
+    std   Z+42, REL
+    std   Z+43, REH
+    rjmp  .Lsf_stop
+4:  movw  r24, r30          /* l's state stays in r2..r11 */
+    movw  r22, r30
+    subi  r22, lo8(-38)
+    sbci  r23, hi8(-38)
+    ldd   r18, Z+50
+    call  r8k_estart
+    lds   r30, r8k_sf
+    lds   r31, r8k_sf+1
+    ldd   r20, Z+21
+    ldd   r21, Z+22
+    ldd   r24, Z+48
+    ldd   r25, Z+49
+    STOPCALC .Lsf_rowsA
+/* the next trapezoid after .Lsf_fin restarted one edge only: l still
+ * in r2..r11 (A), or r's val, err, ~q in r12..r17 (B) */
+.Lsf_rowsA:
+    movw  r30, r20
+    ld    RVL, Z+
+    ld    RVH, Z+
+    ld    RNQL, Z+
+    ld    RNQH, Z+
+    ld    REL, Z+
+    ld    REH, Z+
+    ld    RRL, Z+
+    ld    RRH, Z+
+    ld    RDL, Z+
+    ld    RDH, Z
+    com   RNQL
+    com   RNQH
+    ldd   M, Y+2
+    ldd   K, Y+3
+    rjmp  grp
+.Lsf_rowsB:
+    movw  r30, r22
+    ld    LVL, Z+
+    ld    LVH, Z+
+    ld    LNQL, Z+
+    ld    LNQH, Z+
+    ld    LEL, Z+
+    ld    LEH, Z+
+    ld    LRL, Z+
+    ld    LRH, Z+
+    ld    LDL, Z+
+    ld    LDH, Z
+    com   LNQL
+    com   LNQH
+    movw  r30, r20
+    ldd   RRL, Z+6
+    ldd   RRH, Z+7
+    ldd   RDL, Z+8
+    ldd   RDH, Z+9
+    ldd   M, Y+2
+    ldd   K, Y+3
+    rjmp  grp
+.Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0
     breq  8f
