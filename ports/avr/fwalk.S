@@ -75,129 +75,26 @@
     subi  \hi, 0x08
 .endm
 
-    .section .text.r8k_fwalk,"ax",@progbits
-    .global r8k_fwalk
-    .type   r8k_fwalk, @function
-r8k_fwalk:
-    push  r14
-    push  r15
-    push  r16
-    push  r17
-    push  r28
-    push  r29
-    movw  r28, r24          /* Y = w */
-face:
-    ldd   r24, Y+W_F
-    ldd   r25, Y+W_F+1
-    sbiw  r24, 1
-    brcc  1f
-    ldi   r24, 0            /* no face left */
-    rjmp  out
-1:  std   Y+W_F, r24
-    std   Y+W_F+1, r25
-    lsl   r24               /* r17:r16 = 6 f */
-    rol   r25
-    movw  r16, r24
-    lsl   r24
-    rol   r25
-    add   r16, r24
-    adc   r17, r25
-    ldd   r30, Y+W_FACES    /* Z = faces + 6 f */
-    ldd   r31, Y+W_FACES+1
-    add   r30, r16
-    adc   r31, r17
-    RD(r20)                 /* n */
-    mov   r21, r20
-    subi  r21, 3
-    cpi   r21, 2
-    brlo  1f
-    rjmp  other             /* n not 3 or 4 */
-1:
-    ldd   r24, Y+W_NORM
-    ldd   r25, Y+W_NORM+1
-    adiw  r30, 1            /* Z = the vertex indices */
-    sbiw  r24, 0
-    brne  1f
-    rjmp  box               /* no cull */
-1:
-    add   r24, r16          /* n = normals + 3 f */
-    adc   r25, r17
-    /* r8k_cull (facecull.S) inline: the differences eye - 16 v,
-     * -1 when a component of v lies outside [-1023, 1023] */
-    RD0(r22)                /* v = verts + 3 v[0] */
-    ldi   r23, 6
-    mul   r22, r23
-    ldd   r30, Y+W_VERTS
-    ldd   r31, Y+W_VERTS+1
-    add   r30, r0
-    adc   r31, r1
-    ldd   r26, Y+W_EYE      /* X = eye */
-    ldd   r27, Y+W_EYE+1
-    movw  r14, r24          /* (n) */
-    DIFF  r18, r19, cout
-    DIFF  r20, r21, cout
-    DIFF  r22, r23, cout
-    rjmp  dot
-cout:
-    rjmp  other             /* -1: the caller's 32-bit test */
-dot:
-    movw  r30, r14          /* Z = n */
-    DOT3                    /* r27:r24 = n . d (facemac.h) */
-    clr   r1
-    sbrc  r27, 7
-    rjmp  face              /* < 0: a back face */
-    or    r24, r25
-    or    r24, r26
-    or    r24, r27
-    brne  1f
-    rjmp  face              /* 0: a back face */
-1:  ldd   r24, Y+W_F        /* Z = the vertex indices, r20 = n again */
-    ldd   r25, Y+W_F+1
-    lsl   r24
-    rol   r25
-    movw  r16, r24
-    lsl   r24
-    rol   r25
-    add   r16, r24
-    adc   r17, r25
-    ldd   r30, Y+W_FACES
-    ldd   r31, Y+W_FACES+1
-    add   r30, r16
-    adc   r31, r17
-    RD(r20)
-    adiw  r30, 1
-box:
-    /* Z = the vertex indices, r20 = n */
-    mov   r21, r30
-    add   r21, r20          /* the end: lo(Z + n) */
-    ldd   r18, Y+W_VSH
-    bst   r18, 1            /* T: 8-byte vertices */
-    ldd   r24, Y+W_BASE
-    ldd   r25, Y+W_BASE+1
-    ldi   r18, 0xFF
-    ldi   r19, 0x7F         /* xmin = 32767 */
-    movw  r14, r18          /* ymin = 32767 */
-    ldi   r16, 0x01
-    ldi   r17, 0x80         /* xmax = -32767 (6 f is done with) */
-    movw  r0, r16           /* ymax = -32767 */
-    rjmp  vert
-other:
-    ldi   r24, 2            /* R8_FW_OTHER */
-    rjmp  out
-mark:
-    cpi   r22, 2
-    brsh  xok               /* an ordinary x */
-    cpi   r22, 1
-    brne  other             /* -32768: the clipper's */
-    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
-     * vertex again */
-    push  r0
-    push  r1
-    push  r18
-    push  r19
-    push  r21
-    push  r30
-    push  r31
+/* X = the vertex of the next index (Z+), base r25:r24, T: 8 bytes;
+ * its x in r23:r22 */
+.macro VADDR
+    RD(r26)
+    clr   r27
+    lsl   r26
+    rol   r27
+    lsl   r26
+    rol   r27
+    brtc  2f
+    lsl   r26
+    rol   r27
+2:  add   r26, r24
+    adc   r27, r25
+    ld    r22, X+
+    ld    r23, X+
+.endm
+
+/* r8k_vertex(st, o, verts + 3 i, vbase + i) for the index before Z */
+.macro TFV
     sbiw  r30, 1
     RD0(r22)                /* i */
     ldi   r23, 6
@@ -216,32 +113,228 @@ mark:
     ldd   r22, Y+W_O
     ldd   r23, Y+W_O+1
     call  r8k_vertex        /* (vertex.S; else transform.c: r8_tf_vertex) */
-    pop   r31
-    pop   r30
-    pop   r21
-    pop   r19
-    pop   r18
-    pop   r1
-    pop   r0
+.endm
+
+/* back to the index before Z, T and r25:r24 again */
+.macro VAGAIN
     sbiw  r30, 1
     ldd   r24, Y+W_VSH
     bst   r24, 1
     ldd   r24, Y+W_BASE
     ldd   r25, Y+W_BASE+1
-vert:
-    RD(r26)
-    clr   r27
-    lsl   r26
-    rol   r27
-    lsl   r26
-    rol   r27
-    brtc  2f
-    lsl   r26
-    rol   r27
-2:  add   r26, r24
-    adc   r27, r25
+.endm
+
+/* dl:dh = 16 v - e (v read through Z+, e = the eye component's low 16
+ * bits in el:eh); out of range: to `out` (r8k_cull's -1) */
+.macro DIFFR dl, dh, el, eh, out
+    RD(\dl)
+    RD(\dh)
+    movw  r16, \dl
+    subi  r16, 0x01
+    sbci  r17, 0xFC         /* v + 1023 */
+    cpi   r16, 0xFF
+    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
+    brcc  \out
+    swap  \dh              /* v << 4 (fits: |v| <= 1023) */
+    swap  \dl
+    andi  \dh, 0xF0
+    eor   \dh, \dl
+    andi  \dl, 0xF0
+    eor   \dh, \dl
+    sub   \dl, \el
+    sbc   \dh, \eh
+.endm
+
+    .section .text.r8k_fwalk,"ax",@progbits
+    .global r8k_fwalk
+    .type   r8k_fwalk, @function
+r8k_fwalk:
+    push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r6
+    push  r7
+    push  r8
+    push  r9
+    push  r10
+    push  r11
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = w */
+    ldd   r2, Y+W_F         /* f */
+    ldd   r3, Y+W_F+1
+    movw  r24, r2           /* r17:r16 = 6 f */
+    lsl   r24
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r4, Y+W_FACES     /* faces + 6 f */
+    ldd   r5, Y+W_FACES+1
+    add   r4, r16
+    adc   r5, r17
+    ldd   r6, Y+W_NORM      /* normals + 6 f, or 0: no cull */
+    ldd   r7, Y+W_NORM+1
+    cp    r6, r1
+    cpc   r7, r1
+    brne  1f
+    rjmp  face_nc
+1:
+    add   r6, r16
+    adc   r7, r17
+    ldd   r26, Y+W_EYE      /* the eye's low 16 bits */
+    ldd   r27, Y+W_EYE+1
+    ld    r8, X+
+    ld    r9, X
+    adiw  r26, 3
+    ld    r10, X+
+    ld    r11, X
+    adiw  r26, 3
+    ld    r12, X+
+    ld    r13, X
+    rjmp  face
+none:
+    std   Y+W_F, r2         /* (0) */
+    std   Y+W_F+1, r3
+    ldi   r24, 0
+    rjmp  out
+other:
+    std   Y+W_F, r2
+    std   Y+W_F+1, r3
+    ldi   r24, 2            /* R8_FW_OTHER */
+    rjmp  out
+face:
+    movw  r24, r2
+    sbiw  r24, 1
+    brcs  none              /* no face left (f = 0) */
+    movw  r2, r24
+    movw  r30, r4           /* Z = faces + 6 f */
+    sbiw  r30, 6
+    movw  r4, r30
+    movw  r24, r6           /* r25:r24 = normals + 6 f */
+    sbiw  r24, 6
+    movw  r6, r24
+    RD(r20)                 /* n */
+    subi  r20, 3
+    cpi   r20, 2
+    brsh  other             /* n not 3 or 4 */
+    /* r8k_cull (facecull.S) inline with the eye in registers: the
+     * differences 16 v - eye (-1 when a component of v lies outside
+     * [-1023, 1023]), their dot product with n negative for a front
+     * face */
+    adiw  r30, 1            /* Z = the vertex indices */
+    RD0(r22)                /* v = verts + 3 v[0] */
+    ldi   r23, 6
+    mul   r22, r23
+    ldd   r30, Y+W_VERTS
+    ldd   r31, Y+W_VERTS+1
+    add   r30, r0
+    adc   r31, r1
+    DIFFR r18, r19, r8, r9, cout
+    DIFFR r20, r21, r10, r11, cout
+    DIFFR r22, r23, r12, r13, cout
+    rjmp  dot
+cout:
+    rjmp  other
+dot:
+    movw  r30, r24          /* Z = n */
+    DOT3                    /* r27:r24 = n . (16 v - eye) (facemac.h) */
+    sbrs  r27, 7
+    rjmp  face              /* >= 0: a back face */
+    movw  r30, r4           /* Z = the vertex indices, r20 = n */
+    RD(r20)
+    adiw  r30, 1
+    rjmp  box
+face_nc:                    /* no cull */
+    movw  r24, r2
+    sbiw  r24, 1
+    brcc  1f
+    rjmp  none
+1:
+    movw  r2, r24
+    movw  r30, r4
+    sbiw  r30, 6
+    movw  r4, r30
+    RD(r20)                 /* n */
+    mov   r21, r20
+    subi  r21, 3
+    cpi   r21, 2
+    brsh  1f
+    adiw  r30, 1            /* Z = the vertex indices */
+    rjmp  box
+1:  rjmp  other
+box:
+    /* Z = the vertex indices, r20 = n */
+    mov   r0, r30
+    add   r0, r20           /* the end: lo(Z + n) */
+    ldd   r18, Y+W_VSH
+    bst   r18, 1            /* T: 8-byte vertices */
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+vert0:                      /* the first vertex sets the box */
+    VADDR
+    cpi   r23, 0x80
+    breq  mark0             /* x in [-32768, -32513] */
+x0ok:
+    movw  r18, r22          /* xmin */
+    movw  r16, r22          /* xmax */
     ld    r22, X+
-    ld    r23, X+
+    ld    r23, X
+    movw  r14, r22          /* ymin */
+    movw  r20, r22          /* ymax */
+    rjmp  vtest
+mark0:
+    cpi   r22, 2
+    brsh  x0ok              /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    push  r0
+    push  r30
+    push  r31
+    TFV
+    pop   r31
+    pop   r30
+    pop   r0
+    VAGAIN
+    rjmp  vert0
+mark:
+    cpi   r22, 2
+    brsh  xok               /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
+     * vertex again */
+    push  r0
+    push  r18
+    push  r19
+    push  r20
+    push  r21
+    push  r30
+    push  r31
+    TFV
+    pop   r31
+    pop   r30
+    pop   r21
+    pop   r20
+    pop   r19
+    pop   r18
+    pop   r0
+    VAGAIN
+vert:
+    VADDR
     cpi   r23, 0x80
     breq  mark              /* x in [-32768, -32513] */
 xok:
@@ -259,14 +352,14 @@ xok:
     cpc   r23, r15
     brge  5f
     movw  r14, r22
-5:  cp    r0, r22
-    cpc   r1, r23
-    brge  6f
-    movw  r0, r22
-6:  cp    r30, r21
+5:  cp    r20, r22
+    cpc   r21, r23
+    brge  vtest
+    movw  r20, r22
+vtest:
+    cp    r30, r0
     brne  vert
     /* the rows: bot r21:r20, top r23:r22 */
-    movw  r20, r0
     clr   r1
     FLOOR r20, r21
     movw  r22, r14
@@ -293,8 +386,18 @@ xok:
     cpc   r19, r25
     brge  next              /* floor(xmin) >= w */
     ldd   r24, Y+W_BSH
-    sbrs  r24, 7
+    sbrc  r24, 7
+    rjmp  paint
     rjmp  put               /* bsh >= 0: into its bucket here */
+next:
+    movw  r24, r6           /* normals + 6 f: 0 without the cull */
+    sbiw  r24, 0
+    brne  1f
+    rjmp  face_nc
+1:  rjmp  face
+paint:
+    std   Y+W_F, r2
+    std   Y+W_F+1, r3
     std   Y+W_TOP, r22
     std   Y+W_TOP+1, r23
     std   Y+W_BOT, r20
@@ -316,9 +419,19 @@ out:
     pop   r16
     pop   r15
     pop   r14
+    pop   r13
+    pop   r12
+    pop   r11
+    pop   r10
+    pop   r9
+    pop   r8
+    pop   r7
+    pop   r6
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
     ret
-next:
-    rjmp  face
 put:
     /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
      * r19:r18 (r1 = 0) */
@@ -332,11 +445,13 @@ put:
     ror   r22
     dec   r24
     brne  2b
-3:
+3:  movw  r18, r2
+    rjmp  putf
     .global r8k_fwalk_putk
-r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0) */
+r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0, r2-r13 as they were) */
     ldd   r18, Y+W_F
     ldd   r19, Y+W_F+1
+putf:
     ldd   r20, Y+W_FBASE
     ldd   r21, Y+W_FBASE+1
     add   r18, r20
@@ -386,5 +501,5 @@ r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0) */
     adiw  r24, 1
     std   Y+W_NPOLY, r24
     std   Y+W_NPOLY+1, r25
-    rjmp  face
+    rjmp  next
     .size r8k_fwalk, .-r8k_fwalk
