@@ -124,24 +124,24 @@
     ldd   r25, Y+W_BASE+1
 .endm
 
-/* dl:dh = 16 v - e (v read through Z+, e = the eye component's low 16
- * bits in el:eh); out of range: to `out` (r8k_cull's -1) */
+/* dl:dh = 16 v - e (v read through Z+; el:eh = e' = the eye component's
+ * low 16 bits + 16368, r16 = 7): 16 (v + 1023) - e'; v out of range: to
+ * `out` (r8k_cull's -1) */
 .macro DIFFR dl, dh, el, eh, out
     RD(\dl)
     RD(\dh)
-    movw  r16, \dl
-    subi  r16, 0x01
-    sbci  r17, 0xFC         /* v + 1023 */
-    cpi   r16, 0xFF
-    sbci  r17, 0x07         /* C iff v + 1023 <= 2046 (unsigned) */
+    subi  \dl, 0x01
+    sbci  \dh, 0xFC        /* r = v + 1023 */
+    cpi   \dl, 0xFF
+    cpc   \dh, r16         /* C iff r <= 2046 (unsigned) */
     brcc  \out
-    swap  \dh              /* v << 4 (fits: |v| <= 1023) */
+    swap  \dh              /* r << 4 (fits: r < 2048) */
     swap  \dl
     andi  \dh, 0xF0
     eor   \dh, \dl
     andi  \dl, 0xF0
     eor   \dh, \dl
-    sub   \dl, \el
+    sub   \dl, \el        /* 16 r - e' = 16 v - e (exact: |16 v - e| < 2^15) */
     sbc   \dh, \eh
 .endm
 
@@ -201,6 +201,14 @@ r8k_fwalk:
     adiw  r26, 3
     ld    r12, X+
     ld    r13, X
+    ldi   r24, 0xF0         /* e' = e + 16368 (DIFFR) */
+    ldi   r25, 0x3F
+    add   r8, r24
+    adc   r9, r25
+    add   r10, r24
+    adc   r11, r25
+    add   r12, r24
+    adc   r13, r25
     rjmp  face
 none:
     std   Y+W_F, r2         /* (0) */
@@ -239,6 +247,7 @@ face:
     ldd   r31, Y+W_VERTS+1
     add   r30, r0
     adc   r31, r1
+    ldi   r16, 7
     DIFFR r18, r19, r8, r9, cout
     DIFFR r20, r21, r10, r11, cout
     DIFFR r22, r23, r12, r13, cout
@@ -375,10 +384,12 @@ vtest:
     cp    r22, r24
     cpc   r23, r25
     brge  next              /* top >= h */
-    FLOOR r16, r17
-    cp    r1, r16
-    cpc   r1, r17
-    brge  next              /* floor(xmax) <= 0 */
+    subi  r16, 0xF9         /* floor(xmax) > 0: (xmax + 0x8007) mod 2^16 */
+    sbci  r17, 0x7F         /* >= 0x8010 (unsigned), see FLOOR */
+    cpi   r16, 0x10
+    ldi   r24, 0x80
+    cpc   r17, r24
+    brlo  next              /* floor(xmax) <= 0 */
     FLOOR r18, r19
     ldd   r24, Y+W_W
     ldd   r25, Y+W_W+1
@@ -389,12 +400,12 @@ vtest:
     sbrc  r24, 7
     rjmp  paint
     rjmp  put               /* bsh >= 0: into its bucket here */
-next:
-    movw  r24, r6           /* normals + 6 f: 0 without the cull */
-    sbiw  r24, 0
-    brne  1f
-    rjmp  face_nc
-1:  rjmp  face
+next:                       /* (r1 = 0) */
+    cp    r6, r1            /* normals + 6 f: 0 without the cull */
+    cpc   r7, r1
+    breq  1f
+    rjmp  face
+1:  rjmp  face_nc
 paint:
     std   Y+W_F, r2
     std   Y+W_F+1, r3
