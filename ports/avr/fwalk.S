@@ -13,16 +13,24 @@
  * vertex x = -32768); 0 at the end.  Reference: src/kern.c, which
  * asserts the offsets of r8_fwalk used here.
  *
- * Registers (avr-gcc ABI): w in r25:r24, then Y.  Per face r17:r16 =
- * 6 f (the face's byte offset in faces and normals) until the cull,
- * which has r8k_cull's registers (X = eye, Z = v then n, differences
- * r19:r18, r21:r20, r23:r22, sum r27:r24, normal r17:r16, r15 zero).  The
- * box: Z = the face's vertex indices (flash), r21 = the low byte of
- * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
- * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
- * on the stack around r8_tf_vertex with Z and r21).  Saves r14-r17, r28,
- * r29; clears r1.  About 200 cycles a face with the cull, 43 a vertex,
- * 60 for the rows, 50 in and out.
+ * Registers (avr-gcc ABI): w in r25:r24, then Y.  The walk's state
+ * stays in r2-r13 for the whole call: f r3:r2 (stored to w->f only on
+ * the way out and before fwpaint.S), faces + 6 f r5:r4, normals + 6 f
+ * r7:r6 (0: no cull, the loop at face_nc), the eye's low 16 bits + 16368
+ * (e', DIFFR) r9:r8, r11:r10, r13:r12.  The cull (r8k_cull's test,
+ * sign flipped): Z = v then n, the differences 16 v - e r19:r18,
+ * r21:r20, r23:r22, r16 = 7 for their range test, then the sum r27:r24
+ * = n . (16 v - e) (DOT3, facemac.h; r17:r16 the normal, r15 zero):
+ * a front face when it is negative.  The box: Z = the face's vertex
+ * indices (flash), r0 = the low byte of their end, X = the vertex, T =
+ * 8-byte vertices, r25:r24 = base; x or y r23:r22; the first vertex sets
+ * xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r21:r20 (kept on the
+ * stack around r8k_vertex with Z and r0).  Saves r2-r17, r28, r29; clears
+ * r1.  r8k_fwpaint (fwpaint.S) may use r14-r17 and must keep r2-r13: it
+ * goes on at r8k_fwalk_putk (Y = w, key r23:r22, r1 = 0) or
+ * r8k_fwalk_ret1 (Y = w).  Per torus frame (fw-1-0-4, 200 faces, 96
+ * drawn): about 180 cycles a back face, 40 a vertex (about 100 more
+ * for one to transform), 60 for the rows, 70 for the bucket.
  */
 #ifdef R8_NO_PROGMEM
 #define RD(r) ld r, Z+
@@ -58,7 +66,7 @@
 
 #define ZERO r15
 
-#include "facemac.h"   /* DIFF, ACC: r8k_cull's */
+#include "facemac.h"   /* DOT3: r8k_cull's sum */
 
 
 /* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
