@@ -83,19 +83,20 @@
     subi  \hi, 0x08
 .endm
 
-/* X = the vertex of the next index (Z+), base r25:r24, T: 8 bytes;
- * its x in r23:r22 */
-.macro VADDR
+/* X = the vertex of the next index (Z+), base r25:r24, 8 bytes when
+ * eight is 1, else 4; its x in r23:r22 */
+.macro VADDR eight
     RD(r26)
     clr   r27
     lsl   r26
     rol   r27
     lsl   r26
     rol   r27
-    brtc  2f
+.if \eight
     lsl   r26
     rol   r27
-2:  add   r26, r24
+.endif
+    add   r26, r24
     adc   r27, r25
     ld    r22, X+
     ld    r23, X+
@@ -123,13 +124,96 @@
     call  r8k_vertex        /* (vertex.S; else transform.c: r8_tf_vertex) */
 .endm
 
-/* back to the index before Z, T and r25:r24 again */
+/* back to the index before Z, r25:r24 again */
 .macro VAGAIN
     sbiw  r30, 1
-    ldd   r24, Y+W_VSH
-    bst   r24, 1
     ldd   r24, Y+W_BASE
     ldd   r25, Y+W_BASE+1
+.endm
+
+/* the box of the face's vertices (base r25:r24, Z the indices, r0 their
+ * end), vertices of 8 bytes when eight is 1, else 4; the labels end in
+ * sfx */
+.macro BOXLOOP sfx, eight
+v0\sfx:                     /* the first vertex sets the box */
+    VADDR \eight
+    cpi   r23, 0x80
+    breq  m0\sfx             /* x in [-32768, -32513] */
+x0\sfx:
+    movw  r18, r22          /* xmin */
+    movw  r16, r22          /* xmax */
+    ld    r22, X+
+    ld    r23, X
+    movw  r14, r22          /* ymin */
+    movw  r20, r22          /* ymax */
+    rjmp  vt\sfx
+m0\sfx:
+    cpi   r22, 2
+    brsh  x0\sfx              /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    push  r0
+    push  r30
+    push  r31
+    TFV
+    pop   r31
+    pop   r30
+    pop   r0
+    VAGAIN
+    rjmp  v0\sfx
+m\sfx:
+    cpi   r22, 2
+    brsh  xk\sfx               /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
+     * vertex again */
+    push  r0
+    push  r18
+    push  r19
+    push  r20
+    push  r21
+    push  r30
+    push  r31
+    TFV
+    pop   r31
+    pop   r30
+    pop   r21
+    pop   r20
+    pop   r19
+    pop   r18
+    pop   r0
+    VAGAIN
+vt1\sfx:
+    VADDR \eight
+    cpi   r23, 0x80
+    breq  m\sfx              /* x in [-32768, -32513] */
+xk\sfx:
+    cp    r22, r18
+    cpc   r23, r19
+    brge  3f
+    movw  r18, r22
+3:  cp    r16, r22
+    cpc   r17, r23
+    brge  4f
+    movw  r16, r22
+4:  ld    r22, X+
+    ld    r23, X
+    cp    r22, r14
+    cpc   r23, r15
+    brge  5f
+    movw  r14, r22
+5:  cp    r20, r22
+    cpc   r21, r23
+    brge  vt\sfx
+    movw  r20, r22
+vt\sfx:
+    cp    r30, r0
+    brne  vt1\sfx
 .endm
 
 /* dl:dh = 16 v - e (v read through Z+; el:eh = e' = the eye component's
@@ -190,15 +274,16 @@ r8k_fwalk:
     ldd   r5, Y+W_FACES+1
     add   r4, r16
     adc   r5, r17
-    ldd   r6, Y+W_NORM      /* normals + 6 f, or 0: no cull */
+    ldd   r6, Y+W_NORM      /* normals - faces, or 0: no cull */
     ldd   r7, Y+W_NORM+1
     cp    r6, r1
     cpc   r7, r1
     brne  1f
     rjmp  face_nc
-1:
-    add   r6, r16
-    adc   r7, r17
+1:  ldd   r24, Y+W_FACES
+    ldd   r25, Y+W_FACES+1
+    sub   r6, r24
+    sbc   r7, r25
     ldd   r26, Y+W_EYE      /* the eye's low 16 bits */
     ldd   r27, Y+W_EYE+1
     ld    r8, X+
@@ -236,9 +321,6 @@ face:
     movw  r30, r4           /* Z = faces + 6 f */
     sbiw  r30, 6
     movw  r4, r30
-    movw  r24, r6           /* r25:r24 = normals + 6 f */
-    sbiw  r24, 6
-    movw  r6, r24
     RD(r20)                 /* n */
     subi  r20, 3
     cpi   r20, 2
@@ -263,7 +345,9 @@ face:
 cout:
     rjmp  other
 dot:
-    movw  r30, r24          /* Z = n */
+    movw  r30, r4           /* Z = n = normals + 6 f */
+    add   r30, r6
+    adc   r31, r7
     DOT3                    /* r27:r24 = n . (16 v - eye) (facemac.h) */
     sbrs  r27, 7
     rjmp  face              /* >= 0: a back face */
@@ -293,89 +377,13 @@ box:
     /* Z = the vertex indices, r20 = n */
     mov   r0, r30
     add   r0, r20           /* the end: lo(Z + n) */
-    ldd   r18, Y+W_VSH
-    bst   r18, 1            /* T: 8-byte vertices */
     ldd   r24, Y+W_BASE
     ldd   r25, Y+W_BASE+1
-vert0:                      /* the first vertex sets the box */
-    VADDR
-    cpi   r23, 0x80
-    breq  mark0             /* x in [-32768, -32513] */
-x0ok:
-    movw  r18, r22          /* xmin */
-    movw  r16, r22          /* xmax */
-    ld    r22, X+
-    ld    r23, X
-    movw  r14, r22          /* ymin */
-    movw  r20, r22          /* ymax */
-    rjmp  vtest
-mark0:
-    cpi   r22, 2
-    brsh  x0ok              /* an ordinary x */
-    cpi   r22, 1
-    breq  1f
-    rjmp  other             /* -32768: the clipper's */
-1:
-    push  r0
-    push  r30
-    push  r31
-    TFV
-    pop   r31
-    pop   r30
-    pop   r0
-    VAGAIN
-    rjmp  vert0
-mark:
-    cpi   r22, 2
-    brsh  xok               /* an ordinary x */
-    cpi   r22, 1
-    breq  1f
-    rjmp  other             /* -32768: the clipper's */
-1:
-    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
-     * vertex again */
-    push  r0
-    push  r18
-    push  r19
-    push  r20
-    push  r21
-    push  r30
-    push  r31
-    TFV
-    pop   r31
-    pop   r30
-    pop   r21
-    pop   r20
-    pop   r19
-    pop   r18
-    pop   r0
-    VAGAIN
-vert:
-    VADDR
-    cpi   r23, 0x80
-    breq  mark              /* x in [-32768, -32513] */
-xok:
-    cp    r22, r18
-    cpc   r23, r19
-    brge  3f
-    movw  r18, r22
-3:  cp    r16, r22
-    cpc   r17, r23
-    brge  4f
-    movw  r16, r22
-4:  ld    r22, X+
-    ld    r23, X
-    cp    r22, r14
-    cpc   r23, r15
-    brge  5f
-    movw  r14, r22
-5:  cp    r20, r22
-    cpc   r21, r23
-    brge  vtest
-    movw  r20, r22
-vtest:
-    cp    r30, r0
-    brne  vert
+    ldd   r18, Y+W_VSH
+    sbrc  r18, 1
+    rjmp  box8
+    BOXLOOP 4, 0
+rows:
     /* the rows: bot r21:r20, top r23:r22 */
     clr   r1
     FLOOR r20, r21
@@ -409,7 +417,7 @@ vtest:
     rjmp  paint
     rjmp  put               /* bsh >= 0: into its bucket here */
 next:                       /* (r1 = 0) */
-    cp    r6, r1            /* normals + 6 f: 0 without the cull */
+    cp    r6, r1            /* normals - faces: 0 without the cull */
     cpc   r7, r1
     breq  1f
     rjmp  face
@@ -451,6 +459,9 @@ out:
     pop   r3
     pop   r2
     ret
+box8:
+    BOXLOOP 8, 1
+    rjmp  rows
 put:
     /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
      * r19:r18 (r1 = 0) */
