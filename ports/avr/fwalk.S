@@ -338,13 +338,9 @@ face:
     add   r30, r0
     adc   r31, r1
     ldi   r16, 7
-    DIFFR r18, r19, r8, r9, cout
-    DIFFR r20, r21, r10, r11, cout
-    DIFFR r22, r23, r12, r13, cout
-    rjmp  dot
-cout:
-    rjmp  other
-dot:
+    DIFFR r18, r19, r8, r9, other
+    DIFFR r20, r21, r10, r11, other
+    DIFFR r22, r23, r12, r13, other
     movw  r30, r4           /* Z = n = normals + 6 f */
     add   r30, r6
     adc   r31, r7
