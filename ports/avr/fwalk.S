@@ -15,22 +15,23 @@
  *
  * Registers (avr-gcc ABI): w in r25:r24, then Y.  The walk's state
  * stays in r2-r13 for the whole call: f r3:r2 (stored to w->f only on
- * the way out and before fwpaint.S), faces + 6 f r5:r4, normals + 6 f
- * r7:r6 (0: no cull, the loop at face_nc), the eye's low 16 bits + 16368
- * (e', DIFFR) r9:r8, r11:r10, r13:r12.  The cull (r8k_cull's test,
- * sign flipped): Z = v then n, the differences 16 v - e r19:r18,
+ * the way out and before fwpaint.S), faces + 6 f r5:r4, normals - faces
+ * r7:r6 (0: no cull, the loop at face_nc), the eye's low 16 bits +
+ * 16368 (e', DIFFR) r9:r8, r11:r10, r13:r12.  The cull (r8k_cull's
+ * test, sign flipped): Z = v then n, the differences 16 v - e r19:r18,
  * r21:r20, r23:r22, r16 = 7 for their range test, then the sum r27:r24
  * = n . (16 v - e) (DOT3, facemac.h; r17:r16 the normal, r15 zero):
- * a front face when it is negative.  The box: Z = the face's vertex
- * indices (flash), r0 = the low byte of their end, X = the vertex, T =
- * 8-byte vertices, r25:r24 = base; x or y r23:r22; the first vertex sets
- * xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r21:r20 (kept on the
- * stack around r8k_vertex with Z and r0).  Saves r2-r17, r28, r29; clears
- * r1.  r8k_fwpaint (fwpaint.S) may use r14-r17 and must keep r2-r13: it
- * goes on at r8k_fwalk_putk (Y = w, key r23:r22, r1 = 0) or
- * r8k_fwalk_ret1 (Y = w).  Per torus frame (fw-1-0-4, 200 faces, 96
- * drawn): about 180 cycles a back face, 40 a vertex (about 100 more
- * for one to transform), 60 for the rows, 70 for the bucket.
+ * a front face when it is negative.  The box (BOXLOOP 4 or 8, the
+ * vertex size): Z = the face's vertex indices (flash), r0 = the low
+ * byte of their end, X = the vertex, r25:r24 = base; x or y r23:r22;
+ * the first vertex sets xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax
+ * r21:r20 (kept on the stack around r8k_vertex with Z and r0).  Saves
+ * r2-r17, r28, r29; clears r1.  r8k_fwpaint (fwpaint.S) may use r14-r17
+ * and must keep r2-r13: it goes on at r8k_fwalk_putk (Y = w, key
+ * r23:r22, r1 = 0) or r8k_fwalk_ret1 (Y = w).  Per torus frame
+ * (fw-1-0-4, 200 faces, 96 drawn): about 170 cycles a back face, 40 a
+ * vertex (about 100 more for one to transform), 60 for the rows, 70 for
+ * the bucket.
  */
 #ifdef R8_NO_PROGMEM
 #define RD(r) ld r, Z+
@@ -409,16 +410,8 @@ rows:
     cpc   r19, r25
     brge  next              /* floor(xmin) >= w */
     ldd   r24, Y+W_BSH
-    sbrc  r24, 7
-    rjmp  paint
+    sbrs  r24, 7
     rjmp  put               /* bsh >= 0: into its bucket here */
-next:                       /* (r1 = 0) */
-    cp    r6, r1            /* normals - faces: 0 without the cull */
-    cpc   r7, r1
-    breq  1f
-    rjmp  face
-1:  rjmp  face_nc
-paint:
     std   Y+W_F, r2
     std   Y+W_F+1, r3
     std   Y+W_TOP, r22
@@ -430,6 +423,12 @@ paint:
     sbiw  r30, 0
     breq  r8k_fwalk_ret1
     ijmp                    /* painter's: r8k_fwpaint (fwpaint.S) */
+next:                       /* (r1 = 0) */
+    cp    r6, r1            /* normals - faces: 0 without the cull */
+    cpc   r7, r1
+    breq  1f
+    rjmp  face
+1:  rjmp  face_nc
     .global r8k_fwalk_ret1
 r8k_fwalk_ret1:
     ldi   r24, 1
