@@ -460,18 +460,26 @@ box8:
 put:
     /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
      * r19:r18 (r1 = 0) */
-    sbrs  r23, 7
-    rjmp  1f
-    clr   r22
-    clr   r23
-1:  tst   r24
+    tst   r23
+    brne  6f                /* top < 0 or >= 256 */
+    tst   r24
     breq  3f
-2:  lsr   r23
-    ror   r22
+2:  lsr   r22               /* 8 bits */
     dec   r24
     brne  2b
 3:  movw  r18, r2
     rjmp  putf
+6:  brpl  7f
+    clr   r22               /* top < 0: 0 */
+    clr   r23
+    rjmp  3b
+7:  tst   r24
+    breq  3b
+8:  lsr   r23               /* 16 bits */
+    ror   r22
+    dec   r24
+    brne  8b
+    rjmp  3b
     .global r8k_fwalk_putk
 r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0, r2-r13 as they were) */
     ldd   r18, Y+W_F
