@@ -13,16 +13,25 @@
  * vertex x = -32768); 0 at the end.  Reference: src/kern.c, which
  * asserts the offsets of r8_fwalk used here.
  *
- * Registers (avr-gcc ABI): w in r25:r24, then Y.  Per face r17:r16 =
- * 6 f (the face's byte offset in faces and normals) until the cull,
- * which has r8k_cull's registers (X = eye, Z = v then n, differences
- * r19:r18, r21:r20, r23:r22, sum r27:r24, normal r17:r16, r15 zero).  The
- * box: Z = the face's vertex indices (flash), r21 = the low byte of
- * their end, X = the vertex, T = 8-byte vertices, r25:r24 = base; x or
- * y r23:r22, xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax r1:r0 (kept
- * on the stack around r8_tf_vertex with Z and r21).  Saves r14-r17, r28,
- * r29; clears r1.  About 200 cycles a face with the cull, 43 a vertex,
- * 60 for the rows, 50 in and out.
+ * Registers (avr-gcc ABI): w in r25:r24, then Y.  The walk's state
+ * stays in r2-r13 for the whole call: f r3:r2 (stored to w->f only on
+ * the way out and before fwpaint.S), faces + 6 f r5:r4, normals - faces
+ * r7:r6 (0: no cull, the loop at face_nc), the eye's low 16 bits +
+ * 16368 (e', DIFFR) r9:r8, r11:r10, r13:r12.  The cull (r8k_cull's
+ * test, sign flipped): Z = v then n, the differences 16 v - e r19:r18,
+ * r21:r20, r23:r22, r16 = 7 for their range test, then the sum r27:r24
+ * = n . (16 v - e) (DOT3, facemac.h; r17:r16 the normal, r15 zero):
+ * a front face when it is negative.  The box (BOXLOOP 4 or 8, the
+ * vertex size): Z = the face's vertex indices (flash), r0 = the low
+ * byte of their end, X = the vertex, r25:r24 = base; x or y r23:r22;
+ * the first vertex sets xmin r19:r18, xmax r17:r16, ymin r15:r14, ymax
+ * r21:r20 (kept on the stack around r8k_vertex with Z and r0).  Saves
+ * r2-r17, r28, r29; clears r1.  r8k_fwpaint (fwpaint.S) may use r14-r17
+ * and must keep r2-r13: it goes on at r8k_fwalk_putk (Y = w, key
+ * r23:r22, r1 = 0) or r8k_fwalk_ret1 (Y = w).  Per torus frame
+ * (fw-1-0-4, 200 faces, 96 drawn): about 170 cycles a back face, 40 a
+ * vertex (about 100 more for one to transform), 60 for the rows, 70 for
+ * the bucket.
  */
 #ifdef R8_NO_PROGMEM
 #define RD(r) ld r, Z+
@@ -58,7 +67,7 @@
 
 #define ZERO r15
 
-#include "facemac.h"   /* DIFF, ACC: r8k_cull's */
+#include "facemac.h"   /* DOT3: r8k_cull's sum */
 
 
 /* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
@@ -75,129 +84,27 @@
     subi  \hi, 0x08
 .endm
 
-    .section .text.r8k_fwalk,"ax",@progbits
-    .global r8k_fwalk
-    .type   r8k_fwalk, @function
-r8k_fwalk:
-    push  r14
-    push  r15
-    push  r16
-    push  r17
-    push  r28
-    push  r29
-    movw  r28, r24          /* Y = w */
-face:
-    ldd   r24, Y+W_F
-    ldd   r25, Y+W_F+1
-    sbiw  r24, 1
-    brcc  1f
-    ldi   r24, 0            /* no face left */
-    rjmp  out
-1:  std   Y+W_F, r24
-    std   Y+W_F+1, r25
-    lsl   r24               /* r17:r16 = 6 f */
-    rol   r25
-    movw  r16, r24
-    lsl   r24
-    rol   r25
-    add   r16, r24
-    adc   r17, r25
-    ldd   r30, Y+W_FACES    /* Z = faces + 6 f */
-    ldd   r31, Y+W_FACES+1
-    add   r30, r16
-    adc   r31, r17
-    RD(r20)                 /* n */
-    mov   r21, r20
-    subi  r21, 3
-    cpi   r21, 2
-    brlo  1f
-    rjmp  other             /* n not 3 or 4 */
-1:
-    ldd   r24, Y+W_NORM
-    ldd   r25, Y+W_NORM+1
-    adiw  r30, 1            /* Z = the vertex indices */
-    sbiw  r24, 0
-    brne  1f
-    rjmp  box               /* no cull */
-1:
-    add   r24, r16          /* n = normals + 3 f */
-    adc   r25, r17
-    /* r8k_cull (facecull.S) inline: the differences eye - 16 v,
-     * -1 when a component of v lies outside [-1023, 1023] */
-    RD0(r22)                /* v = verts + 3 v[0] */
-    ldi   r23, 6
-    mul   r22, r23
-    ldd   r30, Y+W_VERTS
-    ldd   r31, Y+W_VERTS+1
-    add   r30, r0
-    adc   r31, r1
-    ldd   r26, Y+W_EYE      /* X = eye */
-    ldd   r27, Y+W_EYE+1
-    movw  r14, r24          /* (n) */
-    DIFF  r18, r19, cout
-    DIFF  r20, r21, cout
-    DIFF  r22, r23, cout
-    rjmp  dot
-cout:
-    rjmp  other             /* -1: the caller's 32-bit test */
-dot:
-    movw  r30, r14          /* Z = n */
-    DOT3                    /* r27:r24 = n . d (facemac.h) */
-    clr   r1
-    sbrc  r27, 7
-    rjmp  face              /* < 0: a back face */
-    or    r24, r25
-    or    r24, r26
-    or    r24, r27
-    brne  1f
-    rjmp  face              /* 0: a back face */
-1:  ldd   r24, Y+W_F        /* Z = the vertex indices, r20 = n again */
-    ldd   r25, Y+W_F+1
-    lsl   r24
-    rol   r25
-    movw  r16, r24
-    lsl   r24
-    rol   r25
-    add   r16, r24
-    adc   r17, r25
-    ldd   r30, Y+W_FACES
-    ldd   r31, Y+W_FACES+1
-    add   r30, r16
-    adc   r31, r17
-    RD(r20)
-    adiw  r30, 1
-box:
-    /* Z = the vertex indices, r20 = n */
-    mov   r21, r30
-    add   r21, r20          /* the end: lo(Z + n) */
-    ldd   r18, Y+W_VSH
-    bst   r18, 1            /* T: 8-byte vertices */
-    ldd   r24, Y+W_BASE
-    ldd   r25, Y+W_BASE+1
-    ldi   r18, 0xFF
-    ldi   r19, 0x7F         /* xmin = 32767 */
-    movw  r14, r18          /* ymin = 32767 */
-    ldi   r16, 0x01
-    ldi   r17, 0x80         /* xmax = -32767 (6 f is done with) */
-    movw  r0, r16           /* ymax = -32767 */
-    rjmp  vert
-other:
-    ldi   r24, 2            /* R8_FW_OTHER */
-    rjmp  out
-mark:
-    cpi   r22, 2
-    brsh  xok               /* an ordinary x */
-    cpi   r22, 1
-    brne  other             /* -32768: the clipper's */
-    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
-     * vertex again */
-    push  r0
-    push  r1
-    push  r18
-    push  r19
-    push  r21
-    push  r30
-    push  r31
+/* X = the vertex of the next index (Z+), base r25:r24, 8 bytes when
+ * eight is 1, else 4; its x in r23:r22 */
+.macro VADDR eight
+    RD(r26)
+    clr   r27
+    lsl   r26
+    rol   r27
+    lsl   r26
+    rol   r27
+.if \eight
+    lsl   r26
+    rol   r27
+.endif
+    add   r26, r24
+    adc   r27, r25
+    ld    r22, X+
+    ld    r23, X+
+.endm
+
+/* r8k_vertex(st, o, verts + 3 i, vbase + i) for the index before Z */
+.macro TFV
     sbiw  r30, 1
     RD0(r22)                /* i */
     ldi   r23, 6
@@ -216,35 +123,77 @@ mark:
     ldd   r22, Y+W_O
     ldd   r23, Y+W_O+1
     call  r8k_vertex        /* (vertex.S; else transform.c: r8_tf_vertex) */
+.endm
+
+/* back to the index before Z, r25:r24 again */
+.macro VAGAIN
+    sbiw  r30, 1
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+.endm
+
+/* the box of the face's vertices (base r25:r24, Z the indices, r0 their
+ * end), vertices of 8 bytes when eight is 1, else 4; the labels end in
+ * sfx */
+.macro BOXLOOP sfx, eight
+v0\sfx:                     /* the first vertex sets the box */
+    VADDR \eight
+    cpi   r23, 0x80
+    breq  m0\sfx             /* x in [-32768, -32513] */
+x0\sfx:
+    movw  r18, r22          /* xmin */
+    movw  r16, r22          /* xmax */
+    ld    r22, X+
+    ld    r23, X
+    movw  r14, r22          /* ymin */
+    movw  r20, r22          /* ymax */
+    rjmp  vt\sfx
+m0\sfx:
+    cpi   r22, 2
+    brsh  x0\sfx              /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    push  r0
+    push  r30
+    push  r31
+    TFV
+    pop   r31
+    pop   r30
+    pop   r0
+    VAGAIN
+    rjmp  v0\sfx
+m\sfx:
+    cpi   r22, 2
+    brsh  xk\sfx               /* an ordinary x */
+    cpi   r22, 1
+    breq  1f
+    rjmp  other             /* -32768: the clipper's */
+1:
+    /* -32767: r8k_vertex(st, o, verts + 3 i, vbase + i), the box kept on the stack, then this
+     * vertex again */
+    push  r0
+    push  r18
+    push  r19
+    push  r20
+    push  r21
+    push  r30
+    push  r31
+    TFV
     pop   r31
     pop   r30
     pop   r21
+    pop   r20
     pop   r19
     pop   r18
-    pop   r1
     pop   r0
-    sbiw  r30, 1
-    ldd   r24, Y+W_VSH
-    bst   r24, 1
-    ldd   r24, Y+W_BASE
-    ldd   r25, Y+W_BASE+1
-vert:
-    RD(r26)
-    clr   r27
-    lsl   r26
-    rol   r27
-    lsl   r26
-    rol   r27
-    brtc  2f
-    lsl   r26
-    rol   r27
-2:  add   r26, r24
-    adc   r27, r25
-    ld    r22, X+
-    ld    r23, X+
+    VAGAIN
+vt1\sfx:
+    VADDR \eight
     cpi   r23, 0x80
-    breq  mark              /* x in [-32768, -32513] */
-xok:
+    breq  m\sfx              /* x in [-32768, -32513] */
+xk\sfx:
     cp    r22, r18
     cpc   r23, r19
     brge  3f
@@ -259,14 +208,180 @@ xok:
     cpc   r23, r15
     brge  5f
     movw  r14, r22
-5:  cp    r0, r22
-    cpc   r1, r23
-    brge  6f
-    movw  r0, r22
-6:  cp    r30, r21
-    brne  vert
+5:  cp    r20, r22
+    cpc   r21, r23
+    brge  vt\sfx
+    movw  r20, r22
+vt\sfx:
+    cp    r30, r0
+    brne  vt1\sfx
+.endm
+
+/* dl:dh = 16 v - e (v read through Z+; el:eh = e' = the eye component's
+ * low 16 bits + 16368, r16 = 7): 16 (v + 1023) - e'; v out of range: to
+ * `out` (r8k_cull's -1) */
+.macro DIFFR dl, dh, el, eh, out
+    RD(\dl)
+    RD(\dh)
+    subi  \dl, 0x01
+    sbci  \dh, 0xFC        /* r = v + 1023 */
+    cpi   \dl, 0xFF
+    cpc   \dh, r16         /* C iff r <= 2046 (unsigned) */
+    brcc  \out
+    swap  \dh              /* r << 4 (fits: r < 2048) */
+    swap  \dl
+    andi  \dh, 0xF0
+    eor   \dh, \dl
+    andi  \dl, 0xF0
+    eor   \dh, \dl
+    sub   \dl, \el        /* 16 r - e' = 16 v - e (exact: |16 v - e| < 2^15) */
+    sbc   \dh, \eh
+.endm
+
+    .section .text.r8k_fwalk,"ax",@progbits
+    .global r8k_fwalk
+    .type   r8k_fwalk, @function
+r8k_fwalk:
+    push  r2
+    push  r3
+    push  r4
+    push  r5
+    push  r6
+    push  r7
+    push  r8
+    push  r9
+    push  r10
+    push  r11
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = w */
+    ldd   r2, Y+W_F         /* f */
+    ldd   r3, Y+W_F+1
+    movw  r24, r2           /* r17:r16 = 6 f */
+    lsl   r24
+    rol   r25
+    movw  r16, r24
+    lsl   r24
+    rol   r25
+    add   r16, r24
+    adc   r17, r25
+    ldd   r4, Y+W_FACES     /* faces + 6 f */
+    ldd   r5, Y+W_FACES+1
+    add   r4, r16
+    adc   r5, r17
+    ldd   r6, Y+W_NORM      /* normals - faces, or 0: no cull */
+    ldd   r7, Y+W_NORM+1
+    cp    r6, r1
+    cpc   r7, r1
+    brne  1f
+    rjmp  face_nc
+1:  ldd   r24, Y+W_FACES
+    ldd   r25, Y+W_FACES+1
+    sub   r6, r24
+    sbc   r7, r25
+    ldd   r26, Y+W_EYE      /* the eye's low 16 bits */
+    ldd   r27, Y+W_EYE+1
+    ld    r8, X+
+    ld    r9, X
+    adiw  r26, 3
+    ld    r10, X+
+    ld    r11, X
+    adiw  r26, 3
+    ld    r12, X+
+    ld    r13, X
+    ldi   r24, 0xF0         /* e' = e + 16368 (DIFFR) */
+    ldi   r25, 0x3F
+    add   r8, r24
+    adc   r9, r25
+    add   r10, r24
+    adc   r11, r25
+    add   r12, r24
+    adc   r13, r25
+    rjmp  face
+none:
+    std   Y+W_F, r2         /* (0) */
+    std   Y+W_F+1, r3
+    ldi   r24, 0
+    rjmp  out
+other:
+    std   Y+W_F, r2
+    std   Y+W_F+1, r3
+    ldi   r24, 2            /* R8_FW_OTHER */
+    rjmp  out
+face:
+    movw  r24, r2
+    sbiw  r24, 1
+    brcs  none              /* no face left (f = 0) */
+    movw  r2, r24
+    movw  r30, r4           /* Z = faces + 6 f */
+    sbiw  r30, 6
+    movw  r4, r30
+    RD(r20)                 /* n */
+    subi  r20, 3
+    cpi   r20, 2
+    brsh  other             /* n not 3 or 4 */
+    /* r8k_cull (facecull.S) inline with the eye in registers: the
+     * differences 16 v - eye (-1 when a component of v lies outside
+     * [-1023, 1023]), their dot product with n negative for a front
+     * face */
+    adiw  r30, 1            /* Z = the vertex indices */
+    RD0(r22)                /* v = verts + 3 v[0] */
+    ldi   r23, 6
+    mul   r22, r23
+    ldd   r30, Y+W_VERTS
+    ldd   r31, Y+W_VERTS+1
+    add   r30, r0
+    adc   r31, r1
+    ldi   r16, 7
+    DIFFR r18, r19, r8, r9, other
+    DIFFR r20, r21, r10, r11, other
+    DIFFR r22, r23, r12, r13, other
+    movw  r30, r4           /* Z = n = normals + 6 f */
+    add   r30, r6
+    adc   r31, r7
+    DOT3                    /* r27:r24 = n . (16 v - eye) (facemac.h) */
+    sbrs  r27, 7
+    rjmp  face              /* >= 0: a back face */
+    movw  r30, r4           /* Z = the vertex indices, r20 = n */
+    RD(r20)
+    adiw  r30, 1
+    rjmp  box
+face_nc:                    /* no cull */
+    movw  r24, r2
+    sbiw  r24, 1
+    brcc  1f
+    rjmp  none
+1:
+    movw  r2, r24
+    movw  r30, r4
+    sbiw  r30, 6
+    movw  r4, r30
+    RD(r20)                 /* n */
+    mov   r21, r20
+    subi  r21, 3
+    cpi   r21, 2
+    brsh  1f
+    adiw  r30, 1            /* Z = the vertex indices */
+    rjmp  box
+1:  rjmp  other
+box:
+    /* Z = the vertex indices, r20 = n */
+    mov   r0, r30
+    add   r0, r20           /* the end: lo(Z + n) */
+    ldd   r24, Y+W_BASE
+    ldd   r25, Y+W_BASE+1
+    ldd   r18, Y+W_VSH
+    sbrc  r18, 1
+    rjmp  box8
+    BOXLOOP 4, 0
+rows:
     /* the rows: bot r21:r20, top r23:r22 */
-    movw  r20, r0
     clr   r1
     FLOOR r20, r21
     movw  r22, r14
@@ -282,10 +397,12 @@ xok:
     cp    r22, r24
     cpc   r23, r25
     brge  next              /* top >= h */
-    FLOOR r16, r17
-    cp    r1, r16
-    cpc   r1, r17
-    brge  next              /* floor(xmax) <= 0 */
+    subi  r16, 0xF9         /* floor(xmax) > 0: (xmax + 0x8007) mod 2^16 */
+    sbci  r17, 0x7F         /* >= 0x8010 (unsigned), see FLOOR */
+    cpi   r16, 0x10
+    ldi   r24, 0x80
+    cpc   r17, r24
+    brlo  next              /* floor(xmax) <= 0 */
     FLOOR r18, r19
     ldd   r24, Y+W_W
     ldd   r25, Y+W_W+1
@@ -295,6 +412,8 @@ xok:
     ldd   r24, Y+W_BSH
     sbrs  r24, 7
     rjmp  put               /* bsh >= 0: into its bucket here */
+    std   Y+W_F, r2
+    std   Y+W_F+1, r3
     std   Y+W_TOP, r22
     std   Y+W_TOP+1, r23
     std   Y+W_BOT, r20
@@ -304,6 +423,12 @@ xok:
     sbiw  r30, 0
     breq  r8k_fwalk_ret1
     ijmp                    /* painter's: r8k_fwpaint (fwpaint.S) */
+next:                       /* (r1 = 0) */
+    cp    r6, r1            /* normals - faces: 0 without the cull */
+    cpc   r7, r1
+    breq  1f
+    rjmp  face
+1:  rjmp  face_nc
     .global r8k_fwalk_ret1
 r8k_fwalk_ret1:
     ldi   r24, 1
@@ -316,27 +441,50 @@ out:
     pop   r16
     pop   r15
     pop   r14
+    pop   r13
+    pop   r12
+    pop   r11
+    pop   r10
+    pop   r9
+    pop   r8
+    pop   r7
+    pop   r6
+    pop   r5
+    pop   r4
+    pop   r3
+    pop   r2
     ret
-next:
-    rjmp  face
+box8:
+    BOXLOOP 8, 1
+    rjmp  rows
 put:
     /* key = top >> bsh (0 for top < 0) in r23:r22, id = fbase + f in
      * r19:r18 (r1 = 0) */
-    sbrs  r23, 7
-    rjmp  1f
-    clr   r22
-    clr   r23
-1:  tst   r24
+    tst   r23
+    brne  6f                /* top < 0 or >= 256 */
+    tst   r24
     breq  3f
-2:  lsr   r23
-    ror   r22
+2:  lsr   r22               /* 8 bits */
     dec   r24
     brne  2b
-3:
+3:  movw  r18, r2
+    rjmp  putf
+6:  brpl  7f
+    clr   r22               /* top < 0: 0 */
+    clr   r23
+    rjmp  3b
+7:  tst   r24
+    breq  3b
+8:  lsr   r23               /* 16 bits */
+    ror   r22
+    dec   r24
+    brne  8b
+    rjmp  3b
     .global r8k_fwalk_putk
-r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0) */
+r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0, r2-r13 as they were) */
     ldd   r18, Y+W_F
     ldd   r19, Y+W_F+1
+putf:
     ldd   r20, Y+W_FBASE
     ldd   r21, Y+W_FBASE+1
     add   r18, r20
@@ -386,5 +534,5 @@ r8k_fwalk_putk:             /* (fwpaint.S: key r23:r22, r1 = 0) */
     adiw  r24, 1
     std   Y+W_NPOLY, r24
     std   Y+W_NPOLY+1, r25
-    rjmp  face
+    rjmp  next
     .size r8k_fwalk, .-r8k_fwalk
