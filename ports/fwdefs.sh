@@ -63,8 +63,10 @@ trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 # chain; the 328P torus painter's would keep 57 B free, not 64)
 [ "${3:-}" = avr328 ] && trim="${trim/ -DFW_SPIN/} $SMALL328"
 # the 328P's block methods (whose frames go to the block buffer, not the
-# face walk's fast path) leave the face walk and its vertex kernel out:
-# ~2 KB of flash they need to fit the 32 KB part (the cross: 604 B over)
-[ "${3:-}" = avr328 ] && { [ "$m" = 4 ] || [ "$m" = 5 ]; } && case "$trim" in
+# face walk's fast path) and the terrain's painter's (the largest mesh
+# tables) leave the face walk and its vertex kernel out: ~2 KB of flash
+# they need to fit the 32 KB part (cross / block 604 B over, terrain /
+# painter's 62 B)
+[ "${3:-}" = avr328 ] && { [ "$m" = 4 ] || [ "$m" = 5 ] || [ "$s-$m" = 3-1 ]; } && case "$trim" in
   *R8_NO_FWALK*) ;; *) trim="$trim -DR8_NO_FWALK" ;; esac
 echo "-DFW_SCENE=$s -DFW_METHOD=$m -DFW_FRAMES=$f -DFW_RAM=$ram $trim"
