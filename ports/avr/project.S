@@ -58,64 +58,7 @@
     brne  \fail
 .endm
 
-/* q (r24:r23) of the coordinate in r19:r18: kk r17:r16, k r27, L r26,
- * lim r31:r30, zero r15; to .Lreject when out of range */
-.macro COORD
-    mul   r18, r16          /* P = v kk: al kl (u x u), at byte 0 */
-    movw  r22, r0
-    muls  r19, r17          /* ah kh (s x s), at byte 2 */
-    movw  r24, r0
-    mulsu r19, r16          /* ah kl (s x u), at byte 1; C = its sign */
-    sbc   r25, r15          /* its sign extension: -2^24 */
-    add   r23, r0
-    adc   r24, r1
-    adc   r25, r15
-    mulsu r17, r18          /* kh al (s x u), at byte 1 */
-    sbc   r25, r15
-    add   r23, r0
-    adc   r24, r1
-    adc   r25, r15
-    sbrs  r27, 4            /* k & 16: two bytes off */
-    rjmp  1f
-    movw  r22, r24
-    mov   r24, r23
-    lsl   r24
-    sbc   r24, r24
-    mov   r25, r24
-1:  sbrs  r27, 3            /* k & 8: one byte off */
-    rjmp  2f
-    mov   r22, r23
-    mov   r23, r24
-    mov   r24, r25
-    lsl   r25
-    sbc   r25, r25
-2:  mov   r0, r26           /* << L; a sign change: far out */
-    tst   r0
-    breq  4f
-3:  lsl   r22
-    rol   r23
-    rol   r24
-    rol   r25
-    brvs  .Lreject
-    dec   r0
-    brne  3b
-4:  mov   r0, r24           /* floor(P / 2^sh) = r25:r24:r23 in 16 bits? */
-    lsl   r0
-    sbc   r0, r0
-    cp    r25, r0
-    brne  .Lreject
-    lsl   r22               /* q = that + bit sh - 1 of P */
-    adc   r23, r15
-    adc   r24, r15
-    cp    r30, r23          /* q > lim */
-    cpc   r31, r24
-    brlt  .Lreject
-    add   r23, r30          /* q + lim < 0 (S: the true sign) */
-    adc   r24, r31
-    brlt  .Lreject
-    sub   r23, r30
-    sbc   r24, r31
-.endm
+#include "projmac.h"   /* COORD */
 
     .section .text.r8k_project,"ax",@progbits
     .global r8k_project
@@ -290,7 +233,7 @@ r8k_project:
 
     /* qx, qy */
     movw  r18, r24
-    COORD
+    COORD r15, .Lreject
     movw  r18, r12
     mov   r12, r23
     mov   r13, r24
@@ -298,7 +241,7 @@ r8k_project:
 .Lreject:
     ldi   r24, 1
     rjmp  .Lret01
-20: COORD
+20: COORD r15, .Lreject
     ldd   r0, Y+0           /* out = cx + qx, cy + qy */
     ldd   r1, Y+1
     add   r12, r0

@@ -119,64 +119,7 @@
 2:
 .endm
 
-/* project.S's COORD, zero in r20: q (r24:r23) of the coordinate r19:r18,
- * kk r17:r16, k r27, L r26, lim r31:r30; to .Lclip when out of range */
-.macro COORD
-    mul   r18, r16          /* P = v kk: al kl (u x u), at byte 0 */
-    movw  r22, r0
-    muls  r19, r17          /* ah kh (s x s), at byte 2 */
-    movw  r24, r0
-    mulsu r19, r16          /* ah kl (s x u), at byte 1; C = its sign */
-    sbc   r25, r20
-    add   r23, r0
-    adc   r24, r1
-    adc   r25, r20
-    mulsu r17, r18          /* kh al (s x u), at byte 1 */
-    sbc   r25, r20
-    add   r23, r0
-    adc   r24, r1
-    adc   r25, r20
-    sbrs  r27, 4            /* k & 16: two bytes off */
-    rjmp  1f
-    movw  r22, r24
-    mov   r24, r23
-    lsl   r24
-    sbc   r24, r24
-    mov   r25, r24
-1:  sbrs  r27, 3            /* k & 8: one byte off */
-    rjmp  2f
-    mov   r22, r23
-    mov   r23, r24
-    mov   r24, r25
-    lsl   r25
-    sbc   r25, r25
-2:  mov   r0, r26           /* << L; a sign change: far out */
-    tst   r0
-    breq  4f
-3:  lsl   r22
-    rol   r23
-    rol   r24
-    rol   r25
-    brvs  .Lclip
-    dec   r0
-    brne  3b
-4:  mov   r0, r24           /* floor(P / 2^sh) = r25:r24:r23 in 16 bits? */
-    lsl   r0
-    sbc   r0, r0
-    cp    r25, r0
-    brne  .Lclip
-    lsl   r22               /* q = that + bit sh - 1 of P */
-    adc   r23, r20
-    adc   r24, r20
-    cp    r30, r23          /* q > lim */
-    cpc   r31, r24
-    brlt  .Lclip
-    add   r23, r30          /* q + lim < 0 (S: the true sign) */
-    adc   r24, r31
-    brlt  .Lclip
-    sub   r23, r30
-    sbc   r24, r31
-.endm
+#include "projmac.h"   /* project.S's COORD */
 
     .section .text.r8k_vertex,"ax",@progbits
     .global r8k_vertex
@@ -373,7 +316,7 @@ r8k_vertex:
     lsl   r30
     rol   r31
     movw  r18, r14          /* qx (r15:r14) */
-    COORD
+    COORD r20, .Lclip
     mov   r14, r23
     mov   r15, r24
     movw  r18, r10          /* qy (r24:r23) */
@@ -385,7 +328,7 @@ r8k_vertex:
     ldi   r24, 0x80
     std   Z+1, r24
     rjmp  .Lret
-13: COORD
+13: COORD r20, .Lclip
 .Lstore:                    /* out = cx + qx, cy + qy */
     ldd   r0, Y+ST_CAM+P_CX
     ldd   r1, Y+ST_CAM+P_CX+1
