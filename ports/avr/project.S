@@ -149,33 +149,7 @@ r8k_project:
 .Lnorm:                       /* m from the table, *e = s, *m = m */
     movw  r30, r16
     st    Z, r26
-    mov   r27, r23          /* Z = rec_tab + 2 ((zn >> 8) & 0x7F) */
-    lsl   r27
-    ldi   r30, lo8(r8k_rec_tab)
-    ldi   r31, hi8(r8k_rec_tab)
-    add   r30, r27
-    brcc  .+2
-    inc   r31
-    lpm   r16, Z+           /* t0 (r17:r16), t1 (r1:r0) */
-    lpm   r17, Z+
-    lpm   r0, Z+
-    lpm   r1, Z
-    movw  r30, r16          /* t0 - t1 < 512 */
-    sub   r30, r0
-    sbc   r31, r1
-    lsr   r22               /* (zn & 0xFF) >> 1 */
-    mul   r30, r22
-    sbrc  r31, 0
-    add   r1, r22
-    movw  r30, r0           /* (that + 64) >> 7 = r27:r31 */
-    subi  r30, 0xC0
-    sbci  r31, 0xFF
-    lsl   r30
-    rol   r31
-    clr   r27
-    rol   r27
-    sub   r16, r31          /* m = t0 - that */
-    sbc   r17, r27
+    RECIP
     movw  r30, r18
     st    Z, r16
     std   Z+1, r17

@@ -1,6 +1,7 @@
 /* projmac.h - r8k_project's coordinate step, shared by project.S and
  * vertex.S (r8k_vertex): COORD zero, out with `zero` a register holding 0
- * and `out` the label an out-of-range coordinate goes to. */
+ * and `out` the label an out-of-range coordinate goes to; and the
+ * reciprocal's table step, RECIP. */
 
 /* q (r24:r23) of the coordinate in r19:r18: kk r17:r16, k r27, L r26,
  * lim r31:r30, `zero` 0; to `out` when out of range */
@@ -59,4 +60,38 @@
     brlt  \out
     sub   r23, r30
     sbc   r24, r31
+.endm
+
+/* project.S's step 1: m (r17:r16) = t0 - (((t0 - t1) ((zn & 0xFF) >> 1)
+ * + 64) >> 7) for zn (r23:r22) in [2^15, 2^16), t0 and t1 r8k_rec_tab's
+ * entries i and i + 1, i = (zn >> 8) & 0x7F; r0, r1, r22, r27, r30, r31
+ * scratch */
+.macro RECIP
+    mov   r27, r23          /* Z = rec_tab + 2 ((zn >> 8) & 0x7F) */
+    lsl   r27
+    ldi   r30, lo8(r8k_rec_tab)
+    ldi   r31, hi8(r8k_rec_tab)
+    add   r30, r27
+    brcc  .+2
+    inc   r31
+    lpm   r16, Z+           /* t0 (r17:r16), t1 (r1:r0) */
+    lpm   r17, Z+
+    lpm   r0, Z+
+    lpm   r1, Z
+    movw  r30, r16          /* t0 - t1 < 512 */
+    sub   r30, r0
+    sbc   r31, r1
+    lsr   r22               /* (zn & 0xFF) >> 1 */
+    mul   r30, r22
+    sbrc  r31, 0
+    add   r1, r22
+    movw  r30, r0           /* (that + 64) >> 7 = r27:r31 */
+    subi  r30, 0xC0
+    sbci  r31, 0xFF
+    lsl   r30
+    rol   r31
+    clr   r27
+    rol   r27
+    sub   r16, r31          /* m = t0 - that */
+    sbc   r17, r27
 .endm
