@@ -194,7 +194,7 @@ MAZE_TARGETS := avr328 avr1284 6502 z80
 # clipper and run-time normals left out (render.c and scan.c compiled in)
 MAZE_XDEFS  := -Isrc -I$(MAZE_DIR) -Iexamples/common -I$(EXB)/maze -DMAZE_TRIM -DFW_TRIM_LZ77 -DR8_NO_GOURAUD \
   -DR8_NO_RT_NORMALS -DR8_PAGE1_ONLY -DR8_NO_PAINTER -DR8_NO_ZBUF -DR8_NO_BLOCK -DR8_NO_SBUF -DR8_NO_CLIP \
-  -DR8_NO_TEXTURE -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL
+  -DR8_NO_TEXTURE -DR8_NO_BSP -DR8_NO_WIRE -DR8_NO_PORTAL -DR8_NO_FWALK
 MAZE_FW     := $(EXB)/avr328/maze/maze-$(MAZE_FRAMES).elf $(EXB)/avr1284/maze/maze-$(MAZE_FRAMES).elf \
   $(EXB)/6502/maze/maze-$(MAZE_FRAMES).prg $(EXB)/z80/maze/maze-$(MAZE_FRAMES).ihx
 
