@@ -58,7 +58,7 @@
     brne  \fail
 .endm
 
-#include "projmac.h"   /* COORD */
+#include "projmac.h"   /* NORM, RECIP, KSETUP, COORD */
 
     .section .text.r8k_project,"ax",@progbits
     .global r8k_project
@@ -110,22 +110,8 @@ r8k_project:
     mov   r23, r22          /* a byte at once */
     clr   r22
     ldi   r26, 8
-3:  cpi   r23, 0x10
-    brsh  4f
-    swap  r23               /* four bits at once */
-    swap  r22
-    mov   r27, r22
-    andi  r27, 0x0F
-    andi  r23, 0xF0
-    or    r23, r27
-    andi  r22, 0xF0
-    subi  r26, -4
-4:  tst   r23
-    brmi  .Lnorm
-5:  inc   r26               /* then bit by bit */
-    lsl   r22
-    rol   r23
-    brpl  5b
+3:
+    NORM  .Lnorm
     rjmp  .Lnorm
 .Lzone:
     ldi   r22, 0x00         /* zn = 2^15, s = 15 */
@@ -157,53 +143,8 @@ r8k_project:
     rjmp  .Lwide
 
     /* kk (r17:r16), k = sh - 1 (r27), L (r26), lim (r31:r30) */
-7:  clr   r15
-    ldd   r18, Y+12         /* k = m fn: r31:r30:r23:r22 */
-    ldd   r19, Y+13
-    mul   r16, r18
-    movw  r22, r0
-    mul   r17, r19
-    movw  r30, r0
-    mul   r16, r19
-    add   r23, r0
-    adc   r30, r1
-    adc   r31, r15
-    mul   r17, r18
-    add   r23, r0
-    adc   r30, r1
-    adc   r31, r15
-    ldi   r18, 16
-    cpi   r31, 0x40
-    brsh  8f
-    lsl   r23               /* kk = k >> 15, sh = 16 + fsh - e */
-    rol   r30
-    rol   r31
-    rjmp  9f
-8:  dec   r18               /* kk = k >> 16, sh = 15 + fsh - e */
-9:  movw  r16, r30
-    sub   r18, r26          /* >= 0 (|e| <= 15) */
-    ldd   r27, Y+14
-    add   r27, r18
-    brcs  10f               /* sh > 255 */
-    subi  r27, 1
-    brcc  11f
-    rjmp  .Lshzero            /* sh = 0 */
-11: cpi   r27, 31
-    brlo  12f
-10: ldi   r27, 30           /* sh > 31: 31 */
-12: mov   r26, r27          /* L = 7 - (k & 7) */
-    com   r26
-    andi  r26, 7
-    ldd   r30, Y+10         /* lim = 16 guard */
-    ldd   r31, Y+11
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
+7:
+    KSETUP r15, 12, 14, 10, .Lshzero
 
     /* qx, qy */
     movw  r18, r24

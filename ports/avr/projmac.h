@@ -1,7 +1,82 @@
-/* projmac.h - r8k_project's coordinate step, shared by project.S and
- * vertex.S (r8k_vertex): COORD zero, out with `zero` a register holding 0
- * and `out` the label an out-of-range coordinate goes to; and the
- * reciprocal's table step, RECIP. */
+/* projmac.h - r8k_project's steps, shared by project.S and vertex.S
+ * (r8k_vertex): NORM (z normalised for the table), RECIP (the
+ * reciprocal's table step), KSETUP (the coordinate scale from the
+ * reciprocal and the camera) and COORD (one coordinate). */
+
+/* zn (r23:r22, r23 != 0) normalised to [2^15, 2^16), its shift added to
+ * s (r26); r27 scratch; ends at `done` */
+.macro NORM done
+    cpi   r23, 0x10
+    brsh  8f
+    swap  r23               /* four bits at once */
+    swap  r22
+    mov   r27, r22
+    andi  r27, 0x0F
+    andi  r23, 0xF0
+    or    r23, r27
+    andi  r22, 0xF0
+    subi  r26, -4
+8:  tst   r23
+    brmi  \done
+9:  inc   r26               /* then bit by bit */
+    lsl   r22
+    rol   r23
+    brpl  9b
+.endm
+
+/* From m (r17:r16) and e (r26): kk (r17:r16), k = sh - 1 (r27), L (r26),
+ * lim (r31:r30), with fn, fsh and guard the camera's fields at Y + those
+ * offsets; `zero` is cleared and left 0; to `shzero` when sh = 0.  r0,
+ * r1, r18, r19, r22, r23 scratch. */
+.macro KSETUP zero, fn, fsh, guard, shzero
+    clr   \zero
+    ldd   r18, Y+\fn         /* k = m fn: r31:r30:r23:r22 */
+    ldd   r19, Y+\fn+1
+    mul   r16, r18
+    movw  r22, r0
+    mul   r17, r19
+    movw  r30, r0
+    mul   r16, r19
+    add   r23, r0
+    adc   r30, r1
+    adc   r31, \zero
+    mul   r17, r18
+    add   r23, r0
+    adc   r30, r1
+    adc   r31, \zero
+    ldi   r18, 16
+    cpi   r31, 0x40
+    brsh  8f
+    lsl   r23               /* kk = k >> 15, sh = 16 + fsh - e */
+    rol   r30
+    rol   r31
+    rjmp  9f
+8:  dec   r18               /* kk = k >> 16, sh = 15 + fsh - e */
+9:  movw  r16, r30
+    sub   r18, r26          /* >= 0 (|e| <= 15) */
+    ldd   r27, Y+\fsh
+    add   r27, r18
+    brcs  10f               /* sh > 255 */
+    subi  r27, 1
+    brcc  11f
+    rjmp  \shzero           /* sh = 0 */
+11: cpi   r27, 31
+    brlo  12f
+10: ldi   r27, 30           /* sh > 31: 31 */
+12: mov   r26, r27          /* L = 7 - (k & 7) */
+    com   r26
+    andi  r26, 7
+    ldd   r30, Y+\guard      /* lim = 16 guard */
+    ldd   r31, Y+\guard+1
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+    lsl   r30
+    rol   r31
+.endm
 
 /* q (r24:r23) of the coordinate in r19:r18: kk r17:r16, k r27, L r26,
  * lim r31:r30, `zero` 0; to `out` when out of range */

@@ -119,7 +119,7 @@
 2:
 .endm
 
-#include "projmac.h"   /* project.S's COORD */
+#include "projmac.h"   /* project.S's NORM, RECIP, KSETUP, COORD */
 
     .section .text.r8k_vertex,"ax",@progbits
     .global r8k_vertex
@@ -220,75 +220,15 @@ r8k_vertex:
     mov   r23, r22          /* a byte at once */
     clr   r22
     ldi   r26, 8
-4:  cpi   r23, 0x10
-    brsh  5f
-    swap  r23               /* four bits at once */
-    swap  r22
-    mov   r27, r22
-    andi  r27, 0x0F
-    andi  r23, 0xF0
-    or    r23, r27
-    andi  r22, 0xF0
-    subi  r26, -4
-5:  tst   r23
-    brmi  7f
-6:  inc   r26               /* then bit by bit */
-    lsl   r22
-    rol   r23
-    brpl  6b
+4:
+    NORM  7f
 7:  RECIP
     brtc  1f
     movw  r8, r16           /* vsh 2: m, e kept */
     mov   r21, r26
 1:
     /* kk (r17:r16), k = sh - 1 (r27), L (r26), lim (r31:r30) */
-    clr   r20
-    ldd   r18, Y+ST_CAM+P_FN    /* k = m fn: r31:r30:r23:r22 */
-    ldd   r19, Y+ST_CAM+P_FN+1
-    mul   r16, r18
-    movw  r22, r0
-    mul   r17, r19
-    movw  r30, r0
-    mul   r16, r19
-    add   r23, r0
-    adc   r30, r1
-    adc   r31, r20
-    mul   r17, r18
-    add   r23, r0
-    adc   r30, r1
-    adc   r31, r20
-    ldi   r18, 16
-    cpi   r31, 0x40
-    brsh  8f
-    lsl   r23               /* kk = k >> 15, sh = 16 + fsh - e */
-    rol   r30
-    rol   r31
-    rjmp  9f
-8:  dec   r18               /* kk = k >> 16, sh = 15 + fsh - e */
-9:  movw  r16, r30
-    sub   r18, r26          /* >= 1 (e in [0, 15]) */
-    ldd   r27, Y+ST_CAM+P_FSH
-    add   r27, r18
-    brcs  10f               /* sh > 255 */
-    subi  r27, 1
-    brcc  11f
-    rjmp  .Lshzero          /* sh = 0 */
-11: cpi   r27, 31
-    brlo  12f
-10: ldi   r27, 30           /* sh > 31: 31 */
-12: mov   r26, r27          /* L = 7 - (k & 7) */
-    com   r26
-    andi  r26, 7
-    ldd   r30, Y+ST_CAM+P_GUARD /* lim = 16 guard */
-    ldd   r31, Y+ST_CAM+P_GUARD+1
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
-    lsl   r30
-    rol   r31
+    KSETUP r20, ST_CAM+P_FN, ST_CAM+P_FSH, ST_CAM+P_GUARD, .Lshzero
     movw  r18, r14          /* qx (r15:r14) */
     COORD r20, .Lclip
     mov   r14, r23
