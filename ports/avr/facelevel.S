@@ -28,6 +28,7 @@
 #endif
 
 #define ZERO r15
+#include "mac16.h"
 
 /* the sum r21:r18 (+)= n component (read here into r17:r16) * light
  * component (read through X into r23:r22), both signed 16 (MULS and
@@ -37,30 +38,7 @@
     RD(r17)
     ld    r22, X+
     ld    r23, X+
-    mul   r16, r22          /* u x u, at byte 0 */
-.if \first
-    movw  r18, r0
-    muls  r17, r23          /* s x s, at byte 2 */
-    movw  r20, r0
-.else
-    add   r18, r0
-    adc   r19, r1
-    adc   r20, ZERO
-    adc   r21, ZERO
-    muls  r17, r23          /* s x s, at byte 2 */
-    add   r20, r0
-    adc   r21, r1
-.endif
-    mulsu r17, r22          /* s x u, at byte 1; C = its sign */
-    sbc   r21, ZERO         /* the sign extension: -2^24 */
-    add   r19, r0
-    adc   r20, r1
-    adc   r21, ZERO
-    mulsu r23, r16          /* s x u, at byte 1 */
-    sbc   r21, ZERO
-    add   r19, r0
-    adc   r20, r1
-    adc   r21, ZERO
+    MAC16 \first, r18, r19, r20, r21, r16, r17, r22, r23, ZERO
 .endm
 
     .section .text.r8k_level,"ax",@progbits

@@ -1,6 +1,7 @@
 /* facemac.h - the face kernels' shared macros (facecull.S, facelevel.S,
  * fwalk.S): the including file defines RD(r) (a flash or RAM read
  * through Z+) and ZERO (a register holding 0). */
+#include "mac16.h"
 
 /* d = eye component - 16 v component (X advances to the next r8_s32);
  * out of range: to `out` */
@@ -32,24 +33,7 @@
 .macro ACC dl, dh
     RD(r16)
     RD(r17)
-    mul   r16, \dl          /* u x u, at byte 0 */
-    add   r24, r0
-    adc   r25, r1
-    adc   r26, ZERO
-    adc   r27, ZERO
-    muls  r17, \dh          /* s x s, at byte 2 */
-    add   r26, r0
-    adc   r27, r1
-    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
-    sbc   r27, ZERO         /* the sign extension: -2^24 */
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu \dh, r16          /* s x u, at byte 1 */
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
+    MAC16 0, r24, r25, r26, r27, r16, r17, \dl, \dh, ZERO
 .endm
 
 /* the sum r27:r24 = n . d, both signed 16: n read through RD from Z,
@@ -59,20 +43,7 @@
     clr   ZERO
     RD(r16)                 /* the first product sets the sum */
     RD(r17)
-    mul   r16, r18
-    movw  r24, r0
-    muls  r17, r19
-    movw  r26, r0
-    mulsu r17, r18
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r19, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
+    MAC16 1, r24, r25, r26, r27, r16, r17, r18, r19, ZERO
     ACC   r20, r21
     ACC   r22, r23
 .endm

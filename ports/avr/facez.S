@@ -27,6 +27,7 @@
 #endif
 
 #define ZERO r15
+#include "mac16.h"
 
 /* sum (hi:l1:l0) += the next vertex component (r1 = 0) */
 .macro ADDV l0, l1, hi
@@ -58,24 +59,7 @@
 .macro ACC dl, dh
     ld    r16, Z+
     ld    r17, Z+
-    mul   r16, \dl          /* u x u, at byte 0 */
-    add   r24, r0
-    adc   r25, r1
-    adc   r26, ZERO
-    adc   r27, ZERO
-    muls  r17, \dh          /* s x s, at byte 2 */
-    add   r26, r0
-    adc   r27, r1
-    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu \dh, r16          /* s x u, at byte 1 */
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
+    MAC16 0, r24, r25, r26, r27, r16, r17, \dl, \dh, ZERO
 .endm
 
     .section .text.r8k_zsum,"ax",@progbits
@@ -178,20 +162,7 @@ prod:
     clr   ZERO
     ld    r16, Z+           /* the first product sets the sum */
     ld    r17, Z+
-    mul   r16, r18
-    movw  r24, r0
-    muls  r17, r19
-    movw  r26, r0
-    mulsu r17, r18
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
-    mulsu r19, r16
-    sbc   r27, ZERO
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, ZERO
+    MAC16 1, r24, r25, r26, r27, r16, r17, r18, r19, ZERO
     ACC   r20, r21
     ACC   r22, r23
     subi  r25, 0xFE         /* + 512 */

@@ -44,6 +44,8 @@
 #define SPL_IO  0x3D
 #define SPH_IO  0x3E
 
+#include "mac16.h"
+
 /* Z = w->faces + 6 w->f + 2 (the vertex indices), r17 = n; Y = w;
  * r16 = 6; r19:r18 and r1 changed */
 .macro FACE
@@ -91,24 +93,7 @@
 .macro ACC dl, dh
     ld    r16, Z+
     ld    r17, Z+
-    mul   r16, \dl          /* u x u, at byte 0 */
-    add   r24, r0
-    adc   r25, r1
-    adc   r26, r18
-    adc   r27, r18
-    muls  r17, \dh          /* s x s, at byte 2 */
-    add   r26, r0
-    adc   r27, r1
-    mulsu r17, \dl          /* s x u, at byte 1; C = its sign */
-    sbc   r27, r18
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, r18
-    mulsu \dh, r16          /* s x u, at byte 1 */
-    sbc   r27, r18
-    add   r25, r0
-    adc   r26, r1
-    adc   r27, r18
+    MAC16 0, r24, r25, r26, r27, r16, r17, \dl, \dh, r18
 .endm
 
     .section .text.r8k_fwpaint,"ax",@progbits
