@@ -54,6 +54,16 @@ typedef struct r8_zrows {
  * when r8_scan_row_attrs said the polygon is over.  y is left in t->y. */
 int r8k_zrows(r8_zrows *t);
 
+/* r8_zfill's common case in one call: face a's rows from a->s.c.y (at
+ * or below fb->y0) up to lim = min(c.ybot, ylimit, fb->y0 + fb->rows)
+ * through r8k_zrows, its r8_zrows built from a, fb and depth (the band's
+ * 16-bit depth rows, fb->width a row; the page rows fb->buf; the level's
+ * dither patterns, min(a->level, 16)).  Returns r8k_zrows's value; on 1
+ * and 2 a->s.c.y is its y (2: that row is the caller's, then a call
+ * again from the next, as r8_zfill does). */
+struct r8_act;
+int r8k_zband(struct r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit);
+
 /* The attribute interpolators of the left (right = 0) or right edge
  * set up again for row y, as r8_scan_row_attrs does when the edge has
  * moved on (scanattr.c; the AVR kernel's general case). */

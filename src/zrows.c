@@ -93,6 +93,39 @@ int r8k_zrows(r8_zrows *t)
 }
 #endif
 
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
+{
+    r8_scan *s = &a->s;
+    r8_scanx *c = &s->c;
+    r8_zrows t;
+    r8_u16 w = (r8_u16)fb->width, by = (r8_u16)(c->y - fb->y0);
+    r8_u8 lv = a->level > 16 ? 16 : a->level;
+    int rc;
+    t.lim = c->ybot < ylimit ? c->ybot : ylimit;
+    if (t.lim > fb->y0 + fb->rows)
+        t.lim = (r8_s16)(fb->y0 + fb->rows);
+    t.lx = &c->l.x;
+    t.rx = &c->r.x;
+    t.ld = &s->ld;
+    t.rd = &s->rd;
+    t.w = w;
+    t.pat = &r8_fb_dither_tab[(unsigned)lv << 2];
+    t.s = s;
+    t.lyend = &c->l.yend;
+    t.ryend = &c->r.yend;
+    t.y = c->y;
+    t.z = depth + by * w;
+    t.page = fb->buf + (by >> 3) * w;
+    t.m = R8_FB_BIT(by);
+    t.k = (r8_u8)(c->y & 3);
+    rc = r8k_zrows(&t);
+    if (rc)
+        c->y = t.y;
+    return rc;
+}
+#endif
+
 #ifdef R8_ASM_ZFILL
 /* ports/avr/zfill.S reads these offsets (also scankern.c's) */
 R8_CASSERT(zrows_vp_at_0, offsetof(r8_scanx, vp) == 0);
@@ -107,6 +140,16 @@ R8_CASSERT(zrows_l_x_at_25, offsetof(r8_scanx, l) + offsetof(r8_edge, x) == 25);
 R8_CASSERT(zrows_r_x_at_38, offsetof(r8_scanx, r) + offsetof(r8_edge, x) == 38);
 R8_CASSERT(zrows_ld_at_52, offsetof(r8_scan, ld) == 52);
 R8_CASSERT(zrows_rd_at_72, offsetof(r8_scan, rd) == 72);
+R8_CASSERT(zband_s_at_2, offsetof(r8_act, s) == 2);
+R8_CASSERT(zband_level_at_0, offsetof(r8_act, level) == 0);
+R8_CASSERT(zband_y_at_21, offsetof(r8_scanx, y) == 21);
+R8_CASSERT(zband_ybot_at_23, offsetof(r8_scanx, ybot) == 23);
+R8_CASSERT(zband_lyend_at_35, offsetof(r8_scanx, l) + offsetof(r8_edge, yend) == 35);
+R8_CASSERT(zband_ryend_at_48, offsetof(r8_scanx, r) + offsetof(r8_edge, yend) == 48);
+R8_CASSERT(zband_fb_buf_at_0, offsetof(r8_fb, buf) == 0);
+R8_CASSERT(zband_fb_width_at_2, offsetof(r8_fb, width) == 2);
+R8_CASSERT(zband_fb_y0_at_6, offsetof(r8_fb, y0) == 6);
+R8_CASSERT(zband_fb_rows_at_8, offsetof(r8_fb, rows) == 8);
 #endif
 
 #ifndef R8_ASM_ZFILL

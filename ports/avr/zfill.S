@@ -86,10 +86,7 @@
         std     Z+5, \eh
 .endm
 
-        .section .text.r8k_zrows,"ax",@progbits
-        .global r8k_zrows
-        .type   r8k_zrows, @function
-r8k_zrows:
+.macro PUSHALL
         push    r2
         push    r3
         push    r4
@@ -108,7 +105,187 @@ r8k_zrows:
         push    r17
         push    r28
         push    r29
+.endm
+
+        .section .text.r8k_zrows,"ax",@progbits
+        .global r8k_zrows
+        .type   r8k_zrows, @function
+r8k_zrows:
+        PUSHALL
         movw    r28, r24
+        rcall   zbody
+        rjmp    zrestore
+
+/* int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
+ * (src/r8zrows.h): the r8_zrows of the reference (src/zrows.c) built in
+ * a 30-byte frame on the stack, then zbody; a->s.c.y = t.y on 1 and 2.
+ * In: r25:24 a, r23:22 fb, r21:20 depth, r19:18 ylimit.  Offsets
+ * (asserted in src/zrows.c): r8_act {level 0, s 2}; r8_scanx {y 21,
+ * ybot 23, l.x 25, l.yend 35, r.x 38, r.yend 48}; r8_scan {ld 52,
+ * rd 72}; r8_fb {buf 0, width 2, y0 6, rows 8}. */
+        .global r8k_zband
+        .type   r8k_zband, @function
+r8k_zband:
+        PUSHALL
+        in      r28, 0x3D               /* a frame of 30: Y = SP + 1 */
+        in      r29, 0x3E
+        sbiw    r28, 30
+        in      r0, 0x3F
+        cli
+        out     0x3E, r29
+        out     0x3F, r0
+        out     0x3D, r28
+        adiw    r28, 1
+        movw    r30, r24                /* Z = a */
+        ld      r17, Z+                 /* level, min 16: pat */
+        cpi     r17, 17
+        brlo    1f
+        ldi     r17, 16
+1:      ldi     r26, 4
+        mul     r17, r26
+        movw    r26, r0
+        clr     r1
+        subi    r26, lo8(-(r8_fb_dither_tab))
+        sbci    r27, hi8(-(r8_fb_dither_tab))
+        std     Y+16, r26
+        std     Y+17, r27
+        adiw    r30, 1                  /* Z = s */
+        std     Y+18, r30
+        std     Y+19, r31
+        movw    r26, r30                /* lx, rx, ld, rd, lyend, ryend */
+        adiw    r26, 25
+        std     Y+0, r26
+        std     Y+1, r27
+        adiw    r26, 13
+        std     Y+2, r26
+        std     Y+3, r27
+        adiw    r26, 14
+        std     Y+4, r26
+        std     Y+5, r27
+        adiw    r26, 20
+        std     Y+6, r26
+        std     Y+7, r27
+        movw    r26, r30
+        adiw    r26, 35
+        std     Y+20, r26
+        std     Y+21, r27
+        adiw    r26, 13
+        std     Y+22, r26
+        std     Y+23, r27
+        ldd     r16, Z+21               /* y */
+        ldd     r17, Z+22
+        std     Y+24, r16
+        std     Y+25, r17
+        ldd     r14, Z+23               /* lim = min(ybot, ylimit, y0 + rows) */
+        ldd     r15, Z+24
+        cp      r18, r14
+        cpc     r19, r15
+        brge    2f
+        movw    r14, r18
+2:      movw    r30, r22                /* Z = fb */
+        ldd     r12, Z+6                /* y0 */
+        ldd     r13, Z+7
+        ldd     r18, Z+8                /* y0 + rows */
+        ldd     r19, Z+9
+        add     r18, r12
+        adc     r19, r13
+        cp      r18, r14
+        cpc     r19, r15
+        brge    3f
+        movw    r14, r18
+3:      std     Y+26, r14
+        std     Y+27, r15
+        ldd     r10, Z+2                /* w */
+        ldd     r11, Z+3
+        std     Y+12, r10
+        std     Y+13, r11
+        mov     r18, r16                /* k = y & 3 */
+        andi    r18, 3
+        std     Y+15, r18
+        sub     r16, r12                /* by = y - y0 */
+        sbc     r17, r13
+        mul     r16, r10                /* r15:r14 = by * w */
+        movw    r14, r0
+        mul     r16, r11
+        add     r15, r0
+        mul     r17, r10
+        add     r15, r0
+        clr     r1
+        add     r20, r14                /* z = depth + by * w */
+        adc     r21, r15
+        add     r20, r14
+        adc     r21, r15
+        std     Y+8, r20
+        std     Y+9, r21
+        ldi     r18, 1                  /* m = 1 << (by & 7) */
+        sbrc    r16, 1
+        ldi     r18, 4
+        sbrc    r16, 0
+        lsl     r18
+        sbrc    r16, 2
+        swap    r18
+        std     Y+14, r18
+        lsr     r17                     /* page = buf + (by >> 3) * w */
+        ror     r16
+        lsr     r17
+        ror     r16
+        lsr     r17
+        ror     r16
+        mul     r16, r10
+        movw    r14, r0
+        mul     r16, r11
+        add     r15, r0
+        mul     r17, r10
+        add     r15, r0
+        clr     r1
+        ld      r18, Z
+        ldd     r19, Z+1
+        add     r18, r14
+        adc     r19, r15
+        std     Y+10, r18
+        std     Y+11, r19
+        rcall   zbody
+        tst     r24                     /* 1, 2: c.y = t.y */
+        breq    4f
+        ldd     r30, Y+18
+        ldd     r31, Y+19
+        ldd     r18, Y+24
+        ldd     r19, Y+25
+        std     Z+21, r18
+        std     Z+22, r19
+4:      adiw    r28, 29                 /* the frame off */
+        in      r0, 0x3F
+        cli
+        out     0x3E, r29
+        out     0x3F, r0
+        out     0x3D, r28
+        rjmp    zrestore
+        .size   r8k_zband, .-r8k_zband
+
+zrestore:
+        ldi     r25, 0
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        pop     r15
+        pop     r14
+        pop     r13
+        pop     r12
+        pop     r11
+        pop     r10
+        pop     r9
+        pop     r8
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+        pop     r3
+        pop     r2
+        ret
+
+/* the rows: Y = t, the registers saved; r24 the value */
+zbody:
         LOADI   0, LXVL, LXVH, LXEL, LXEH
         LOADI   2, RXVL, RXVH, RXEL, RXEH
         LOADI   4, LDVL, LDVH, LDEL, LDEH
@@ -391,26 +568,6 @@ r8k_zrows:
         STOREI  2, RXVL, RXVH, RXEL, RXEH
         STOREI  4, LDVL, LDVH, LDEL, LDEH
         STOREI  6, RDVL, RDVH, RDEL, RDEH
-.Lret:
-        ldi     r25, 0
-        pop     r29
-        pop     r28
-        pop     r17
-        pop     r16
-        pop     r15
-        pop     r14
-        pop     r13
-        pop     r12
-        pop     r11
-        pop     r10
-        pop     r9
-        pop     r8
-        pop     r7
-        pop     r6
-        pop     r5
-        pop     r4
-        pop     r3
-        pop     r2
         ret
 /* emove: r8_scan_row_attrs(s, y, 0)'s work for one edge (r19: 0 the
  * left, 1 the right; y in t->y): r8k_estart moves it on; when its vi
