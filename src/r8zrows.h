@@ -23,12 +23,14 @@
 typedef struct r8_zrows {
     r8_interp *lx, *rx;   /* 0, 2: the edges' columns */
     r8_interp *ld, *rd;   /* 4, 6: the edges' depths (the four point into */
-                          /* t->s: &s->c.l.x, &s->c.r.x, &s->ld, &s->rd) */
+                          /* t->s: &s->c.l.x, &s->c.r.x, &s->ld, &s->rd; */
+                          /* the AVR kernel finds all from lx) */
     r8_u16 *z;            /* 8: the depth row of row y */
     r8_u8 *page;          /* 10: its page row (SSD1306 layout) */
     r8_u16 w;             /* 12: columns (<= 32767) */
     r8_u8 m;              /* 14: row y's bit in the page */
-    r8_u8 k;              /* 15: row y's dither phase, y & 3 */
+    r8_u8 k;              /* 15: row y's dither phase, y & 3 (the AVR */
+                          /* kernel takes it from y, writes it at the end) */
     const r8_u8 *pat;     /* 16: the level's dither patterns (flash: */
                           /* &r8_fb_dither_tab[4 level]), row k's pat[k] */
     r8_scan *s;           /* 18: the polygon (lx .. rd point into it) */

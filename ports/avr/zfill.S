@@ -19,6 +19,11 @@
  * the drawn and the skipped pixel each with its own copy of the step (no
  * jump back into a shared tail).
  *
+ * Everything of the polygon is found from t->lx (= &s->c.l.x: rx, ld,
+ * rd, l.yend, r.yend 13, 27, 47, 10, 23 bytes on; t's rx, ld, rd,
+ * lyend, ryend are not read), and the dither phase from y (t->k, y & 3,
+ * only written at the end).  r8k_zband (below) builds t itself.
+ *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
  * m 14, k 15, pat 16, s 18, lyend 20, ryend 22, y 24, lim 26, end 28}.
@@ -68,22 +73,19 @@
 1:
 .endm
 
-/* load / store val, err through the pointer at Y+off */
-.macro LOADI off, vl, vh, el, eh
-        ldd     r30, Y+\off
-        ldd     r31, Y+\off+1
-        ld      \vl, Z
-        ldd     \vh, Z+1
-        ldd     \el, Z+4
-        ldd     \eh, Z+5
+/* load / store val, err of the interpolator at Z+off (Z = lx: rx, ld,
+ * rd, lyend, ryend at 13, 27, 47, 10, 23) */
+.macro LDI2 off, vl, vh, el, eh
+        ldd     \vl, Z+\off
+        ldd     \vh, Z+\off+1
+        ldd     \el, Z+\off+4
+        ldd     \eh, Z+\off+5
 .endm
-.macro STOREI off, vl, vh, el, eh
-        ldd     r30, Y+\off
-        ldd     r31, Y+\off+1
-        st      Z, \vl
-        std     Z+1, \vh
-        std     Z+4, \el
-        std     Z+5, \eh
+.macro STI2 off, vl, vh, el, eh
+        std     Z+\off, \vl
+        std     Z+\off+1, \vh
+        std     Z+\off+4, \el
+        std     Z+\off+5, \eh
 .endm
 
 .macro PUSHALL
@@ -152,26 +154,10 @@ r8k_zband:
         adiw    r30, 1                  /* Z = s */
         std     Y+18, r30
         std     Y+19, r31
-        movw    r26, r30                /* lx, rx, ld, rd, lyend, ryend */
-        adiw    r26, 25
+        movw    r26, r30                /* lx (the kernel finds rx, ld, */
+        adiw    r26, 25                 /* rd, the yends from it) */
         std     Y+0, r26
         std     Y+1, r27
-        adiw    r26, 13
-        std     Y+2, r26
-        std     Y+3, r27
-        adiw    r26, 14
-        std     Y+4, r26
-        std     Y+5, r27
-        adiw    r26, 20
-        std     Y+6, r26
-        std     Y+7, r27
-        movw    r26, r30
-        adiw    r26, 35
-        std     Y+20, r26
-        std     Y+21, r27
-        adiw    r26, 13
-        std     Y+22, r26
-        std     Y+23, r27
         ldd     r16, Z+21               /* y */
         ldd     r17, Z+22
         std     Y+24, r16
@@ -199,9 +185,6 @@ r8k_zband:
         ldd     r11, Z+3
         std     Y+12, r10
         std     Y+13, r11
-        mov     r18, r16                /* k = y & 3 */
-        andi    r18, 3
-        std     Y+15, r18
         sub     r16, r12                /* by = y - y0 */
         sbc     r17, r13
         mul     r16, r10                /* r15:r14 = by * w */
@@ -286,10 +269,12 @@ zrestore:
 
 /* the rows: Y = t, the registers saved; r24 the value */
 zbody:
-        LOADI   0, LXVL, LXVH, LXEL, LXEH
-        LOADI   2, RXVL, RXVH, RXEL, RXEH
-        LOADI   4, LDVL, LDVH, LDEL, LDEH
-        LOADI   6, RDVL, RDVH, RDEL, RDEH
+        ldd     r30, Y+0                /* Z = lx */
+        ldd     r31, Y+1
+        LDI2    0, LXVL, LXVH, LXEL, LXEH
+        LDI2    13, RXVL, RXVH, RXEL, RXEH
+        LDI2    27, LDVL, LDVH, LDEL, LDEH
+        LDI2    47, RDVL, RDVH, RDEL, RDEH
         ldd     YL_, Y+24               /* y */
         ldd     YH_, Y+25
 
@@ -301,10 +286,10 @@ zbody:
         brlt    1f
         ldi     r24, 1
         rjmp    .Lout
-1:      ldd     r30, Y+20               /* the left edge ends at y: on */
-        ldd     r31, Y+21
-        ld      r20, Z
-        ldd     r21, Z+1
+1:      ldd     r30, Y+0                /* Z = lx */
+        ldd     r31, Y+1
+        ldd     r20, Z+10               /* the left edge ends at y: on */
+        ldd     r21, Z+11
         cp      YL_, r20
         cpc     YH_, r21
         brlt    2f
@@ -312,14 +297,14 @@ zbody:
         std     Y+25, YH_
         ldi     r19, 0
         rcall   emove
-        LOADI   0, LXVL, LXVH, LXEL, LXEH
-        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        LDI2    0, LXVL, LXVH, LXEL, LXEH
+        LDI2    27, LDVL, LDVH, LDEL, LDEH
         ldd     YL_, Y+24
         ldd     YH_, Y+25
-2:      ldd     r30, Y+22               /* the right one */
-        ldd     r31, Y+23
-        ld      r26, Z
-        ldd     r27, Z+1
+2:      ldd     r26, Z+23               /* the right one */
+        ldd     r27, Z+24
         cp      YL_, r26
         cpc     YH_, r27
         brlt    3f
@@ -327,20 +312,18 @@ zbody:
         std     Y+25, YH_
         ldi     r19, 1
         rcall   emove
-        LOADI   2, RXVL, RXVH, RXEL, RXEH
-        LOADI   6, RDVL, RDVH, RDEL, RDEH
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        LDI2    13, RXVL, RXVH, RXEL, RXEH
+        LDI2    47, RDVL, RDVH, RDEL, RDEH
         ldd     YL_, Y+24
         ldd     YH_, Y+25
 3:      ldd     r18, Y+26
         ldd     r19, Y+27
-        ldd     r30, Y+20
-        ldd     r31, Y+21
-        ld      r20, Z
-        ldd     r21, Z+1
-        ldd     r30, Y+22
-        ldd     r31, Y+23
-        ld      r26, Z
-        ldd     r27, Z+1
+        ldd     r20, Z+10
+        ldd     r21, Z+11
+        ldd     r26, Z+23
+        ldd     r27, Z+24
 .Lend:                                  /* end = min(lim, yends), > y */
         cp      r20, r18
         cpc     r21, r19
@@ -388,10 +371,11 @@ zbody:
         push    r6
         push    r7
         mov     r4, r20                 /* r4: columns */
-        ldd     r0, Y+15                /* r5: pat[k] (flash) */
+        mov     r20, YL_                /* r5: pat[y & 3] (flash) */
+        andi    r20, 3
         ldd     r30, Y+16
         ldd     r31, Y+17
-        add     r30, r0
+        add     r30, r20
         adc     r31, r1
         lpm     r5, Z
         mov     r20, LXVL               /* rotated left by xl & 7: */
@@ -545,10 +529,6 @@ zbody:
         std     Y+10, r30
         std     Y+11, r31
 14:     std     Y+14, r20
-        ldd     r20, Y+15               /* k = (k + 1) & 3 */
-        inc     r20
-        andi    r20, 3
-        std     Y+15, r20
         subi    YL_, 0xFF               /* y++; on below end */
         sbci    YH_, 0xFF
         ldd     r18, Y+28
@@ -564,10 +544,15 @@ zbody:
 .Lout:
         std     Y+24, YL_
         std     Y+25, YH_
-        STOREI  0, LXVL, LXVH, LXEL, LXEH
-        STOREI  2, RXVL, RXVH, RXEL, RXEH
-        STOREI  4, LDVL, LDVH, LDEL, LDEH
-        STOREI  6, RDVL, RDVH, RDEL, RDEH
+        mov     r20, YL_                /* k = y & 3 */
+        andi    r20, 3
+        std     Y+15, r20
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        STI2    0, LXVL, LXVH, LXEL, LXEH
+        STI2    13, RXVL, RXVH, RXEL, RXEH
+        STI2    27, LDVL, LDVH, LDEL, LDEH
+        STI2    47, RDVL, RDVH, RDEL, RDEH
         ret
 /* emove: r8_scan_row_attrs(s, y, 0)'s work for one edge (r19: 0 the
  * left, 1 the right; y in t->y): r8k_estart moves it on; when its vi
@@ -579,15 +564,13 @@ zbody:
  * Keeps r2..r17, Y; the interpolators in memory are the truth after. */
 emove:
         push    r19
-        ldd     r22, Y+20               /* e = lyend - 10 (or ryend) */
-        ldd     r23, Y+21
+        ldd     r22, Y+0                /* e = lx - 0 (left), rx - 13 */
+        ldd     r23, Y+1
         sbrs    r19, 0
         rjmp    1f
-        ldd     r22, Y+22
-        ldd     r23, Y+23
-1:      subi    r22, 10
-        sbci    r23, 0
-        movw    r30, r22
+        subi    r22, 0xF3               /* + 13 */
+        sbci    r23, 0xFF
+1:      movw    r30, r22
         ldd     r18, Z+12               /* from = e->vi */
         push    r18
         push    r22
@@ -637,13 +620,12 @@ emove:
         ld      r0, Z
         ldd     r21, Z+1
         mov     r20, r0
-        ldd     r24, Y+4                /* it = ld (or rd) */
-        ldd     r25, Y+5
-        sbrs    r19, 0
-        rjmp    5f
-        ldd     r24, Y+6
-        ldd     r25, Y+7
-5:      ldd     r18, Y+24               /* y */
+        ldd     r24, Y+0                /* it = ld = lx + 27 (rd + 47) */
+        ldd     r25, Y+1
+        adiw    r24, 27
+        sbrc    r19, 0
+        adiw    r24, 20
+        ldd     r18, Y+24               /* y */
         ldd     r19, Y+25
         push    r16
         ldi     r16, 2
