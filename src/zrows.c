@@ -140,6 +140,8 @@ R8_CASSERT(zrows_l_x_at_25, offsetof(r8_scanx, l) + offsetof(r8_edge, x) == 25);
 R8_CASSERT(zrows_r_x_at_38, offsetof(r8_scanx, r) + offsetof(r8_edge, x) == 38);
 R8_CASSERT(zrows_ld_at_52, offsetof(r8_scan, ld) == 52);
 R8_CASSERT(zrows_rd_at_72, offsetof(r8_scan, rd) == 72);
+R8_CASSERT(sattrs_l_vi_at_37, offsetof(r8_scanx, l) + offsetof(r8_edge, vi) == 37);
+R8_CASSERT(sattrs_r_vi_at_50, offsetof(r8_scanx, r) + offsetof(r8_edge, vi) == 50);
 R8_CASSERT(zband_s_at_2, offsetof(r8_act, s) == 2);
 R8_CASSERT(zband_level_at_0, offsetof(r8_act, level) == 0);
 R8_CASSERT(zband_y_at_21, offsetof(r8_scanx, y) == 21);
@@ -205,6 +207,25 @@ void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16
 #endif
 
 #if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+/* r8_scan_attrs (r8raster.h) where R8_ZROWS (else src/scanattr.c's):
+ * each edge's attributes at row c.y, depth alone from r8_attr_first
+ * (its upper vertex: the left edge's vi + 1, the right's vi - 1, round
+ * the polygon), else (shade too, or r8_attr_first's 0) through
+ * r8_scan_attr_edge; the AVR kernel in ports/avr/zfill.S */
+void r8_scan_attrs(r8_scan *s)
+{
+    r8_scanx *c = &s->c;
+    r8_u8 from;
+    if (!s->attrs)
+        return;
+    from = (r8_u8)(c->l.vi + 1 == c->n ? 0 : c->l.vi + 1);
+    if (s->attrs != R8_ATTR_D || !r8_attr_first(&s->ld, c->vp[from], c->vp[c->l.vi], c->y, 2))
+        r8_scan_attr_edge(s, 0, c->y);
+    from = (r8_u8)(c->r.vi == 0 ? c->n - 1 : c->r.vi - 1);
+    if (s->attrs != R8_ATTR_D || !r8_attr_first(&s->rd, c->vp[from], c->vp[c->r.vi], c->y, 2))
+        r8_scan_attr_edge(s, 1, c->y);
+}
+
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k)
 {
     r8_s16 ay = a[1], by = b[1];

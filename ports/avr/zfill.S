@@ -891,3 +891,88 @@ r8_attr_first:
         movw    r24, r30                /* r23:22 = a[k] */
         rjmp    isub
         .size   r8_attr_first, .-r8_attr_first
+
+/* void r8_scan_attrs(r8_scan *s)                       (include/r8raster.h)
+ * The C reference is src/zrows.c's: nothing without attributes; depth
+ * alone: each edge's from r8_attr_first(&s->ld (rd), vp[from], vp[vi],
+ * c.y, 2), from = the left edge's vi + 1 (0 past n - 1), the right's
+ * vi - 1 (n - 1 before 0); else, or on its 0, r8_scan_attr_edge(s, side,
+ * c.y).  Offsets (asserted in src/zrows.c): r8_scan {vp 0, n 18, y 21,
+ * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  r17 = the side, Y = s
+ * (r8_attr_first, r8_scan_attr_edge keep both). */
+        .section .text.r8_scan_attrs,"ax",@progbits
+        .global r8_scan_attrs
+        .type   r8_scan_attrs, @function
+r8_scan_attrs:
+        movw    r30, r24
+        ldd     r0, Z+51                /* attrs */
+        tst     r0
+        brne    1f
+        ret
+1:      push    r16
+        push    r17
+        push    r28
+        push    r29
+        movw    r28, r24
+        ldi     r17, 0
+.Lsaside:
+        ldd     r0, Y+51                /* depth alone? */
+        dec     r0
+        brne    .Lsagen
+        ldd     r21, Y+18               /* n */
+        ldd     r20, Y+37               /* the left: vi, from = vi + 1 */
+        mov     r18, r20
+        inc     r18
+        cp      r18, r21
+        brne    2f
+        clr     r18
+2:      ldi     r24, 52                 /* it = s + 52 */
+        sbrs    r17, 0
+        rjmp    3f
+        ldd     r20, Y+50               /* the right: from = vi - 1 */
+        mov     r18, r20
+        tst     r18
+        brne    4f
+        mov     r18, r21
+4:      dec     r18
+        ldi     r24, 72                 /* it = s + 72 */
+3:      movw    r30, r28                /* a = vp[from] */
+        add     r30, r18
+        adc     r31, r1
+        add     r30, r18
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        movw    r30, r28                /* b = vp[vi] */
+        add     r30, r20
+        adc     r31, r1
+        add     r30, r20
+        adc     r31, r1
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldi     r25, 0
+        add     r24, r28
+        adc     r25, r29
+        ldd     r18, Y+21               /* y */
+        ldd     r19, Y+22
+        ldi     r16, 2
+        call    r8_attr_first
+        or      r24, r25
+        brne    .Lsanext
+.Lsagen:
+        movw    r24, r28                /* r8_scan_attr_edge(s, side, y) */
+        mov     r22, r17
+        ldi     r23, 0
+        ldd     r20, Y+21
+        ldd     r21, Y+22
+        call    r8_scan_attr_edge
+.Lsanext:
+        inc     r17
+        cpi     r17, 2
+        brne    .Lsaside
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        ret
+        .size   r8_scan_attrs, .-r8_scan_attrs

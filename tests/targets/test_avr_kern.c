@@ -993,7 +993,9 @@ static void test_depth_random(void)
 #define r8_interp_init_sub r8_interp_init_sub_ref
 #define r8_attr_first r8_attr_first_ref
 #define r8k_zband r8k_zband_ref
+#define r8_scan_attrs r8_scan_attrs_ref
 #include "zrows.c"
+#undef r8_scan_attrs
 #undef r8k_zband
 #undef r8k_zrows
 #undef r8_interp_init_sub
@@ -1251,6 +1253,57 @@ static void test_zband_random(void)
         unity_fail_int(__LINE__, "r8k_zband: too few stops, cuts or drawn bands", (long)stops, (long)drawn);
 }
 
+/* ---- r8_scan_attrs (zfill.S) against its reference (src/zrows.c,
+ * renamed r8_scan_attrs_ref): random triangles and quads begun by
+ * r8_scanx_begin at a random row, attributes none, depth, depth and
+ * shade or shade, the interpolators random before; edges tall (past
+ * 256 subpixels) and depth steps wide (past 4095) now and then, so that
+ * r8_attr_first says 0 and r8_scan_attr_edge sets them up.  The whole
+ * scans must end equal. ---- */
+static r8_scan sa_ref, sa_asm;
+
+static void test_scan_attrs_random(void)
+{
+    unsigned long i, cases = 0, general = 0;
+    static const r8_u8 attrs[4] = { 0, R8_ATTR_D, R8_ATTR_D | R8_ATTR_S, R8_ATTR_S };
+    for (i = 0; i < 3000; i++) {
+        unsigned j, nv = 3u + rndn(2), tall = rndn(4) == 0, wide = rndn(4) == 0;
+        r8_s16 ys = (r8_s16)rndn(64);
+        r8_u8 *p = (r8_u8 *)&sa_ref;
+        for (j = 0; j < sizeof sa_ref; j++)
+            p[j] = (r8_u8)rnd();
+        for (j = 0; j < nv; j++) {
+            r8_svert *v = &zverts[j];
+            v->x = rnds(-200, 2200);
+            v->y = tall ? rnds(0, 64 * 16) : rnds((r8_s16)(ys * 16 - 100), (r8_s16)(ys * 16 + 200));
+            v->d = wide ? rnds(0, 32767) : rnds(16000, 18000);
+            v->s = rnds(0, 4096);
+            sa_ref.c.vp[j] = &v->x;
+        }
+        if (!r8_scanx_begin(&sa_ref.c, (r8_u8)nv, ys))
+            continue;
+        sa_ref.attrs = attrs[rndn(4)];
+        memcpy(&sa_asm, &sa_ref, sizeof sa_ref);
+        r8_scan_attrs_ref(&sa_ref);
+        r8_scan_attrs(&sa_asm);
+        cases++;
+        general += tall || wide;
+        if (memcmp(&sa_ref, &sa_asm, sizeof sa_ref) != 0) {
+            print_case("r8_scan_attrs", i);
+            unity_fail_int(__LINE__, "r8_scan_attrs differs from the reference", (long)sa_asm.ld.val,
+                           (long)sa_ref.ld.val);
+            return;
+        }
+    }
+    unity_print("r8_scan_attrs: ");
+    unity_print_long((long)cases);
+    unity_print(" scans, tall or wide ");
+    unity_print_long((long)general);
+    unity_print("\n");
+    if (cases < 1500 || general < 300)
+        unity_fail_int(__LINE__, "r8_scan_attrs: too few cases", (long)cases, (long)general);
+}
+
 /* ---- r8_interp_init_sub (zfill.S) against its reference (src/zrows.c):
  * every s0 (0..15) and the limits of n (1, 2, 255, 256), dv (0, +-1,
  * +-4095) and base (-32768, 32767: val saturates), then random inputs
@@ -1352,6 +1405,7 @@ int main(void)
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);
     RUN_TEST(test_zband_random);
+    RUN_TEST(test_scan_attrs_random);
     RUN_TEST(test_init_sub_random);
     RUN_TEST(test_attr_first_random);
     return UNITY_END();
