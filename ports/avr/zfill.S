@@ -366,6 +366,10 @@ zbody:
         brlt    5f
         movw    r20, RXVL
 5:      sub     r20, LXVL               /* columns (1..255) */
+        cpi     r20, 1                  /* one: its depth is ld's, no */
+        brne    6f                      /* step, no division */
+        rjmp    .Lone
+6:
         push    r4
         push    r5
         push    r6
@@ -538,6 +542,48 @@ zbody:
         brge    15f
         rjmp    .Lrow
 15:     rjmp    .Lcheck
+.Lone:                                  /* one column, depth ld */
+        ldd     r30, Y+8                /* Z = z + xl */
+        ldd     r31, Y+9
+        add     r30, LXVL
+        adc     r31, LXVH
+        add     r30, LXVL
+        adc     r31, LXVH
+        ld      r0, Z
+        cp      LDVL, r0
+        ldd     r0, Z+1
+        cpc     LDVH, r0
+        brsh    3f                      /* farther: not drawn */
+        rjmp    .Lstep
+3:
+        st      Z, LDVL
+        std     Z+1, LDVH
+        mov     r20, YL_                /* pat[y & 3] (flash) */
+        andi    r20, 3
+        ldd     r30, Y+16
+        ldd     r31, Y+17
+        add     r30, r20
+        adc     r31, r1
+        lpm     r21, Z
+        mov     r20, LXVL               /* its bit 7 - (xl & 7) to bit 7 */
+        sbrc    r20, 2
+        swap    r21
+        andi    r20, 3
+        breq    2f
+1:      lsl     r21
+        dec     r20
+        brne    1b
+2:      ldd     r26, Y+10               /* X = page + xl */
+        ldd     r27, Y+11
+        add     r26, LXVL
+        adc     r27, LXVH
+        ldd     r20, Y+14               /* m: set, then cleared where */
+        ld      r0, X                   /* the pattern's bit is 0 */
+        or      r0, r20
+        sbrs    r21, 7
+        eor     r0, r20
+        st      X, r0
+        rjmp    .Lstep
 
 .Lstop:
         ldi     r24, 2                  /* row y: the caller's */

@@ -1043,7 +1043,10 @@ static void zrows_bind(r8_zrows *t, r8_scan *s)
 
 static r8_svert zverts[4];
 static const r8_u16 zidx[4] = { 0, 1, 2, 3 };
-static r8_scan zscan_ref, zscan_asm;
+/* (the scans inside the acts of test_zband_random: RAM is short) */
+static r8_act zact_ref, zact_asm;
+#define zscan_ref (zact_ref.s)
+#define zscan_asm (zact_asm.s)
 
 static void test_zrows_random(void)
 {
@@ -1154,8 +1157,6 @@ static void test_zrows_random(void)
  * fb->y0, the pattern from the level, the limit) and writes c.y; the
  * rows it leaves (its 2) are stepped past as r8_zfill's C does.  The
  * return values, all the memory and both acts must end equal. ---- */
-static r8_act zact_ref, zact_asm;
-
 static void test_zband_random(void)
 {
     unsigned long i, stops = 0, drawn = 0, calls = 0, cut = 0;
@@ -1260,7 +1261,8 @@ static void test_zband_random(void)
  * 256 subpixels) and depth steps wide (past 4095) now and then, so that
  * r8_attr_first says 0 and r8_scan_attr_edge sets them up.  The whole
  * scans must end equal. ---- */
-static r8_scan sa_ref, sa_asm;
+#define sa_ref (zact_ref.s)              /* (RAM is short) */
+#define sa_asm (zact_asm.s)
 
 static void test_scan_attrs_random(void)
 {
