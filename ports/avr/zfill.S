@@ -406,8 +406,22 @@ zbody:
         adc     r31, r25
         lpm     r20, Z+
         lpm     r21, Z
+        tst     r19                     /* un < 256: two products */
+        brne    20f
+        mul     r18, r20                /* q' = (un * rcp) >> 16 < 256 */
+        mov     r26, r1
+        mul     r18, r21
+        add     r26, r0
+        adc     r1, r25
+        mov     r30, r1
+        ldi     r31, 0
+        mul     r30, r24                /* rr = un - q' * n */
+        sub     r18, r0
+        sbc     r19, r1
+        clr     r1
+        rjmp    21f
         /* q' = (un * rcp) >> 16 in r31:r30 */
-        mul     r19, r21
+20:     mul     r19, r21
         movw    r30, r0
         mul     r18, r20
         mov     r26, r1
@@ -427,7 +441,7 @@ zbody:
         clr     r1
         sub     r18, r20
         sbc     r19, r21
-        cp      r18, r24
+21:     cp      r18, r24
         cpc     r19, r25
         brlo    9f
         sub     r18, r24
@@ -474,14 +488,13 @@ zbody:
         inc     r5
         or      r0, r7
 11:     st      X+, r0
-        add     r18, r20                /* the DDA (twice: no jump); the */
-        adc     r19, r21                /* error kept as e + 256 - n: */
-        add     r24, r25                /* carry when e + r >= n */
-        brcc    13f
-        add     r24, r6
-        subi    r18, 0xFF
-        sbci    r19, 0xFF
-13:     dec     r1
+        add     r24, r25                /* the DDA (twice: no jump); the */
+        brcc    13f                     /* error kept as e + 256 - n: */
+        add     r24, r6                 /* carry when e + r >= n, then */
+        sec                             /* dv += q + 1 */
+13:     adc     r18, r20
+        adc     r19, r21
+        dec     r1
         brne    .Lpx
         rjmp    .Lpxend
 .Lskip:
@@ -490,14 +503,13 @@ zbody:
         inc     r5
 16:     adiw    r26, 1
         adiw    r30, 2
-        add     r18, r20
-        adc     r19, r21
         add     r24, r25
         brcc    18f
         add     r24, r6
-        subi    r18, 0xFF
-        sbci    r19, 0xFF
-18:     dec     r1
+        sec
+18:     adc     r18, r20
+        adc     r19, r21
+        dec     r1
         brne    .Lpx
 .Lpxend:
         pop     r7
