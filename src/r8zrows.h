@@ -39,6 +39,7 @@ typedef struct r8_zrows {
     r8_s16 y;             /* 24: the current row */
     r8_s16 lim;           /* 26: the first row not done (<= s->c.ybot) */
     r8_s16 end;           /* 28: (the kernel's) */
+    r8_u8 fast;           /* 30: (the kernel's) */
 } r8_zrows;
 
 /* r8_zfill's rows from y up to lim (judd's test decided or off): on

@@ -136,6 +136,7 @@ R8_CASSERT(zrows_yend_at_10, offsetof(r8_edge, yend) == 10);
 R8_CASSERT(zrows_vi_at_12, offsetof(r8_edge, vi) == 12);
 R8_CASSERT(zrows_t_y_at_24, offsetof(r8_zrows, y) == 24);
 R8_CASSERT(zrows_t_end_at_28, offsetof(r8_zrows, end) == 28);
+R8_CASSERT(zrows_t_fast_at_30, offsetof(r8_zrows, fast) == 30);
 R8_CASSERT(zrows_l_x_at_25, offsetof(r8_scanx, l) + offsetof(r8_edge, x) == 25);
 R8_CASSERT(zrows_r_x_at_38, offsetof(r8_scanx, r) + offsetof(r8_edge, x) == 38);
 R8_CASSERT(zrows_ld_at_52, offsetof(r8_scan, ld) == 52);

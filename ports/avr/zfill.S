@@ -73,6 +73,42 @@
 1:
 .endm
 
+/* the same when its den < 256 (err, r < den: their high bytes 0):
+ * 8-bit error; e + r past 255 is past den too */
+.macro STEPB off, vl, vh, el
+        ldd     r18, Z+\off+6
+        ldd     r19, Z+\off+8
+        add     \el, r18
+        brcs    1f
+        cp      \el, r19
+        brlo    2f
+1:      sub     \el, r19
+        ldd     r18, Z+\off+2
+        ldd     r19, Z+\off+3
+        sec
+        adc     \vl, r18
+        adc     \vh, r19
+        rjmp    3f
+2:      ldd     r18, Z+\off+2
+        ldd     r19, Z+\off+3
+        add     \vl, r18
+        adc     \vh, r19
+3:
+.endm
+
+/* t->fast (Y+30) = 0 when the four dens are < 256, else not (Z = lx:
+ * their high bytes at 9, 22, 36, 56) */
+.macro FASTF
+        ldd     r18, Z+9
+        ldd     r19, Z+22
+        or      r18, r19
+        ldd     r19, Z+36
+        or      r18, r19
+        ldd     r19, Z+56
+        or      r18, r19
+        std     Y+30, r18
+.endm
+
 /* load / store val, err of the interpolator at Z+off (Z = lx: rx, ld,
  * rd, lyend, ryend at 13, 27, 47, 10, 23) */
 .macro LDI2 off, vl, vh, el, eh
@@ -120,7 +156,7 @@ r8k_zrows:
 
 /* int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
  * (src/r8zrows.h): the r8_zrows of the reference (src/zrows.c) built in
- * a 30-byte frame on the stack, then zbody; a->s.c.y = t.y on 1 and 2.
+ * a 31-byte frame on the stack, then zbody; a->s.c.y = t.y on 1 and 2.
  * In: r25:24 a, r23:22 fb, r21:20 depth, r19:18 ylimit.  Offsets
  * (asserted in src/zrows.c): r8_act {level 0, s 2}; r8_scanx {y 21,
  * ybot 23, l.x 25, l.yend 35, r.x 38, r.yend 48}; r8_scan {ld 52,
@@ -129,9 +165,9 @@ r8k_zrows:
         .type   r8k_zband, @function
 r8k_zband:
         PUSHALL
-        in      r28, 0x3D               /* a frame of 30: Y = SP + 1 */
+        in      r28, 0x3D               /* a frame of 31: Y = SP + 1 */
         in      r29, 0x3E
-        sbiw    r28, 30
+        sbiw    r28, 31
         in      r0, 0x3F
         cli
         out     0x3E, r29
@@ -236,7 +272,7 @@ r8k_zband:
         ldd     r19, Y+25
         std     Z+21, r18
         std     Z+22, r19
-4:      adiw    r28, 29                 /* the frame off */
+4:      adiw    r28, 30                 /* the frame off */
         in      r0, 0x3F
         cli
         out     0x3E, r29
@@ -275,6 +311,7 @@ zbody:
         LDI2    13, RXVL, RXVH, RXEL, RXEH
         LDI2    27, LDVL, LDVH, LDEL, LDEH
         LDI2    47, RDVL, RDVH, RDEL, RDEH
+        FASTF
         ldd     YL_, Y+24               /* y */
         ldd     YH_, Y+25
 
@@ -301,6 +338,7 @@ zbody:
         ldd     r31, Y+1
         LDI2    0, LXVL, LXVH, LXEL, LXEH
         LDI2    27, LDVL, LDVH, LDEL, LDEH
+        FASTF
         ldd     YL_, Y+24
         ldd     YH_, Y+25
 2:      ldd     r26, Z+23               /* the right one */
@@ -316,6 +354,7 @@ zbody:
         ldd     r31, Y+1
         LDI2    13, RXVL, RXVH, RXEL, RXEH
         LDI2    47, RDVL, RDVH, RDEL, RDEH
+        FASTF
         ldd     YL_, Y+24
         ldd     YH_, Y+25
 3:      ldd     r18, Y+26
@@ -520,10 +559,15 @@ zbody:
 .Lstep:
         ldd     r30, Y+0                /* Z = lx: rx, ld, rd at 13, 27, 47 */
         ldd     r31, Y+1
-        STEPZ   0, LXVL, LXVH, LXEL, LXEH
-        STEPZ   13, RXVL, RXVH, RXEL, RXEH
-        STEPZ   27, LDVL, LDVH, LDEL, LDEH
-        STEPZ   47, RDVL, RDVH, RDEL, RDEH
+        ldd     r18, Y+30               /* all dens < 256: 8-bit errors */
+        tst     r18
+        breq    4f
+        rjmp    .Lslow
+4:      STEPB   0, LXVL, LXVH, LXEL
+        STEPB   13, RXVL, RXVH, RXEL
+        STEPB   27, LDVL, LDVH, LDEL
+        STEPB   47, RDVL, RDVH, RDEL
+.Lbook:
         ldd     r18, Y+12               /* w */
         ldd     r19, Y+13
         ldd     r30, Y+8                /* z += w */
@@ -596,6 +640,13 @@ zbody:
         eor     r0, r20
         st      X, r0
         rjmp    .Lstep
+
+.Lslow:                                 /* a den of 256 or more */
+        STEPZ   0, LXVL, LXVH, LXEL, LXEH
+        STEPZ   13, RXVL, RXVH, RXEL, RXEH
+        STEPZ   27, LDVL, LDVH, LDEL, LDEH
+        STEPZ   47, RDVL, RDVH, RDEL, RDEH
+        rjmp    .Lbook
 
 .Lstop:
         ldi     r24, 2                  /* row y: the caller's */
