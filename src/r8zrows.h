@@ -23,12 +23,14 @@
 typedef struct r8_zrows {
     r8_interp *lx, *rx;   /* 0, 2: the edges' columns */
     r8_interp *ld, *rd;   /* 4, 6: the edges' depths (the four point into */
-                          /* t->s: &s->c.l.x, &s->c.r.x, &s->ld, &s->rd) */
+                          /* t->s: &s->c.l.x, &s->c.r.x, &s->ld, &s->rd; */
+                          /* the AVR kernel finds all from lx) */
     r8_u16 *z;            /* 8: the depth row of row y */
     r8_u8 *page;          /* 10: its page row (SSD1306 layout) */
     r8_u16 w;             /* 12: columns (<= 32767) */
     r8_u8 m;              /* 14: row y's bit in the page */
-    r8_u8 k;              /* 15: row y's dither phase, y & 3 */
+    r8_u8 k;              /* 15: row y's dither phase, y & 3 (the AVR */
+                          /* kernel takes it from y, writes it at the end) */
     const r8_u8 *pat;     /* 16: the level's dither patterns (flash: */
                           /* &r8_fb_dither_tab[4 level]), row k's pat[k] */
     r8_scan *s;           /* 18: the polygon (lx .. rd point into it) */
@@ -37,6 +39,7 @@ typedef struct r8_zrows {
     r8_s16 y;             /* 24: the current row */
     r8_s16 lim;           /* 26: the first row not done (<= s->c.ybot) */
     r8_s16 end;           /* 28: (the kernel's) */
+    r8_u8 fast;           /* 30: (the kernel's) */
 } r8_zrows;
 
 /* r8_zfill's rows from y up to lim (judd's test decided or off): on
@@ -53,6 +56,16 @@ typedef struct r8_zrows {
  * column 0 or is 256 columns or more: the caller draws that row; 0
  * when r8_scan_row_attrs said the polygon is over.  y is left in t->y. */
 int r8k_zrows(r8_zrows *t);
+
+/* r8_zfill's common case in one call: face a's rows from a->s.c.y (at
+ * or below fb->y0) up to lim = min(c.ybot, ylimit, fb->y0 + fb->rows)
+ * through r8k_zrows, its r8_zrows built from a, fb and depth (the band's
+ * 16-bit depth rows, fb->width a row; the page rows fb->buf; the level's
+ * dither patterns, min(a->level, 16)).  Returns r8k_zrows's value; on 1
+ * and 2 a->s.c.y is its y (2: that row is the caller's, then a call
+ * again from the next, as r8_zfill does). */
+struct r8_act;
+int r8k_zband(struct r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit);
 
 /* The attribute interpolators of the left (right = 0) or right edge
  * set up again for row y, as r8_scan_row_attrs does when the edge has

@@ -27,6 +27,7 @@
 #include "r8ray.h"
 #include "r8portal.h"
 #include "r8kern.h"
+#include "r8zrows.h"
 
 /* Only the fused scan-and-fill (cull, painter's; flat, Lambert) is
  * built when every method and shading that needs depth or shade along
@@ -1298,9 +1299,17 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
         r8_span sp;
 #ifndef R8_NO_ZBUF
         if ((st->method == R8_VIS_Z8 || st->method == R8_VIS_Z16) &&
-            !(st->attrs & R8_ATTR_S) && fb->format == R8_FMT_PAGE1)
+            !(st->attrs & R8_ATTR_S) && fb->format == R8_FMT_PAGE1) {
+#if R8_ZROWS
+            /* r8_zfill's common case called here (src/r8zrows.h); its
+             * 2 (a row the kernel leaves): r8_zfill on from there */
+            if (st->method == R8_VIS_Z16 && e->c.y >= fb->y0 && (!st->judd || e->c.front)) {
+                if (r8k_zband((struct r8_act *)a, fb, (r8_u16 *)(void *)st->depth, y1) == 2)
+                    r8_zfill(st, a, y1, fb, 1);
+            } else
+#endif
             r8_zfill(st, a, y1, fb, st->method == R8_VIS_Z16);   /* the common case */
-        else
+        } else
 #endif
         while (r8_scan_next(&a->s, y1, st->judd, &sp))
             draw_span(st, fb, e->level, g, &sp);

@@ -73,6 +73,8 @@ void r8_scan_attr_edge(r8_scan *s, int right, r8_s16 y)
 #define ATTR_START(s, e, dir, y, d, sh) attr_start(s, e, dir, y, d, sh)
 #endif
 
+#if !R8_ZROWS
+/* (where R8_ZROWS: src/zrows.c's, AVR ports/avr/zfill.S) */
 void r8_scan_attrs(r8_scan *s)
 {
     if (s->attrs) {
@@ -80,6 +82,7 @@ void r8_scan_attrs(r8_scan *s)
         ATTR_START(s, &s->c.r, 1, s->c.y, &s->rd, &s->rs);
     }
 }
+#endif
 
 r8_s16 r8_scan_begin(r8_scan *s, const r8_svert *v, const r8_u16 *idx,
                      r8_u8 n, r8_u8 attrs, r8_s16 ystart)

@@ -324,49 +324,28 @@ static ZF_NOINLINE void zfill_gen(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb 
     c->y = y;
 }
 
+#if R8_ZROWS
+/* the rows r8k_zband leaves (its 2): each in C, then on with the
+ * kernel from the next (out of line: r8_zfill's own path stays short) */
+static ZF_NOINLINE void zfill_stops(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb)
+{
+    do
+        zfill_gen(st, a, (r8_s16)(a->s.c.y + 1), fb, 1);
+    while (r8k_zband(a, fb, (r8_u16 *)(void *)st->depth, ylimit) == 2);
+}
+#endif
+
 void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
 {
 #if R8_ZROWS
-    r8_scan *s = &a->s;
-    r8_scanx *c = &s->c;
-    r8_s16 y = c->y;
-    if (bits16 && y >= fb->y0 && (!st->judd || c->front)) {
-        /* the rows from y on: r8k_zrows (src/r8zrows.h), up to lim or a
-         * row it leaves to zfill_gen (whose edges it has moved on) */
-        r8_zrows t;
-        r8_u16 w = fb->width, by = (r8_u16)(y - fb->y0);
-        r8_u8 lv = a->level > 16 ? 16 : a->level;
-        int rc;
-        t.lim = c->ybot < ylimit ? c->ybot : ylimit;
-        if (t.lim > fb->y0 + fb->rows)
-            t.lim = (r8_s16)(fb->y0 + fb->rows);
-        t.lx = &c->l.x;
-        t.rx = &c->r.x;
-        t.ld = &s->ld;
-        t.rd = &s->rd;
-        t.w = w;
-        t.pat = &r8_fb_dither_tab[(unsigned)lv << 2];
-        t.s = s;
-        t.lyend = &c->l.yend;
-        t.ryend = &c->r.yend;
-        t.y = y;
-        t.z = (r8_u16 *)(void *)st->depth + by * w;
-        t.page = fb->buf + (by >> 3) * w;
-        t.m = R8_FB_BIT(by);
-        t.k = (r8_u8)(y & 3);
-        while ((rc = r8k_zrows(&t)) == 2) {
-            /* row t.y in C, then on from the next */
-            c->y = t.y;
-            zfill_gen(st, a, (r8_s16)(t.y + 1), fb, bits16);
-            by = (r8_u16)(++t.y - fb->y0);
-            t.z = (r8_u16 *)(void *)st->depth + by * w;
-            t.page = fb->buf + (by >> 3) * w;
-            t.m = R8_FB_BIT(by);
-            t.k = (r8_u8)(t.y & 3);
-        }
-        if (rc)
-            c->y = t.y;           /* lim */
-        return;                   /* (0: a back face, over) */
+    r8_scanx *c = &a->s.c;
+    if (bits16 && c->y >= fb->y0 && (!st->judd || c->front)) {
+        /* the rows from y on: r8k_zband (src/r8zrows.h), up to the band's
+         * or the face's end, or a row it leaves to zfill_gen (whose
+         * edges it has moved on); 0: a back face, over */
+        if (r8k_zband(a, fb, (r8_u16 *)(void *)st->depth, ylimit) == 2)
+            zfill_stops(st, a, ylimit, fb);
+        return;
     }
 #endif
     zfill_gen(st, a, ylimit, fb, bits16);

@@ -93,6 +93,39 @@ int r8k_zrows(r8_zrows *t)
 }
 #endif
 
+#if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
+{
+    r8_scan *s = &a->s;
+    r8_scanx *c = &s->c;
+    r8_zrows t;
+    r8_u16 w = (r8_u16)fb->width, by = (r8_u16)(c->y - fb->y0);
+    r8_u8 lv = a->level > 16 ? 16 : a->level;
+    int rc;
+    t.lim = c->ybot < ylimit ? c->ybot : ylimit;
+    if (t.lim > fb->y0 + fb->rows)
+        t.lim = (r8_s16)(fb->y0 + fb->rows);
+    t.lx = &c->l.x;
+    t.rx = &c->r.x;
+    t.ld = &s->ld;
+    t.rd = &s->rd;
+    t.w = w;
+    t.pat = &r8_fb_dither_tab[(unsigned)lv << 2];
+    t.s = s;
+    t.lyend = &c->l.yend;
+    t.ryend = &c->r.yend;
+    t.y = c->y;
+    t.z = depth + by * w;
+    t.page = fb->buf + (by >> 3) * w;
+    t.m = R8_FB_BIT(by);
+    t.k = (r8_u8)(c->y & 3);
+    rc = r8k_zrows(&t);
+    if (rc)
+        c->y = t.y;
+    return rc;
+}
+#endif
+
 #ifdef R8_ASM_ZFILL
 /* ports/avr/zfill.S reads these offsets (also scankern.c's) */
 R8_CASSERT(zrows_vp_at_0, offsetof(r8_scanx, vp) == 0);
@@ -103,10 +136,23 @@ R8_CASSERT(zrows_yend_at_10, offsetof(r8_edge, yend) == 10);
 R8_CASSERT(zrows_vi_at_12, offsetof(r8_edge, vi) == 12);
 R8_CASSERT(zrows_t_y_at_24, offsetof(r8_zrows, y) == 24);
 R8_CASSERT(zrows_t_end_at_28, offsetof(r8_zrows, end) == 28);
+R8_CASSERT(zrows_t_fast_at_30, offsetof(r8_zrows, fast) == 30);
 R8_CASSERT(zrows_l_x_at_25, offsetof(r8_scanx, l) + offsetof(r8_edge, x) == 25);
 R8_CASSERT(zrows_r_x_at_38, offsetof(r8_scanx, r) + offsetof(r8_edge, x) == 38);
 R8_CASSERT(zrows_ld_at_52, offsetof(r8_scan, ld) == 52);
 R8_CASSERT(zrows_rd_at_72, offsetof(r8_scan, rd) == 72);
+R8_CASSERT(sattrs_l_vi_at_37, offsetof(r8_scanx, l) + offsetof(r8_edge, vi) == 37);
+R8_CASSERT(sattrs_r_vi_at_50, offsetof(r8_scanx, r) + offsetof(r8_edge, vi) == 50);
+R8_CASSERT(zband_s_at_2, offsetof(r8_act, s) == 2);
+R8_CASSERT(zband_level_at_0, offsetof(r8_act, level) == 0);
+R8_CASSERT(zband_y_at_21, offsetof(r8_scanx, y) == 21);
+R8_CASSERT(zband_ybot_at_23, offsetof(r8_scanx, ybot) == 23);
+R8_CASSERT(zband_lyend_at_35, offsetof(r8_scanx, l) + offsetof(r8_edge, yend) == 35);
+R8_CASSERT(zband_ryend_at_48, offsetof(r8_scanx, r) + offsetof(r8_edge, yend) == 48);
+R8_CASSERT(zband_fb_buf_at_0, offsetof(r8_fb, buf) == 0);
+R8_CASSERT(zband_fb_width_at_2, offsetof(r8_fb, width) == 2);
+R8_CASSERT(zband_fb_y0_at_6, offsetof(r8_fb, y0) == 6);
+R8_CASSERT(zband_fb_rows_at_8, offsetof(r8_fb, rows) == 8);
 #endif
 
 #ifndef R8_ASM_ZFILL
@@ -162,6 +208,25 @@ void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16
 #endif
 
 #if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+/* r8_scan_attrs (r8raster.h) where R8_ZROWS (else src/scanattr.c's):
+ * each edge's attributes at row c.y, depth alone from r8_attr_first
+ * (its upper vertex: the left edge's vi + 1, the right's vi - 1, round
+ * the polygon), else (shade too, or r8_attr_first's 0) through
+ * r8_scan_attr_edge; the AVR kernel in ports/avr/zfill.S */
+void r8_scan_attrs(r8_scan *s)
+{
+    r8_scanx *c = &s->c;
+    r8_u8 from;
+    if (!s->attrs)
+        return;
+    from = (r8_u8)(c->l.vi + 1 == c->n ? 0 : c->l.vi + 1);
+    if (s->attrs != R8_ATTR_D || !r8_attr_first(&s->ld, c->vp[from], c->vp[c->l.vi], c->y, 2))
+        r8_scan_attr_edge(s, 0, c->y);
+    from = (r8_u8)(c->r.vi == 0 ? c->n - 1 : c->r.vi - 1);
+    if (s->attrs != R8_ATTR_D || !r8_attr_first(&s->rd, c->vp[from], c->vp[c->r.vi], c->y, 2))
+        r8_scan_attr_edge(s, 1, c->y);
+}
+
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k)
 {
     r8_s16 ay = a[1], by = b[1];

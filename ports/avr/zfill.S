@@ -19,6 +19,11 @@
  * the drawn and the skipped pixel each with its own copy of the step (no
  * jump back into a shared tail).
  *
+ * Everything of the polygon is found from t->lx (= &s->c.l.x: rx, ld,
+ * rd, l.yend, r.yend 13, 27, 47, 10, 23 bytes on; t's rx, ld, rd,
+ * lyend, ryend are not read), and the dither phase from y (t->k, y & 3,
+ * only written at the end).  r8k_zband (below) builds t itself.
+ *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
  * m 14, k 15, pat 16, s 18, lyend 20, ryend 22, y 24, lim 26, end 28}.
@@ -68,28 +73,58 @@
 1:
 .endm
 
-/* load / store val, err through the pointer at Y+off */
-.macro LOADI off, vl, vh, el, eh
-        ldd     r30, Y+\off
-        ldd     r31, Y+\off+1
-        ld      \vl, Z
-        ldd     \vh, Z+1
-        ldd     \el, Z+4
-        ldd     \eh, Z+5
-.endm
-.macro STOREI off, vl, vh, el, eh
-        ldd     r30, Y+\off
-        ldd     r31, Y+\off+1
-        st      Z, \vl
-        std     Z+1, \vh
-        std     Z+4, \el
-        std     Z+5, \eh
+/* the same when its den < 256 (err, r < den: their high bytes 0):
+ * 8-bit error; e + r past 255 is past den too */
+.macro STEPB off, vl, vh, el
+        ldd     r18, Z+\off+6
+        ldd     r19, Z+\off+8
+        add     \el, r18
+        brcs    1f
+        cp      \el, r19
+        brlo    2f
+1:      sub     \el, r19
+        ldd     r18, Z+\off+2
+        ldd     r19, Z+\off+3
+        sec
+        adc     \vl, r18
+        adc     \vh, r19
+        rjmp    3f
+2:      ldd     r18, Z+\off+2
+        ldd     r19, Z+\off+3
+        add     \vl, r18
+        adc     \vh, r19
+3:
 .endm
 
-        .section .text.r8k_zrows,"ax",@progbits
-        .global r8k_zrows
-        .type   r8k_zrows, @function
-r8k_zrows:
+/* t->fast (Y+30) = 0 when the four dens are < 256, else not (Z = lx:
+ * their high bytes at 9, 22, 36, 56) */
+.macro FASTF
+        ldd     r18, Z+9
+        ldd     r19, Z+22
+        or      r18, r19
+        ldd     r19, Z+36
+        or      r18, r19
+        ldd     r19, Z+56
+        or      r18, r19
+        std     Y+30, r18
+.endm
+
+/* load / store val, err of the interpolator at Z+off (Z = lx: rx, ld,
+ * rd, lyend, ryend at 13, 27, 47, 10, 23) */
+.macro LDI2 off, vl, vh, el, eh
+        ldd     \vl, Z+\off
+        ldd     \vh, Z+\off+1
+        ldd     \el, Z+\off+4
+        ldd     \eh, Z+\off+5
+.endm
+.macro STI2 off, vl, vh, el, eh
+        std     Z+\off, \vl
+        std     Z+\off+1, \vh
+        std     Z+\off+4, \el
+        std     Z+\off+5, \eh
+.endm
+
+.macro PUSHALL
         push    r2
         push    r3
         push    r4
@@ -108,11 +143,175 @@ r8k_zrows:
         push    r17
         push    r28
         push    r29
+.endm
+
+        .section .text.r8k_zrows,"ax",@progbits
+        .global r8k_zrows
+        .type   r8k_zrows, @function
+r8k_zrows:
+        PUSHALL
         movw    r28, r24
-        LOADI   0, LXVL, LXVH, LXEL, LXEH
-        LOADI   2, RXVL, RXVH, RXEL, RXEH
-        LOADI   4, LDVL, LDVH, LDEL, LDEH
-        LOADI   6, RDVL, RDVH, RDEL, RDEH
+        rcall   zbody
+        rjmp    zrestore
+
+/* int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
+ * (src/r8zrows.h): the r8_zrows of the reference (src/zrows.c) built in
+ * a 31-byte frame on the stack, then zbody; a->s.c.y = t.y on 1 and 2.
+ * In: r25:24 a, r23:22 fb, r21:20 depth, r19:18 ylimit.  Offsets
+ * (asserted in src/zrows.c): r8_act {level 0, s 2}; r8_scanx {y 21,
+ * ybot 23, l.x 25, l.yend 35, r.x 38, r.yend 48}; r8_scan {ld 52,
+ * rd 72}; r8_fb {buf 0, width 2, y0 6, rows 8}. */
+        .global r8k_zband
+        .type   r8k_zband, @function
+r8k_zband:
+        PUSHALL
+        in      r28, 0x3D               /* a frame of 31: Y = SP + 1 */
+        in      r29, 0x3E
+        sbiw    r28, 31
+        in      r0, 0x3F
+        cli
+        out     0x3E, r29
+        out     0x3F, r0
+        out     0x3D, r28
+        adiw    r28, 1
+        movw    r30, r24                /* Z = a */
+        ld      r17, Z+                 /* level, min 16: pat */
+        cpi     r17, 17
+        brlo    1f
+        ldi     r17, 16
+1:      ldi     r26, 4
+        mul     r17, r26
+        movw    r26, r0
+        clr     r1
+        subi    r26, lo8(-(r8_fb_dither_tab))
+        sbci    r27, hi8(-(r8_fb_dither_tab))
+        std     Y+16, r26
+        std     Y+17, r27
+        adiw    r30, 1                  /* Z = s */
+        std     Y+18, r30
+        std     Y+19, r31
+        movw    r26, r30                /* lx (the kernel finds rx, ld, */
+        adiw    r26, 25                 /* rd, the yends from it) */
+        std     Y+0, r26
+        std     Y+1, r27
+        ldd     r16, Z+21               /* y */
+        ldd     r17, Z+22
+        std     Y+24, r16
+        std     Y+25, r17
+        ldd     r14, Z+23               /* lim = min(ybot, ylimit, y0 + rows) */
+        ldd     r15, Z+24
+        cp      r18, r14
+        cpc     r19, r15
+        brge    2f
+        movw    r14, r18
+2:      movw    r30, r22                /* Z = fb */
+        ldd     r12, Z+6                /* y0 */
+        ldd     r13, Z+7
+        ldd     r18, Z+8                /* y0 + rows */
+        ldd     r19, Z+9
+        add     r18, r12
+        adc     r19, r13
+        cp      r18, r14
+        cpc     r19, r15
+        brge    3f
+        movw    r14, r18
+3:      std     Y+26, r14
+        std     Y+27, r15
+        ldd     r10, Z+2                /* w */
+        ldd     r11, Z+3
+        std     Y+12, r10
+        std     Y+13, r11
+        sub     r16, r12                /* by = y - y0 */
+        sbc     r17, r13
+        mul     r16, r10                /* r15:r14 = by * w */
+        movw    r14, r0
+        mul     r16, r11
+        add     r15, r0
+        mul     r17, r10
+        add     r15, r0
+        clr     r1
+        add     r20, r14                /* z = depth + by * w */
+        adc     r21, r15
+        add     r20, r14
+        adc     r21, r15
+        std     Y+8, r20
+        std     Y+9, r21
+        ldi     r18, 1                  /* m = 1 << (by & 7) */
+        sbrc    r16, 1
+        ldi     r18, 4
+        sbrc    r16, 0
+        lsl     r18
+        sbrc    r16, 2
+        swap    r18
+        std     Y+14, r18
+        lsr     r17                     /* page = buf + (by >> 3) * w */
+        ror     r16
+        lsr     r17
+        ror     r16
+        lsr     r17
+        ror     r16
+        mul     r16, r10
+        movw    r14, r0
+        mul     r16, r11
+        add     r15, r0
+        mul     r17, r10
+        add     r15, r0
+        clr     r1
+        ld      r18, Z
+        ldd     r19, Z+1
+        add     r18, r14
+        adc     r19, r15
+        std     Y+10, r18
+        std     Y+11, r19
+        rcall   zbody
+        tst     r24                     /* 1, 2: c.y = t.y */
+        breq    4f
+        ldd     r30, Y+18
+        ldd     r31, Y+19
+        ldd     r18, Y+24
+        ldd     r19, Y+25
+        std     Z+21, r18
+        std     Z+22, r19
+4:      adiw    r28, 30                 /* the frame off */
+        in      r0, 0x3F
+        cli
+        out     0x3E, r29
+        out     0x3F, r0
+        out     0x3D, r28
+        rjmp    zrestore
+        .size   r8k_zband, .-r8k_zband
+
+zrestore:
+        ldi     r25, 0
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        pop     r15
+        pop     r14
+        pop     r13
+        pop     r12
+        pop     r11
+        pop     r10
+        pop     r9
+        pop     r8
+        pop     r7
+        pop     r6
+        pop     r5
+        pop     r4
+        pop     r3
+        pop     r2
+        ret
+
+/* the rows: Y = t, the registers saved; r24 the value */
+zbody:
+        ldd     r30, Y+0                /* Z = lx */
+        ldd     r31, Y+1
+        LDI2    0, LXVL, LXVH, LXEL, LXEH
+        LDI2    13, RXVL, RXVH, RXEL, RXEH
+        LDI2    27, LDVL, LDVH, LDEL, LDEH
+        LDI2    47, RDVL, RDVH, RDEL, RDEH
+        FASTF
         ldd     YL_, Y+24               /* y */
         ldd     YH_, Y+25
 
@@ -124,10 +323,10 @@ r8k_zrows:
         brlt    1f
         ldi     r24, 1
         rjmp    .Lout
-1:      ldd     r30, Y+20               /* the left edge ends at y: on */
-        ldd     r31, Y+21
-        ld      r20, Z
-        ldd     r21, Z+1
+1:      ldd     r30, Y+0                /* Z = lx */
+        ldd     r31, Y+1
+        ldd     r20, Z+10               /* the left edge ends at y: on */
+        ldd     r21, Z+11
         cp      YL_, r20
         cpc     YH_, r21
         brlt    2f
@@ -135,14 +334,15 @@ r8k_zrows:
         std     Y+25, YH_
         ldi     r19, 0
         rcall   emove
-        LOADI   0, LXVL, LXVH, LXEL, LXEH
-        LOADI   4, LDVL, LDVH, LDEL, LDEH
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        LDI2    0, LXVL, LXVH, LXEL, LXEH
+        LDI2    27, LDVL, LDVH, LDEL, LDEH
+        FASTF
         ldd     YL_, Y+24
         ldd     YH_, Y+25
-2:      ldd     r30, Y+22               /* the right one */
-        ldd     r31, Y+23
-        ld      r26, Z
-        ldd     r27, Z+1
+2:      ldd     r26, Z+23               /* the right one */
+        ldd     r27, Z+24
         cp      YL_, r26
         cpc     YH_, r27
         brlt    3f
@@ -150,20 +350,19 @@ r8k_zrows:
         std     Y+25, YH_
         ldi     r19, 1
         rcall   emove
-        LOADI   2, RXVL, RXVH, RXEL, RXEH
-        LOADI   6, RDVL, RDVH, RDEL, RDEH
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        LDI2    13, RXVL, RXVH, RXEL, RXEH
+        LDI2    47, RDVL, RDVH, RDEL, RDEH
+        FASTF
         ldd     YL_, Y+24
         ldd     YH_, Y+25
 3:      ldd     r18, Y+26
         ldd     r19, Y+27
-        ldd     r30, Y+20
-        ldd     r31, Y+21
-        ld      r20, Z
-        ldd     r21, Z+1
-        ldd     r30, Y+22
-        ldd     r31, Y+23
-        ld      r26, Z
-        ldd     r27, Z+1
+        ldd     r20, Z+10
+        ldd     r21, Z+11
+        ldd     r26, Z+23
+        ldd     r27, Z+24
 .Lend:                                  /* end = min(lim, yends), > y */
         cp      r20, r18
         cpc     r21, r19
@@ -206,15 +405,20 @@ r8k_zrows:
         brlt    5f
         movw    r20, RXVL
 5:      sub     r20, LXVL               /* columns (1..255) */
+        cpi     r20, 1                  /* one: its depth is ld's, no */
+        brne    6f                      /* step, no division */
+        rjmp    .Lone
+6:
         push    r4
         push    r5
         push    r6
         push    r7
         mov     r4, r20                 /* r4: columns */
-        ldd     r0, Y+15                /* r5: pat[k] (flash) */
+        mov     r20, YL_                /* r5: pat[y & 3] (flash) */
+        andi    r20, 3
         ldd     r30, Y+16
         ldd     r31, Y+17
-        add     r30, r0
+        add     r30, r20
         adc     r31, r1
         lpm     r5, Z
         mov     r20, LXVL               /* rotated left by xl & 7: */
@@ -241,8 +445,22 @@ r8k_zrows:
         adc     r31, r25
         lpm     r20, Z+
         lpm     r21, Z
+        tst     r19                     /* un < 256: two products */
+        brne    20f
+        mul     r18, r20                /* q' = (un * rcp) >> 16 < 256 */
+        mov     r26, r1
+        mul     r18, r21
+        add     r26, r0
+        adc     r1, r25
+        mov     r30, r1
+        ldi     r31, 0
+        mul     r30, r24                /* rr = un - q' * n */
+        sub     r18, r0
+        sbc     r19, r1
+        clr     r1
+        rjmp    21f
         /* q' = (un * rcp) >> 16 in r31:r30 */
-        mul     r19, r21
+20:     mul     r19, r21
         movw    r30, r0
         mul     r18, r20
         mov     r26, r1
@@ -262,7 +480,7 @@ r8k_zrows:
         clr     r1
         sub     r18, r20
         sbc     r19, r21
-        cp      r18, r24
+21:     cp      r18, r24
         cpc     r19, r25
         brlo    9f
         sub     r18, r24
@@ -309,14 +527,13 @@ r8k_zrows:
         inc     r5
         or      r0, r7
 11:     st      X+, r0
-        add     r18, r20                /* the DDA (twice: no jump); the */
-        adc     r19, r21                /* error kept as e + 256 - n: */
-        add     r24, r25                /* carry when e + r >= n */
-        brcc    13f
-        add     r24, r6
-        subi    r18, 0xFF
-        sbci    r19, 0xFF
-13:     dec     r1
+        add     r24, r25                /* the DDA (twice: no jump); the */
+        brcc    13f                     /* error kept as e + 256 - n: */
+        add     r24, r6                 /* carry when e + r >= n, then */
+        sec                             /* dv += q + 1 */
+13:     adc     r18, r20
+        adc     r19, r21
+        dec     r1
         brne    .Lpx
         rjmp    .Lpxend
 .Lskip:
@@ -325,14 +542,13 @@ r8k_zrows:
         inc     r5
 16:     adiw    r26, 1
         adiw    r30, 2
-        add     r18, r20
-        adc     r19, r21
         add     r24, r25
         brcc    18f
         add     r24, r6
-        subi    r18, 0xFF
-        sbci    r19, 0xFF
-18:     dec     r1
+        sec
+18:     adc     r18, r20
+        adc     r19, r21
+        dec     r1
         brne    .Lpx
 .Lpxend:
         pop     r7
@@ -343,10 +559,15 @@ r8k_zrows:
 .Lstep:
         ldd     r30, Y+0                /* Z = lx: rx, ld, rd at 13, 27, 47 */
         ldd     r31, Y+1
-        STEPZ   0, LXVL, LXVH, LXEL, LXEH
-        STEPZ   13, RXVL, RXVH, RXEL, RXEH
-        STEPZ   27, LDVL, LDVH, LDEL, LDEH
-        STEPZ   47, RDVL, RDVH, RDEL, RDEH
+        ldd     r18, Y+30               /* all dens < 256: 8-bit errors */
+        tst     r18
+        breq    4f
+        rjmp    .Lslow
+4:      STEPB   0, LXVL, LXVH, LXEL
+        STEPB   13, RXVL, RXVH, RXEL
+        STEPB   27, LDVL, LDVH, LDEL
+        STEPB   47, RDVL, RDVH, RDEL
+.Lbook:
         ldd     r18, Y+12               /* w */
         ldd     r19, Y+13
         ldd     r30, Y+8                /* z += w */
@@ -368,10 +589,6 @@ r8k_zrows:
         std     Y+10, r30
         std     Y+11, r31
 14:     std     Y+14, r20
-        ldd     r20, Y+15               /* k = (k + 1) & 3 */
-        inc     r20
-        andi    r20, 3
-        std     Y+15, r20
         subi    YL_, 0xFF               /* y++; on below end */
         sbci    YH_, 0xFF
         ldd     r18, Y+28
@@ -381,36 +598,70 @@ r8k_zrows:
         brge    15f
         rjmp    .Lrow
 15:     rjmp    .Lcheck
+.Lone:                                  /* one column, depth ld */
+        ldd     r30, Y+8                /* Z = z + xl */
+        ldd     r31, Y+9
+        add     r30, LXVL
+        adc     r31, LXVH
+        add     r30, LXVL
+        adc     r31, LXVH
+        ld      r0, Z
+        cp      LDVL, r0
+        ldd     r0, Z+1
+        cpc     LDVH, r0
+        brsh    3f                      /* farther: not drawn */
+        rjmp    .Lstep
+3:
+        st      Z, LDVL
+        std     Z+1, LDVH
+        mov     r20, YL_                /* pat[y & 3] (flash) */
+        andi    r20, 3
+        ldd     r30, Y+16
+        ldd     r31, Y+17
+        add     r30, r20
+        adc     r31, r1
+        lpm     r21, Z
+        mov     r20, LXVL               /* its bit 7 - (xl & 7) to bit 7 */
+        sbrc    r20, 2
+        swap    r21
+        andi    r20, 3
+        breq    2f
+1:      lsl     r21
+        dec     r20
+        brne    1b
+2:      ldd     r26, Y+10               /* X = page + xl */
+        ldd     r27, Y+11
+        add     r26, LXVL
+        adc     r27, LXVH
+        ldd     r20, Y+14               /* m: set, then cleared where */
+        ld      r0, X                   /* the pattern's bit is 0 */
+        or      r0, r20
+        sbrs    r21, 7
+        eor     r0, r20
+        st      X, r0
+        rjmp    .Lstep
+
+.Lslow:                                 /* a den of 256 or more */
+        STEPZ   0, LXVL, LXVH, LXEL, LXEH
+        STEPZ   13, RXVL, RXVH, RXEL, RXEH
+        STEPZ   27, LDVL, LDVH, LDEL, LDEH
+        STEPZ   47, RDVL, RDVH, RDEL, RDEH
+        rjmp    .Lbook
 
 .Lstop:
         ldi     r24, 2                  /* row y: the caller's */
 .Lout:
         std     Y+24, YL_
         std     Y+25, YH_
-        STOREI  0, LXVL, LXVH, LXEL, LXEH
-        STOREI  2, RXVL, RXVH, RXEL, RXEH
-        STOREI  4, LDVL, LDVH, LDEL, LDEH
-        STOREI  6, RDVL, RDVH, RDEL, RDEH
-.Lret:
-        ldi     r25, 0
-        pop     r29
-        pop     r28
-        pop     r17
-        pop     r16
-        pop     r15
-        pop     r14
-        pop     r13
-        pop     r12
-        pop     r11
-        pop     r10
-        pop     r9
-        pop     r8
-        pop     r7
-        pop     r6
-        pop     r5
-        pop     r4
-        pop     r3
-        pop     r2
+        mov     r20, YL_                /* k = y & 3 */
+        andi    r20, 3
+        std     Y+15, r20
+        ldd     r30, Y+0
+        ldd     r31, Y+1
+        STI2    0, LXVL, LXVH, LXEL, LXEH
+        STI2    13, RXVL, RXVH, RXEL, RXEH
+        STI2    27, LDVL, LDVH, LDEL, LDEH
+        STI2    47, RDVL, RDVH, RDEL, RDEH
         ret
 /* emove: r8_scan_row_attrs(s, y, 0)'s work for one edge (r19: 0 the
  * left, 1 the right; y in t->y): r8k_estart moves it on; when its vi
@@ -422,15 +673,13 @@ r8k_zrows:
  * Keeps r2..r17, Y; the interpolators in memory are the truth after. */
 emove:
         push    r19
-        ldd     r22, Y+20               /* e = lyend - 10 (or ryend) */
-        ldd     r23, Y+21
+        ldd     r22, Y+0                /* e = lx - 0 (left), rx - 13 */
+        ldd     r23, Y+1
         sbrs    r19, 0
         rjmp    1f
-        ldd     r22, Y+22
-        ldd     r23, Y+23
-1:      subi    r22, 10
-        sbci    r23, 0
-        movw    r30, r22
+        subi    r22, 0xF3               /* + 13 */
+        sbci    r23, 0xFF
+1:      movw    r30, r22
         ldd     r18, Z+12               /* from = e->vi */
         push    r18
         push    r22
@@ -480,13 +729,12 @@ emove:
         ld      r0, Z
         ldd     r21, Z+1
         mov     r20, r0
-        ldd     r24, Y+4                /* it = ld (or rd) */
-        ldd     r25, Y+5
-        sbrs    r19, 0
-        rjmp    5f
-        ldd     r24, Y+6
-        ldd     r25, Y+7
-5:      ldd     r18, Y+24               /* y */
+        ldd     r24, Y+0                /* it = ld = lx + 27 (rd + 47) */
+        ldd     r25, Y+1
+        adiw    r24, 27
+        sbrc    r19, 0
+        adiw    r24, 20
+        ldd     r18, Y+24               /* y */
         ldd     r19, Y+25
         push    r16
         ldi     r16, 2
@@ -752,3 +1000,88 @@ r8_attr_first:
         movw    r24, r30                /* r23:22 = a[k] */
         rjmp    isub
         .size   r8_attr_first, .-r8_attr_first
+
+/* void r8_scan_attrs(r8_scan *s)                       (include/r8raster.h)
+ * The C reference is src/zrows.c's: nothing without attributes; depth
+ * alone: each edge's from r8_attr_first(&s->ld (rd), vp[from], vp[vi],
+ * c.y, 2), from = the left edge's vi + 1 (0 past n - 1), the right's
+ * vi - 1 (n - 1 before 0); else, or on its 0, r8_scan_attr_edge(s, side,
+ * c.y).  Offsets (asserted in src/zrows.c): r8_scan {vp 0, n 18, y 21,
+ * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  r17 = the side, Y = s
+ * (r8_attr_first, r8_scan_attr_edge keep both). */
+        .section .text.r8_scan_attrs,"ax",@progbits
+        .global r8_scan_attrs
+        .type   r8_scan_attrs, @function
+r8_scan_attrs:
+        movw    r30, r24
+        ldd     r0, Z+51                /* attrs */
+        tst     r0
+        brne    1f
+        ret
+1:      push    r16
+        push    r17
+        push    r28
+        push    r29
+        movw    r28, r24
+        ldi     r17, 0
+.Lsaside:
+        ldd     r0, Y+51                /* depth alone? */
+        dec     r0
+        brne    .Lsagen
+        ldd     r21, Y+18               /* n */
+        ldd     r20, Y+37               /* the left: vi, from = vi + 1 */
+        mov     r18, r20
+        inc     r18
+        cp      r18, r21
+        brne    2f
+        clr     r18
+2:      ldi     r24, 52                 /* it = s + 52 */
+        sbrs    r17, 0
+        rjmp    3f
+        ldd     r20, Y+50               /* the right: from = vi - 1 */
+        mov     r18, r20
+        tst     r18
+        brne    4f
+        mov     r18, r21
+4:      dec     r18
+        ldi     r24, 72                 /* it = s + 72 */
+3:      movw    r30, r28                /* a = vp[from] */
+        add     r30, r18
+        adc     r31, r1
+        add     r30, r18
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        movw    r30, r28                /* b = vp[vi] */
+        add     r30, r20
+        adc     r31, r1
+        add     r30, r20
+        adc     r31, r1
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldi     r25, 0
+        add     r24, r28
+        adc     r25, r29
+        ldd     r18, Y+21               /* y */
+        ldd     r19, Y+22
+        ldi     r16, 2
+        call    r8_attr_first
+        or      r24, r25
+        brne    .Lsanext
+.Lsagen:
+        movw    r24, r28                /* r8_scan_attr_edge(s, side, y) */
+        mov     r22, r17
+        ldi     r23, 0
+        ldd     r20, Y+21
+        ldd     r21, Y+22
+        call    r8_scan_attr_edge
+.Lsanext:
+        inc     r17
+        cpi     r17, 2
+        brne    .Lsaside
+        pop     r29
+        pop     r28
+        pop     r17
+        pop     r16
+        ret
+        .size   r8_scan_attrs, .-r8_scan_attrs

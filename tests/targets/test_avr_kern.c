@@ -992,12 +992,17 @@ static void test_depth_random(void)
 #define r8k_zrows r8k_zrows_ref
 #define r8_interp_init_sub r8_interp_init_sub_ref
 #define r8_attr_first r8_attr_first_ref
+#define r8k_zband r8k_zband_ref
+#define r8_scan_attrs r8_scan_attrs_ref
 #include "zrows.c"
+#undef r8_scan_attrs
+#undef r8k_zband
 #undef r8k_zrows
 #undef r8_interp_init_sub
 #undef r8_attr_first
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
 int r8k_zrows(r8_zrows *t);
+int r8k_zband(struct r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit);
 void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
 
 static int interp_eq(const r8_interp *a, const r8_interp *b)
@@ -1038,7 +1043,10 @@ static void zrows_bind(r8_zrows *t, r8_scan *s)
 
 static r8_svert zverts[4];
 static const r8_u16 zidx[4] = { 0, 1, 2, 3 };
-static r8_scan zscan_ref, zscan_asm;
+/* (the scans inside the acts of test_zband_random: RAM is short) */
+static r8_act zact_ref, zact_asm;
+#define zscan_ref (zact_ref.s)
+#define zscan_asm (zact_asm.s)
 
 static void test_zrows_random(void)
 {
@@ -1137,6 +1145,165 @@ static void test_zrows_random(void)
     unity_print("\n");
     if (stops < 100 || drawn < 330 || moves < 500)
         unity_fail_int(__LINE__, "r8k_zrows: too few stops, moves or drawn bands", (long)stops, (long)drawn);
+}
+
+/* ---- r8k_zband (zfill.S) against its reference (src/zrows.c, renamed
+ * r8k_zband_ref, which calls r8k_zrows_ref): the scans of
+ * test_zrows_random's kind in an r8_act of random level (0..20: past 16
+ * too) over a band fb (rows at y0, w <= 64 columns, pages at GUARD,
+ * depths at zoff) with random limits (the band's end, the face's, a
+ * ylimit above both or between), from the scan's own first row y on.
+ * r8k_zband builds the r8_zrows r8_zfill did (z, page, m, k from y -
+ * fb->y0, the pattern from the level, the limit) and writes c.y; the
+ * rows it leaves (its 2) are stepped past as r8_zfill's C does.  The
+ * return values, all the memory and both acts must end equal. ---- */
+static void test_zband_random(void)
+{
+    unsigned long i, stops = 0, drawn = 0, calls = 0, cut = 0;
+    for (i = 0; i < 2000; i++) {
+        r8_fb fb_ref, fb_asm;
+        r8_u16 w = (r8_u16)(1u + rndn(64)), rows = (r8_u16)(1u + rndn(16));
+        r8_s16 y0 = (r8_s16)rndn(40), ylimit;
+        unsigned j, zoff = (2u * GUARD + 3u * w + 1u) & ~1u;
+        unsigned len = zoff + 2u * rows * w + GUARD, c = rndn(8), nv = 3u + rndn(2);
+        int rr, ra;
+        r8_u32 v = 0;
+        r8_u16 sum0;
+        for (j = 0; j < len; j++) {
+            if (!(j & 3))
+                v = rnd();
+            band_ref[j] = (r8_u8)v;
+            v >>= 8;
+        }
+        if (rndn(2))
+            for (j = zoff; j < len; j += 2)
+                band_ref[j + 1] = (r8_u8)(0x40 + (band_ref[j] & 1));
+        memcpy(band_asm, band_ref, len);
+        for (j = 0; j < nv; j++) {
+            r8_svert *p = &zverts[j];
+            if (c == 0)
+                p->x = j & 1 ? rnds(250 * 16, 330 * 16) : rnds(0, 40 * 16);
+            else if (c == 1)
+                p->x = rnds(-6 * 16, (r8_s16)((w + 8) * 16));
+            else
+                p->x = rnds(-2 * 16, (r8_s16)((w + 40) * 16));
+            p->y = rnds((r8_s16)(y0 * 16 - 40), (r8_s16)((y0 + rows) * 16 + 40));
+            p->d = rndn(4) == 0 ? rnds(0, 32767) : rnds(16000, 16900);
+            p->s = rnds(0, 4096);
+        }
+        memset(&zact_ref, 0, sizeof zact_ref);
+        zact_ref.level = (r8_u8)rndn(21);
+        zact_ref.used = (r8_u8)rnd();
+        if (!r8_scan_begin(&zact_ref.s, zverts, zidx, (r8_u8)nv,
+                           (r8_u8)(rndn(8) ? R8_ATTR_D : R8_ATTR_D | R8_ATTR_S), y0))
+            continue;
+        if (zact_ref.s.c.y < y0 || zact_ref.s.c.y >= (r8_s16)(y0 + rows))
+            continue;
+        memcpy(&zact_asm, &zact_ref, sizeof zact_ref);
+        fb_ref.width = fb_asm.width = (r8_s16)w;
+        fb_ref.height = fb_asm.height = 200;
+        fb_ref.y0 = fb_asm.y0 = y0;
+        fb_ref.rows = fb_asm.rows = (r8_s16)rows;
+        fb_ref.format = fb_asm.format = R8_FMT_PAGE1;
+        fb_ref.buf = band_ref + GUARD;
+        fb_asm.buf = band_asm + GUARD;
+        switch (rndn(3)) {
+        case 0:
+            ylimit = (r8_s16)(y0 + rows + (r8_s16)rndn(20));
+            break;
+        case 1:
+            ylimit = (r8_s16)(zact_ref.s.c.y + 1 + (r8_s16)rndn(rows));
+            break;
+        default:
+            ylimit = (r8_s16)(y0 + rows);
+        }
+        cut += ylimit < zact_ref.s.c.ybot && ylimit < (r8_s16)(y0 + rows);
+        sum0 = zsum(band_ref, len);
+        for (;;) {
+            rr = r8k_zband_ref(&zact_ref, &fb_ref, (r8_u16 *)(void *)(band_ref + zoff), ylimit);
+            ra = r8k_zband(&zact_asm, &fb_asm, (r8_u16 *)(void *)(band_asm + zoff), ylimit);
+            calls++;
+            if (ra != rr || memcmp(band_ref, band_asm, len) != 0 ||
+                memcmp(&zact_ref, &zact_asm, sizeof zact_ref) != 0) {
+                print_case("r8k_zband", i);
+                unity_fail_int(__LINE__, "r8k_zband differs from the reference", (long)ra, (long)rr);
+                return;
+            }
+            if (rr != 2)
+                break;
+            stops++;                    /* r8_zfill's row: stepped past */
+            R8_INTERP_STEP(&zact_ref.s.c.l.x);
+            R8_INTERP_STEP(&zact_ref.s.c.r.x);
+            R8_INTERP_STEP(&zact_ref.s.ld);
+            R8_INTERP_STEP(&zact_ref.s.rd);
+            zact_ref.s.c.y++;
+            memcpy(&zact_asm, &zact_ref, sizeof zact_ref);
+        }
+        drawn += zsum(band_ref, len) != sum0;
+    }
+    unity_print("r8k_zband: ");
+    unity_print_long((long)calls);
+    unity_print(" calls, rows left to C ");
+    unity_print_long((long)stops);
+    unity_print(", cut by ylimit ");
+    unity_print_long((long)cut);
+    unity_print(", memory written in ");
+    unity_print_long((long)drawn);
+    unity_print("\n");
+    if (stops < 50 || drawn < 200 || cut < 100)
+        unity_fail_int(__LINE__, "r8k_zband: too few stops, cuts or drawn bands", (long)stops, (long)drawn);
+}
+
+/* ---- r8_scan_attrs (zfill.S) against its reference (src/zrows.c,
+ * renamed r8_scan_attrs_ref): random triangles and quads begun by
+ * r8_scanx_begin at a random row, attributes none, depth, depth and
+ * shade or shade, the interpolators random before; edges tall (past
+ * 256 subpixels) and depth steps wide (past 4095) now and then, so that
+ * r8_attr_first says 0 and r8_scan_attr_edge sets them up.  The whole
+ * scans must end equal. ---- */
+#define sa_ref (zact_ref.s)              /* (RAM is short) */
+#define sa_asm (zact_asm.s)
+
+static void test_scan_attrs_random(void)
+{
+    unsigned long i, cases = 0, general = 0;
+    static const r8_u8 attrs[4] = { 0, R8_ATTR_D, R8_ATTR_D | R8_ATTR_S, R8_ATTR_S };
+    for (i = 0; i < 3000; i++) {
+        unsigned j, nv = 3u + rndn(2), tall = rndn(4) == 0, wide = rndn(4) == 0;
+        r8_s16 ys = (r8_s16)rndn(64);
+        r8_u8 *p = (r8_u8 *)&sa_ref;
+        for (j = 0; j < sizeof sa_ref; j++)
+            p[j] = (r8_u8)rnd();
+        for (j = 0; j < nv; j++) {
+            r8_svert *v = &zverts[j];
+            v->x = rnds(-200, 2200);
+            v->y = tall ? rnds(0, 64 * 16) : rnds((r8_s16)(ys * 16 - 100), (r8_s16)(ys * 16 + 200));
+            v->d = wide ? rnds(0, 32767) : rnds(16000, 18000);
+            v->s = rnds(0, 4096);
+            sa_ref.c.vp[j] = &v->x;
+        }
+        if (!r8_scanx_begin(&sa_ref.c, (r8_u8)nv, ys))
+            continue;
+        sa_ref.attrs = attrs[rndn(4)];
+        memcpy(&sa_asm, &sa_ref, sizeof sa_ref);
+        r8_scan_attrs_ref(&sa_ref);
+        r8_scan_attrs(&sa_asm);
+        cases++;
+        general += tall || wide;
+        if (memcmp(&sa_ref, &sa_asm, sizeof sa_ref) != 0) {
+            print_case("r8_scan_attrs", i);
+            unity_fail_int(__LINE__, "r8_scan_attrs differs from the reference", (long)sa_asm.ld.val,
+                           (long)sa_ref.ld.val);
+            return;
+        }
+    }
+    unity_print("r8_scan_attrs: ");
+    unity_print_long((long)cases);
+    unity_print(" scans, tall or wide ");
+    unity_print_long((long)general);
+    unity_print("\n");
+    if (cases < 1500 || general < 300)
+        unity_fail_int(__LINE__, "r8_scan_attrs: too few cases", (long)cases, (long)general);
 }
 
 /* ---- r8_interp_init_sub (zfill.S) against its reference (src/zrows.c):
@@ -1239,6 +1406,8 @@ int main(void)
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);
+    RUN_TEST(test_zband_random);
+    RUN_TEST(test_scan_attrs_random);
     RUN_TEST(test_init_sub_random);
     RUN_TEST(test_attr_first_random);
     return UNITY_END();
