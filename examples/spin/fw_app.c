@@ -72,6 +72,34 @@ int main(int argc, char **argv)
     return 0;
 }
 #else
+/* The renderer built into this firmware (fw_trim.c, FW_RENDER) for this
+ * configuration only (src/render.c: R8_CFG_METHOD): r8_render_defaults'
+ * size, band and cull, PAGE1, no clipper (a mesh scene: a world's
+ * firmware keeps its clipper and the general plan). */
+#if defined(FW_RENDER) && defined(R8_NO_PORTAL)
+#define R8_CFG_METHOD FW_METHOD
+#define R8_CFG_SHADING FW_SHADING
+#define R8_CFG_CULL R8_CULL_NORMAL
+#define R8_CFG_FORMAT R8_FMT_PAGE1
+#define R8_CFG_WIDTH 128
+#define R8_CFG_HEIGHT 64
+#define R8_CFG_BAND 8
+#define R8_CFG_CLIP 0
+#ifdef FW_POOL
+#define R8_CFG_POOL FW_POOL
+#else
+#define R8_CFG_POOL R8_POOL_AUTO
+#endif
+/* and its stream (src/wire.c, built into the AVR firmware): app_defaults' */
+#define R8_TXCFG_FORMAT R8_FMT_PAGE1
+#define R8_TXCFG_WIDTH 128
+#define R8_TXCFG_HEIGHT 64
+#define R8_TXCFG_BAND 8
+#define R8_TXCFG_CODEC R8_CODEC_RLE
+#define R8_TXCFG_FULL 32
+#define R8_TXCFG_DIRTY 1
+#define R8_TXCFG_NPAL 0
+#endif
 #include "fw_trim.c"
 #ifndef FW_RAM
 #define FW_RAM 1
