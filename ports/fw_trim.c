@@ -18,6 +18,11 @@
  *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
+ *                 On AVR also R8_CULL16: render.c's back-face test is
+ *                 r8k_cull alone (16 bits, flash normals), without the
+ *                 32-bit r8_cull_front (564 B); fw_spin_bad proves the
+ *                 eye within |d| <= 1000 units of each object and its
+ *                 radius <= 1023 (r8k_cull's ranges).
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -43,6 +48,10 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #endif
 #define R8_PROJ16
 #define R8_CAM_FIXED
+#if defined(__AVR__) && defined(R8_NO_RT_NORMALS)
+#define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
+                       * flash normals): no r8_cull_front */
+#endif
 #include "proj.c"
 /* 1 unless the demo scene's camera is not turned and no vertex can
  * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
@@ -70,6 +79,13 @@ static int fw_spin_bad(const app_cfg *c)
         }
         if (b > 2040 || o->mesh->radius < 0)
             return 1;
+#ifdef R8_CULL16
+        /* the eye within 16383/16 units of the model origin (r8_tf_frame's
+         * eye16: |R^T d| <= |d|) and every vertex within 1023 units
+         * (the radius bounds them): r8k_cull is always in range */
+        if (b - o->mesh->radius > 1000 || o->mesh->radius > 1023)
+            return 1;
+#endif
     }
     return 0;
 }

@@ -943,6 +943,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
             const r8_s16 *v0 = me->verts + 3u * vi[0];
             int c;
+#ifdef R8_CULL16               /* (ports/fw_trim.c: always in 16 bits) */
+            c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
+            (void)kcull;
+#else
 #ifndef __SDCC                 /* (R8_SDCC_FACE_KERN in r8kern.h) */
             c = -1;
             if (kcull)
@@ -950,6 +954,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             if (c < 0)
 #endif
                 c = r8_cull_front(o, v0, f);
+#endif
             if (!c)
                 continue;
         }
