@@ -313,6 +313,7 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
     return (r8_u16)(n > 0xFFF0u ? 0xFFF0u : n);
 }
 
+#ifndef R8_NO_RT_NORMALS
 /* Is mesh i's normal table shared with an earlier object's? */
 static int mesh_seen(const r8_scene *sc, r8_u8 i)
 {
@@ -322,6 +323,7 @@ static int mesh_seen(const r8_scene *sc, r8_u8 i)
             return 1;
     return 0;
 }
+#endif
 
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
 {
@@ -332,8 +334,10 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
         const r8_mesh *me = sc->objects[i].mesh;
         nv += me->nverts;
         nf += me->nfaces;
+#ifndef R8_NO_RT_NORMALS       /* (else every mesh has its normals: cfg_valid) */
         if (!me->normals && !mesh_seen(sc, i))
             nn += me->nfaces;
+#endif
     }
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;

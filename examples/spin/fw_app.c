@@ -76,7 +76,8 @@ int main(int argc, char **argv)
  * configuration only (src/render.c: R8_CFG_METHOD): r8_render_defaults'
  * size, band and cull, PAGE1, no clipper (a mesh scene: a world's
  * firmware keeps its clipper and the general plan). */
-#if defined(FW_RENDER) && defined(R8_NO_PORTAL)
+#if defined(FW_RENDER) && defined(R8_NO_PORTAL) && !defined(__CC65__)
+/* (not cc65: its "Unreachable code" error on the folded checks) */
 #define R8_CFG_METHOD FW_METHOD
 #define R8_CFG_SHADING FW_SHADING
 #define R8_CFG_CULL R8_CULL_NORMAL
