@@ -219,6 +219,9 @@ static int cfg_valid(const r8_render_cfg *cfg)
 {
     const r8_scene *sc = cfg->scene;
     r8_u32 nf = 0;
+#ifdef R8_CFG_NVERTS
+    r8_u32 nv;
+#endif
     r8_u8 i;
 #ifdef R8_CFG_METHOD
     if (cfg->method != R8_CFG_METHOD || cfg->shading != R8_CFG_SHADING ||
@@ -267,12 +270,22 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
         ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
         return 0;
+#ifdef R8_CFG_NVERTS
+    nv = 0;
+#endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         if (!me || !me->verts || !me->faces || me->nverts > 255)
             return 0;
         nf += me->nfaces;
+#ifdef R8_CFG_NVERTS
+        nv += me->nverts;
+#endif
     }
+#ifdef R8_CFG_NVERTS
+    if (sc->nobjects != R8_CFG_NOBJ || nv != R8_CFG_NVERTS || nf != R8_CFG_NFACES)
+        return 0;      /* the scene this firmware is built for */
+#endif
     if (nf + CFG_CLIP(cfg) >= (r8_u32)R8_FID_END)
         return 0;
     return 1;
@@ -330,6 +343,15 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     const r8_scene *sc = cfg->scene;
     r8_u8 i;
     unsigned nv = 0, nf = 0, o = 0, nn = 0, nid, frame_t, band_t;
+#ifdef R8_CFG_NVERTS
+#ifndef R8_NO_RT_NORMALS
+#error "R8_CFG_NVERTS: with R8_NO_RT_NORMALS only (no normals to plan)"
+#endif
+    nv = R8_CFG_NVERTS;        /* (cfg_valid: the scene's) */
+    nf = R8_CFG_NFACES;
+    i = R8_CFG_NOBJ;
+    (void)sc;
+#else
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         nv += me->nverts;
@@ -339,6 +361,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
             nn += me->nfaces;
 #endif
     }
+#endif
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
     pl->vsh = (r8_u8)(R8_DEPTH(CFG_METHOD(cfg)) || R8_GOURAUD(CFG_SHADING(cfg)) ||
@@ -363,7 +386,7 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     if (R8_TEXTURED(CFG_SHADING(cfg)))
         pl->esize = align_up(sizeof(r8_tact));
 #endif
-    pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
+    pl->obj = o; o += align_up(sizeof(r8_objx) * i);   /* (i: the objects) */
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
     pl->vnorm = o;
 #if R8_W_GOURAUD

@@ -77,7 +77,11 @@ int main(int argc, char **argv)
  * size, band and cull, PAGE1, no clipper (a mesh scene: a world's
  * firmware keeps its clipper and the general plan). */
 #if defined(FW_RENDER) && defined(R8_NO_PORTAL) && !defined(__CC65__)
-/* (not cc65: its "Unreachable code" error on the folded checks) */
+/* (not cc65: its "Unreachable code" error on the folded checks; sdcc's
+ * warning about them is off) */
+#ifdef __SDCC
+#pragma disable_warning 126
+#endif
 #define R8_CFG_METHOD FW_METHOD
 #define R8_CFG_SHADING FW_SHADING
 #define R8_CFG_CULL R8_CULL_NORMAL
@@ -90,6 +94,11 @@ int main(int argc, char **argv)
 #define R8_CFG_POOL FW_POOL
 #else
 #define R8_CFG_POOL R8_POOL_AUTO
+#endif
+#ifdef FW_NVERTS      /* its scene's sizes (ports/scene_strip.py --counts) */
+#define R8_CFG_NOBJ FW_NOBJ
+#define R8_CFG_NVERTS FW_NVERTS
+#define R8_CFG_NFACES FW_NFACES
 #endif
 /* and its stream (src/wire.c, built into the AVR firmware): app_defaults' */
 #define R8_TXCFG_FORMAT R8_FMT_PAGE1
