@@ -65,6 +65,14 @@ static const r8_u8 delim = 0;
 #define TXC_DIRTY(c) ((c)->dirty)
 #define TXC_NPAL(c) ((c)->npal)
 #endif
+/* 1: a last band may be shorter than the others (0: the height is fixed
+ * to a multiple of the band; not an #if: cc65 evaluates those even where
+ * the macros are not defined) */
+#ifdef R8_TXCFG_HEIGHT
+#define TX_PARTIAL (R8_TXCFG_HEIGHT % R8_TXCFG_BAND != 0)
+#else
+#define TX_PARTIAL 1
+#endif
 
 typedef r8_tx_st tx_st;
 
@@ -666,12 +674,10 @@ int r8_tx_band(register r8_tx *tx, const r8_fb *band)
     tx->next_idx = idx + 1u;
     n = tx->band_bytes;
     xn = tx->xn;
-#if !defined(R8_TXCFG_HEIGHT) || R8_TXCFG_HEIGHT % R8_TXCFG_BAND
-    if (TXC_HEIGHT(&tx->cfg) - y0 < TXC_BAND(&tx->cfg)) {
+    if (TX_PARTIAL && TXC_HEIGHT(&tx->cfg) - y0 < TXC_BAND(&tx->cfg)) {
         n = r8_fb_bytes(TXC_FORMAT(&tx->cfg), TXC_WIDTH(&tx->cfg), (r8_s16)(TXC_HEIGHT(&tx->cfg) - y0));
         xn = r8_crc16_xpow(n);
     }
-#endif   /* (else every band is whole: y0 is a multiple of the band) */
     tx->raw_bytes += n;
 #ifdef R8_WIRE_CRC32
     tx->fcrc32 = r8_crc32_update(tx->fcrc32, band->buf, n);
