@@ -69,21 +69,28 @@ static int fw_spin_bad(const app_cfg *c)
     for (i = 0; i < run->scene.nobjects; i++) {
         const r8_object *o = &run->obj[i];
         const r8_s16 *p = &o->pose.x, *q = &run->cam.x;
-        r8_s32 b = o->mesh->radius, d;
+        r8_s16 r = o->mesh->radius;
+        r8_u16 b = 0, d;             /* (16 bits: each term <= 2040) */
         r8_u8 k;
+        if (r < 0 || r > 2040)
+            return 1;
         for (k = 0; k < 3; k++) {
-            d = (r8_s32)p[k] - q[k];
-            if (d < 0)
-                d = -d;
-            b += d;
+            /* |p - q| (up to 65535: unsigned, no overflow) */
+            if (p[k] >= q[k])
+                d = (r8_u16)((r8_u16)p[k] - (r8_u16)q[k]);
+            else
+                d = (r8_u16)((r8_u16)q[k] - (r8_u16)p[k]);
+            if (d > 2040u)
+                return 1;
+            b = (r8_u16)(b + d);
         }
-        if (b > 2040 || o->mesh->radius < 0)
+        if (b + (r8_u16)r > 2040u)
             return 1;
 #ifdef R8_CULL16
         /* the eye within 16383/16 units of the model origin (r8_tf_frame's
          * eye16: |R^T d| <= |d|) and every vertex within 1023 units
          * (the radius bounds them): r8k_cull is always in range */
-        if (b - o->mesh->radius > 1000 || o->mesh->radius > 1023)
+        if (b > 1000u || r > 1023)
             return 1;
 #endif
     }

@@ -584,9 +584,13 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->nbands = pl.nbands;
     st->nheads = pl.nheads;
     st->bsh = -1;
+#if defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    st->bsh = 3;                /* (the demo's band) */
+#else
     for (k = 0; k < 11; k++)
         if (CFG_BAND(cfg) == (1 << k))
             st->bsh = (r8_s16)k;
+#endif
     st->obj = (r8_objx *)(void *)(base + pl.obj);
     st->sv = (r8_s16 *)(void *)(base + pl.sv);
     st->sv_cap = pl.sv_cap;
