@@ -82,7 +82,12 @@ int main(int argc, char **argv)
 #ifdef __SDCC
 #pragma disable_warning 126
 #endif
+#if FW_METHOD == R8_VIS_BSP
+#define R8_CFG_METHOD R8_VIS_PAINTER   /* (vis_bsp.c plans and sets up its
+                                          painter's renderer) */
+#else
 #define R8_CFG_METHOD FW_METHOD
+#endif
 #define R8_CFG_SHADING FW_SHADING
 #define R8_CFG_CULL R8_CULL_NORMAL
 #define R8_CFG_FORMAT R8_FMT_PAGE1
