@@ -18,6 +18,11 @@
  *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
+ *                 On AVR also R8_CULL16: render.c's back-face test is
+ *                 r8k_cull alone (16 bits, flash normals), without the
+ *                 32-bit r8_cull_front (564 B); fw_spin_bad proves the
+ *                 eye within |d| <= 1000 units of each object and its
+ *                 radius <= 1023 (r8k_cull's ranges).
  * The identity tests prove the stream unchanged against the host build,
  * which links the whole library. */
 #ifdef FW_TRIM_LZ77
@@ -43,6 +48,10 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #endif
 #define R8_PROJ16
 #define R8_CAM_FIXED
+#if defined(__AVR__) && defined(R8_NO_RT_NORMALS)
+#define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
+                       * flash normals): no r8_cull_front */
+#endif
 #include "proj.c"
 /* 1 unless the demo scene's camera is not turned and no vertex can
  * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
@@ -60,16 +69,30 @@ static int fw_spin_bad(const app_cfg *c)
     for (i = 0; i < run->scene.nobjects; i++) {
         const r8_object *o = &run->obj[i];
         const r8_s16 *p = &o->pose.x, *q = &run->cam.x;
-        r8_s32 b = o->mesh->radius, d;
+        r8_s16 r = o->mesh->radius;
+        r8_u16 b = 0, d;             /* (16 bits: each term <= 2040) */
         r8_u8 k;
-        for (k = 0; k < 3; k++) {
-            d = (r8_s32)p[k] - q[k];
-            if (d < 0)
-                d = -d;
-            b += d;
-        }
-        if (b > 2040 || o->mesh->radius < 0)
+        if (r < 0 || r > 2040)
             return 1;
+        for (k = 0; k < 3; k++) {
+            /* |p - q| (up to 65535: unsigned, no overflow) */
+            if (p[k] >= q[k])
+                d = (r8_u16)((r8_u16)p[k] - (r8_u16)q[k]);
+            else
+                d = (r8_u16)((r8_u16)q[k] - (r8_u16)p[k]);
+            if (d > 2040u)
+                return 1;
+            b = (r8_u16)(b + d);
+        }
+        if (b + (r8_u16)r > 2040u)
+            return 1;
+#ifdef R8_CULL16
+        /* the eye within 16383/16 units of the model origin (r8_tf_frame's
+         * eye16: |R^T d| <= |d|) and every vertex within 1023 units
+         * (the radius bounds them): r8k_cull is always in range */
+        if (b > 1000u || r > 1023)
+            return 1;
+#endif
     }
     return 0;
 }

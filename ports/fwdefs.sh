@@ -54,6 +54,9 @@ case "$trim" in *R8_NO_PORTAL*) [ "$m" != 17 ] && [ "$s" != 8 ] && [ "$s" != 10 
 # the face-walk kernel (r8k_fwalk) buys the cube ~200 cycles a frame for
 # ~1 KB of flash, so these keep r8_bucket_object's C loop (R8_NO_FWALK)
 case "$s" in 0|4|6|7) trim="$trim -DR8_NO_FWALK" ;; esac
+# a mesh scene: its objects, vertices and faces as constants (the demo
+# firmware's plan, src/render.c R8_CFG_NVERTS; cfg_valid checks them)
+case "$trim" in *R8_NO_PORTAL*) trim="$trim $(python3 ports/scene_strip.py "$s" --counts)" ;; esac
 case "$s" in 4|5) nobj=2 ;; 6|9) nobj=4 ;; *) nobj=1 ;; esac   # objects per built-in scene
 trim="$trim -DR8_DEMO_MAXOBJ=$nobj"
 # O = 0: a world's walls alone, without its movable objects (make bench-portal)

@@ -176,12 +176,14 @@ void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
 
 void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out)
 {
-    out->x = r8_sat16(r8_asr14(r8_mul16(m->m[0], v->x) + r8_mul16(m->m[3], v->y) +
-                               r8_mul16(m->m[6], v->z) + 8192));
-    out->y = r8_sat16(r8_asr14(r8_mul16(m->m[1], v->x) + r8_mul16(m->m[4], v->y) +
-                               r8_mul16(m->m[7], v->z) + 8192));
-    out->z = r8_sat16(r8_asr14(r8_mul16(m->m[2], v->x) + r8_mul16(m->m[5], v->y) +
-                               r8_mul16(m->m[8], v->z) + 8192));
+    /* column k of m with v: a loop (once an object a frame; a third of
+     * the flash of three copies) */
+    r8_s16 *o = &out->x;
+    const r8_s16 *c = m->m;
+    r8_u8 k;
+    for (k = 0; k < 3; k++, c++)
+        o[k] = r8_sat16(r8_asr14(r8_mul16(c[0], v->x) + r8_mul16(c[3], v->y) +
+                                 r8_mul16(c[6], v->z) + 8192));
 }
 
 void r8_mat_apply16(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)

@@ -52,6 +52,43 @@
 #define R8_SHADE_MAX R8_SHADE_GOURAUD
 #endif
 
+/* A firmware whose configuration is fixed at compile time (the demo
+ * firmware, examples/spin/fw_app.c: R8_CFG_METHOD with R8_CFG_SHADING,
+ * _CULL, _FORMAT, _WIDTH, _HEIGHT, _BAND, _CLIP, _POOL): cfg_valid takes
+ * that configuration only, and the plan and set-up fold to constants.
+ * Without R8_CFG_METHOD (the library) every field is read and checked. */
+#ifdef R8_CFG_METHOD
+#define CFG_METHOD(c) R8_CFG_METHOD
+#define CFG_SHADING(c) R8_CFG_SHADING
+#define CFG_CULL(c) R8_CFG_CULL
+#define CFG_FORMAT(c) R8_CFG_FORMAT
+#define CFG_WIDTH(c) R8_CFG_WIDTH
+#define CFG_HEIGHT(c) R8_CFG_HEIGHT
+#define CFG_BAND(c) R8_CFG_BAND
+#define CFG_CLIP(c) R8_CFG_CLIP
+#define CFG_POOL(c) R8_CFG_POOL
+#else
+#define CFG_METHOD(c) ((c)->method)
+#define CFG_SHADING(c) ((c)->shading)
+#define CFG_CULL(c) ((c)->cull)
+#define CFG_FORMAT(c) ((c)->format)
+#define CFG_WIDTH(c) ((c)->width)
+#define CFG_HEIGHT(c) ((c)->height)
+#define CFG_BAND(c) ((c)->band)
+#define CFG_CLIP(c) ((c)->clip)
+#define CFG_POOL(c) ((c)->pool)
+#endif
+/* and, with the normal cull and no clipper, every face draw_face meets
+ * is a mesh face whose rows start at the band's first row or below (no
+ * Judd test): r8k_scanband alone, without r8_scanx_fill (R8_BANDK_ONLY;
+ * r8_scanx_begin stays for the clipped polygons' branch: without it the
+ * painter's band loop is 0.5% slower) */
+#if defined(R8_BANDK) && defined(R8_CFG_CULL) && defined(R8_NO_CLIP)
+#if R8_CFG_CULL == R8_CULL_NORMAL
+#define R8_BANDK_ONLY 1
+#endif
+#endif
+
 void r8_render_defaults(r8_render_cfg *cfg)
 {
     cfg->scene = 0;
@@ -193,22 +230,32 @@ static int cfg_valid(const r8_render_cfg *cfg)
 {
     const r8_scene *sc = cfg->scene;
     r8_u32 nf = 0;
+#ifdef R8_CFG_NVERTS
+    r8_u32 nv;
+#endif
     r8_u8 i;
-    if (!sc || sc->nobjects == 0 || !sc->objects || !method_built(cfg->method) ||
-        cfg->shading > R8_SHADE_MAX || cfg->cull > R8_CULL_JUDD ||
-        cfg->format > R8_FMT_IDX8)
+#ifdef R8_CFG_METHOD
+    if (cfg->method != R8_CFG_METHOD || cfg->shading != R8_CFG_SHADING ||
+        cfg->cull != R8_CFG_CULL || cfg->format != R8_CFG_FORMAT ||
+        cfg->width != R8_CFG_WIDTH || cfg->height != R8_CFG_HEIGHT ||
+        cfg->band != R8_CFG_BAND || cfg->clip != R8_CFG_CLIP || cfg->pool != R8_CFG_POOL)
+        return 0;      /* the one configuration this firmware is built for */
+#endif
+    if (!sc || sc->nobjects == 0 || !sc->objects || !method_built(CFG_METHOD(cfg)) ||
+        CFG_SHADING(cfg) > R8_SHADE_MAX || CFG_CULL(cfg) > R8_CULL_JUDD ||
+        CFG_FORMAT(cfg) > R8_FMT_IDX8)
         return 0;
 #ifdef R8_NO_GOURAUD
-    if (cfg->shading == R8_SHADE_GOURAUD)
+    if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
         return 0;
 #endif
 #ifdef R8_PAGE1_ONLY
-    if (cfg->format != R8_FMT_PAGE1)
+    if (CFG_FORMAT(cfg) != R8_FMT_PAGE1)
         return 0;
 #endif
 #if R8_W_TEXTURE
-    if (cfg->shading == R8_SHADE_TEXTURE) {   /* texture.c */
-        if (cfg->method > R8_VIS_PAINTER || cfg->texfilter > R8_TEXF_BILINEAR ||
+    if (CFG_SHADING(cfg) == R8_SHADE_TEXTURE) {   /* texture.c */
+        if (CFG_METHOD(cfg) > R8_VIS_PAINTER || cfg->texfilter > R8_TEXF_BILINEAR ||
             cfg->persp == 1 || cfg->persp > 64)
             return 0;
         for (i = 0; i < sc->nobjects; i++) {
@@ -225,22 +272,32 @@ static int cfg_valid(const r8_render_cfg *cfg)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
             return 0;     /* this build takes meshes with their normals only */
 #endif
-    if (cfg->width < 8 || cfg->width > 1024 || cfg->height < 8 || cfg->height > 1024)
+    if (CFG_WIDTH(cfg) < 8 || CFG_WIDTH(cfg) > 1024 || CFG_HEIGHT(cfg) < 8 || CFG_HEIGHT(cfg) > 1024)
         return 0;
-    if (cfg->band < 1 || cfg->band > cfg->height)
+    if (CFG_BAND(cfg) < 1 || CFG_BAND(cfg) > CFG_HEIGHT(cfg))
         return 0;
-    if (cfg->format == R8_FMT_PAGE1 && ((cfg->band & 7) || (cfg->height & 7)))
+    if (CFG_FORMAT(cfg) == R8_FMT_PAGE1 && ((CFG_BAND(cfg) & 7) || (CFG_HEIGHT(cfg) & 7)))
         return 0;
-    if ((cfg->method == R8_VIS_BLOCK || cfg->method == R8_VIS_BLOCKMASK) &&
-        ((cfg->band & 3) || (cfg->height & 3)))
+    if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
+        ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
         return 0;
+#ifdef R8_CFG_NVERTS
+    nv = 0;
+#endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         if (!me || !me->verts || !me->faces || me->nverts > 255)
             return 0;
         nf += me->nfaces;
+#ifdef R8_CFG_NVERTS
+        nv += me->nverts;
+#endif
     }
-    if (nf + cfg->clip >= (r8_u32)R8_FID_END)
+#ifdef R8_CFG_NVERTS
+    if (sc->nobjects != R8_CFG_NOBJ || nv != R8_CFG_NVERTS || nf != R8_CFG_NFACES)
+        return 0;      /* the scene this firmware is built for */
+#endif
+    if (nf + CFG_CLIP(cfg) >= (r8_u32)R8_FID_END)
         return 0;
     return 1;
 }
@@ -280,6 +337,7 @@ r8_u16 r8_vis_sbuf_nodes(const r8_render_cfg *cfg)
     return (r8_u16)(n > 0xFFF0u ? 0xFFF0u : n);
 }
 
+#ifndef R8_NO_RT_NORMALS
 /* Is mesh i's normal table shared with an earlier object's? */
 static int mesh_seen(const r8_scene *sc, r8_u8 i)
 {
@@ -289,33 +347,46 @@ static int mesh_seen(const r8_scene *sc, r8_u8 i)
             return 1;
     return 0;
 }
+#endif
 
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
 {
     const r8_scene *sc = cfg->scene;
     r8_u8 i;
     unsigned nv = 0, nf = 0, o = 0, nn = 0, nid, frame_t, band_t;
+#ifdef R8_CFG_NVERTS
+#ifndef R8_NO_RT_NORMALS
+#error "R8_CFG_NVERTS: with R8_NO_RT_NORMALS only (no normals to plan)"
+#endif
+    nv = R8_CFG_NVERTS;        /* (cfg_valid: the scene's) */
+    nf = R8_CFG_NFACES;
+    i = R8_CFG_NOBJ;
+    (void)sc;
+#else
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         nv += me->nverts;
         nf += me->nfaces;
+#ifndef R8_NO_RT_NORMALS       /* (else every mesh has its normals: cfg_valid) */
         if (!me->normals && !mesh_seen(sc, i))
             nn += me->nfaces;
+#endif
     }
+#endif
     pl->nverts = (r8_u16)nv;
     pl->nfaces = (r8_u16)nf;
-    pl->vsh = (r8_u8)(R8_DEPTH(cfg->method) || R8_GOURAUD(cfg->shading) ||
-                      R8_TEXTURED(cfg->shading) ? 2 : 1);
+    pl->vsh = (r8_u8)(R8_DEPTH(CFG_METHOD(cfg)) || R8_GOURAUD(CFG_SHADING(cfg)) ||
+                      R8_TEXTURED(CFG_SHADING(cfg)) ? 2 : 1);
     pl->fast = (r8_u8)(pl->vsh == 1);
-    pl->nbands = (r8_u16)(((unsigned)cfg->height + (unsigned)cfg->band - 1u) / (unsigned)cfg->band);
-    pl->nheads = R8_PAINTER(cfg->method) ? R8_JEFF_BUCKETS : pl->nbands;
+    pl->nbands = (r8_u16)(((unsigned)CFG_HEIGHT(cfg) + (unsigned)CFG_BAND(cfg) - 1u) / (unsigned)CFG_BAND(cfg));
+    pl->nheads = R8_PAINTER(CFG_METHOD(cfg)) ? R8_JEFF_BUCKETS : pl->nbands;
     /* a clipped polygon adds at most 5 intersections */
-    pl->sv_cap = (r8_u16)(nv + 5u * cfg->clip);
-    nid = nf + cfg->clip;
+    pl->sv_cap = (r8_u16)(nv + 5u * CFG_CLIP(cfg));
+    nid = nf + CFG_CLIP(cfg);
 #ifdef R8_NO_POOL
     pl->npool = 0;                  /* cfg->pool is taken as 0 */
 #else
-    pl->npool = cfg->pool;
+    pl->npool = CFG_POOL(cfg);
 #endif
     if (pl->npool > (nf + 1u) / 2u)
         pl->npool = (r8_u8)((nf + 1u) / 2u);
@@ -323,32 +394,32 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
         pl->npool = R8_POOL_MAX;
     pl->esize = align_up(pl->fast ? sizeof(r8_actx) : sizeof(r8_act));
 #if R8_W_TEXTURE
-    if (R8_TEXTURED(cfg->shading))
+    if (R8_TEXTURED(CFG_SHADING(cfg)))
         pl->esize = align_up(sizeof(r8_tact));
 #endif
-    pl->obj = o; o += align_up(sizeof(r8_objx) * sc->nobjects);
+    pl->obj = o; o += align_up(sizeof(r8_objx) * i);   /* (i: the objects) */
     pl->sv = o; o += align_up(((unsigned)pl->sv_cap << pl->vsh) * 2u);
     pl->vnorm = o;
 #if R8_W_GOURAUD
-    if (cfg->shading == R8_SHADE_GOURAUD)
+    if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
         o += align_up(6u * nv);
 #endif
     pl->norms = o; o += align_up(6u * nn);
     pl->next = o; o += align_up(sizeof(r8_fid) * nid);
     pl->heads = o;                  /* band buckets live through the frame */
-    if (cfg->method != R8_VIS_PAINTER)
+    if (CFG_METHOD(cfg) != R8_VIS_PAINTER)
         o += align_up(sizeof(r8_fid) * pl->nbands);
     pl->slot = o;
     if (pl->npool)
         o += align_up(nid);
     pl->ftop = o;         /* painter's with a pool: each face's first band */
-    if (pl->npool && R8_PAINTER(cfg->method))
+    if (pl->npool && R8_PAINTER(CFG_METHOD(cfg)))
         o += align_up(nid);
-    pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * cfg->clip);
+    pl->cpoly = o; o += align_up(sizeof(r8_cpoly) * CFG_CLIP(cfg));
 #if R8_W_TEXTURE
     pl->cuv = o;
-    if (R8_TEXTURED(cfg->shading))
-        o += align_up(2u * R8_CUV_STRIDE * cfg->clip);
+    if (R8_TEXTURED(CFG_SHADING(cfg)))
+        o += align_up(2u * R8_CUV_STRIDE * CFG_CLIP(cfg));
 #endif
     /* One region for memory that is never live at the same time: the
      * sort buckets and the clipper's polygons (while the frame is set
@@ -358,11 +429,11 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->clipbuf = o;
     frame_t = 0;
 #ifndef R8_NO_CLIP
-    if (cfg->clip)
+    if (CFG_CLIP(cfg))
         frame_t = align_up(R8_CLIP_BYTES);
 #endif
 #if R8_W_PAINTER
-    if (cfg->method == R8_VIS_PAINTER) {
+    if (CFG_METHOD(cfg) == R8_VIS_PAINTER) {
         /* depth buckets: only while the frame is set up */
         pl->heads = o;
         pl->clipbuf = o + align_up(sizeof(r8_fid) * pl->nheads);
@@ -374,18 +445,18 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     pl->depth = pl->pool + pl->esize * pl->npool;
     pl->snode = pl->depth;
 #if R8_W_DEPTH
-    if (cfg->method >= R8_VIS_Z8)
+    if (CFG_METHOD(cfg) >= R8_VIS_Z8)
         pl->snode += align_up(r8_vis_depth_bytes(cfg));
 #endif
     pl->shead = pl->snode;
 #if R8_W_SBUF
-    if (cfg->method == R8_VIS_SBUF)
+    if (CFG_METHOD(cfg) == R8_VIS_SBUF)
         pl->shead += align_up(sizeof(r8_snode) * r8_vis_sbuf_nodes(cfg));
 #endif
     band_t = pl->shead - o;
 #if R8_W_SBUF
-    if (cfg->method == R8_VIS_SBUF)
-        band_t += align_up(2u * (unsigned)cfg->band);
+    if (CFG_METHOD(cfg) == R8_VIS_SBUF)
+        band_t += align_up(2u * (unsigned)CFG_BAND(cfg));
 #endif
     o += frame_t > band_t ? frame_t : band_t;
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
@@ -502,30 +573,34 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->state = st;
     sc = cfg->scene;
     st->scene = sc;
-    st->width = cfg->width;
-    st->height = cfg->height;
+    st->width = CFG_WIDTH(cfg);
+    st->height = CFG_HEIGHT(cfg);
     st->nverts = pl.nverts;
     st->nfaces = pl.nfaces;
     st->vsh = pl.vsh;
     st->fast = pl.fast;
-    st->judd = (r8_u8)(cfg->cull == R8_CULL_JUDD);
-    st->method = cfg->method;
-    st->shading = cfg->shading;
+    st->judd = (r8_u8)(CFG_CULL(cfg) == R8_CULL_JUDD);
+    st->method = CFG_METHOD(cfg);
+    st->shading = CFG_SHADING(cfg);
     st->nbands = pl.nbands;
     st->nheads = pl.nheads;
     st->bsh = -1;
+#if defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    st->bsh = 3;                /* (the demo's band) */
+#else
     for (k = 0; k < 11; k++)
-        if (cfg->band == (1 << k))
+        if (CFG_BAND(cfg) == (1 << k))
             st->bsh = (r8_s16)k;
+#endif
     st->obj = (r8_objx *)(void *)(base + pl.obj);
     st->sv = (r8_s16 *)(void *)(base + pl.sv);
     st->sv_cap = pl.sv_cap;
     st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
     st->next = (r8_fid *)(void *)(base + pl.next);
     st->slot = pl.npool ? base + pl.slot : 0;
-    st->ftop = pl.npool && R8_PAINTER(cfg->method) ? base + pl.ftop : 0;
+    st->ftop = pl.npool && R8_PAINTER(CFG_METHOD(cfg)) ? base + pl.ftop : 0;
     st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
-    st->nclip = cfg->clip;
+    st->nclip = CFG_CLIP(cfg);
     st->heads = (r8_fid *)(void *)(base + pl.heads);
     st->clipbuf = base + pl.clipbuf;
     st->tmp = base + pl.tmp;
@@ -533,21 +608,21 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->esize = pl.esize;
     st->npool = pl.npool;
     st->depth = base + pl.depth;
-    st->depth_bytes = R8_DEPTH(cfg->method) ? r8_vis_depth_bytes(cfg) : 0;
+    st->depth_bytes = R8_DEPTH(CFG_METHOD(cfg)) ? r8_vis_depth_bytes(cfg) : 0;
     st->snode = (r8_snode *)(void *)(base + pl.snode);
-    st->nsnode = R8_SBUF(cfg->method) ? r8_vis_sbuf_nodes(cfg) : 0;
+    st->nsnode = R8_SBUF(CFG_METHOD(cfg)) ? r8_vis_sbuf_nodes(cfg) : 0;
     st->shead = (r8_u16 *)(void *)(base + pl.shead);
     st->attrs = 0;
 #if R8_W_DEPTH
-    if (cfg->method >= R8_VIS_Z8)
+    if (CFG_METHOD(cfg) >= R8_VIS_Z8)
         st->attrs |= R8_ATTR_D;
 #endif
 #if R8_W_GOURAUD
-    if (cfg->shading == R8_SHADE_GOURAUD)
+    if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
         st->attrs |= R8_ATTR_S;
 #endif
 #if R8_W_TEXTURE
-    if (R8_TEXTURED(cfg->shading))
+    if (R8_TEXTURED(CFG_SHADING(cfg)))
         st->attrs |= R8_ATTR_D;      /* vertex 1/z for perspective */
     st->cuv = (r8_s16 *)(void *)(base + pl.cuv);
     st->texfilter = cfg->texfilter;
@@ -559,8 +634,8 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->nclipped = 0;
     st->pool_used = 0;
     st->pool_free = R8_NO_SLOT;
-    st->cam.cx = (r8_s16)(cfg->width * 8);
-    st->cam.cy = (r8_s16)(cfg->height * 8);
+    st->cam.cx = (r8_s16)(CFG_WIDTH(cfg) * 8);
+    st->cam.cy = (r8_s16)(CFG_HEIGHT(cfg) * 8);
 #ifndef R8_NO_RT_NORMALS
     norms = (r8_s16 *)(void *)(base + pl.norms);
 #endif
@@ -594,7 +669,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         }
 #endif
 #ifndef R8_NO_GOURAUD
-        if (cfg->shading == R8_SHADE_GOURAUD)
+        if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
             vertex_normals(st, me, o);
 #endif
     }
@@ -910,6 +985,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         if (normal) {          /* 16-bit test (r8k_cull), else 32-bit */
             const r8_s16 *v0 = me->verts + 3u * vi[0];
             int c;
+#ifdef R8_CULL16               /* (ports/fw_trim.c: always in 16 bits) */
+            c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
+            (void)kcull;
+#else
 #ifndef __SDCC                 /* (R8_SDCC_FACE_KERN in r8kern.h) */
             c = -1;
             if (kcull)
@@ -917,6 +996,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             if (c < 0)
 #endif
                 c = r8_cull_front(o, v0, f);
+#endif
             if (!c)
                 continue;
         }
@@ -1031,7 +1111,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     r8_tf_frame(st, cam);
     /* with the normal cull, vertices are transformed as front faces need
      * them (a closed mesh shows about half its faces) */
-    r8_tf_vertices(st, r->cfg.cull == R8_CULL_NORMAL);
+    r8_tf_vertices(st, CFG_CULL(&r->cfg) == R8_CULL_NORMAL);
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
     /* faces last to first, each put at the front of its bucket: every
@@ -1319,11 +1399,16 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     {
         /* r8_scanx_fill's page-1 case (y1 is never below the band) */
         r8_s16 lim = c->ybot < y1 ? c->ybot : y1;
+#ifdef R8_BANDK_ONLY
+        if (c->y < lim)        /* (c->y >= y0: face_begin, or the band above) */
+            r8k_scanband(c, fb, lim, e->level);
+#else
         if (c->y >= y0 && (!st->judd || c->front)) {
             if (c->y < lim)
                 r8k_scanband(c, fb, lim, e->level);
         } else
             r8_scanx_fill(c, y1, st->judd, fb, e->level);
+#endif
     }
 #else
         r8_scanx_fill(c, y1, st->judd, fb, e->level);

@@ -101,9 +101,13 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
             d[k] = -d[k];
         rot_offset(&r, d, &o->eye, 1);       /* R^T (camera - position) */
         o->eye16 = 1;
+#ifndef R8_CULL16       /* (ports/fw_trim.c: proven within 16 bits) */
         for (k = 0; k < 3; k++)
             if ((r8_u32)(oe[k] + 16383) > 32766UL)
                 o->eye16 = 0;
+#else
+        (void)oe;
+#endif
         if (st->shading != R8_SHADE_FLAT)
             r8_mat_apply_t14(&r, &sc->light, &o->light);
     }

@@ -40,6 +40,40 @@
 
 static const r8_u8 delim = 0;
 
+/* A firmware whose stream is fixed at compile time (the demo firmware,
+ * examples/spin/fw_app.c: R8_TXCFG_FORMAT with _WIDTH, _HEIGHT, _BAND,
+ * _CODEC, _FULL, _DIRTY, _NPAL): cfg_ok takes that configuration only
+ * (r8_tx_init stores no other), and the sizes, the FRAME_START packet
+ * and the band checks fold to constants.  Without it (the library) every
+ * field is read. */
+#ifdef R8_TXCFG_FORMAT
+#define TXC_FORMAT(c) R8_TXCFG_FORMAT
+#define TXC_WIDTH(c) R8_TXCFG_WIDTH
+#define TXC_HEIGHT(c) R8_TXCFG_HEIGHT
+#define TXC_BAND(c) R8_TXCFG_BAND
+#define TXC_CODEC(c) R8_TXCFG_CODEC
+#define TXC_FULL_PERIOD(c) R8_TXCFG_FULL
+#define TXC_DIRTY(c) R8_TXCFG_DIRTY
+#define TXC_NPAL(c) R8_TXCFG_NPAL
+#else
+#define TXC_FORMAT(c) ((c)->format)
+#define TXC_WIDTH(c) ((c)->width)
+#define TXC_HEIGHT(c) ((c)->height)
+#define TXC_BAND(c) ((c)->band)
+#define TXC_CODEC(c) ((c)->codec)
+#define TXC_FULL_PERIOD(c) ((c)->full_period)
+#define TXC_DIRTY(c) ((c)->dirty)
+#define TXC_NPAL(c) ((c)->npal)
+#endif
+/* 1: a last band may be shorter than the others (0: the height is fixed
+ * to a multiple of the band; not an #if: cc65 evaluates those even where
+ * the macros are not defined) */
+#ifdef R8_TXCFG_HEIGHT
+#define TX_PARTIAL (R8_TXCFG_HEIGHT % R8_TXCFG_BAND != 0)
+#else
+#define TX_PARTIAL 1
+#endif
+
 typedef r8_tx_st tx_st;
 
 /* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
@@ -190,37 +224,44 @@ static int tx_more(r8_u8 *b, const r8_u8 *src, unsigned n, unsigned *len)
 
 static int cfg_ok(const r8_tx_cfg *cfg)
 {
+#ifdef R8_TXCFG_FORMAT
+    if (cfg->format != R8_TXCFG_FORMAT || cfg->width != R8_TXCFG_WIDTH ||
+        cfg->height != R8_TXCFG_HEIGHT || cfg->band != R8_TXCFG_BAND ||
+        cfg->codec != R8_TXCFG_CODEC || cfg->full_period != R8_TXCFG_FULL ||
+        cfg->dirty != R8_TXCFG_DIRTY || cfg->npal != R8_TXCFG_NPAL)
+        return 0;      /* the one stream this firmware is built for */
+#endif
 #ifdef TX_MORE
-    if (cfg->format > R8_FMT_IDX8 ||
-        (cfg->codec >= R8_CODEC_COUNT && cfg->codec != R8_CODEC_BEST))
+    if (TXC_FORMAT(cfg) > R8_FMT_IDX8 ||
+        (TXC_CODEC(cfg) >= R8_CODEC_COUNT && TXC_CODEC(cfg) != R8_CODEC_BEST))
         return 0;
 #ifdef R8_NO_HUFF
-    if (cfg->codec == R8_CODEC_HUFF)
+    if (TXC_CODEC(cfg) == R8_CODEC_HUFF)
         return 0;
 #endif
 #ifdef R8_NO_LZW
-    if (cfg->codec == R8_CODEC_LZW)
+    if (TXC_CODEC(cfg) == R8_CODEC_LZW)
         return 0;
 #endif
 #else
-    if (cfg->format > R8_FMT_IDX8 || cfg->codec > R8_CODEC_LZ77)
+    if (TXC_FORMAT(cfg) > R8_FMT_IDX8 || TXC_CODEC(cfg) > R8_CODEC_LZ77)
         return 0;
 #endif
 #ifdef R8_NO_RLE
-    if (cfg->codec == R8_CODEC_RLE)
+    if (TXC_CODEC(cfg) == R8_CODEC_RLE)
         return 0;
 #endif
 #ifdef R8_NO_LZ77
-    if (cfg->codec == R8_CODEC_LZ77)
+    if (TXC_CODEC(cfg) == R8_CODEC_LZ77)
         return 0;
 #endif
-    if (cfg->width <= 0 || cfg->height <= 0 || cfg->band <= 0 ||
-        cfg->width > R8_WIRE_MAX_DIM || cfg->height > R8_WIRE_MAX_DIM ||
-        cfg->band > cfg->height)
+    if (TXC_WIDTH(cfg) <= 0 || TXC_HEIGHT(cfg) <= 0 || TXC_BAND(cfg) <= 0 ||
+        TXC_WIDTH(cfg) > R8_WIRE_MAX_DIM || TXC_HEIGHT(cfg) > R8_WIRE_MAX_DIM ||
+        TXC_BAND(cfg) > TXC_HEIGHT(cfg))
         return 0;
-    if (cfg->format == R8_FMT_PAGE1 && (cfg->band & 7))
+    if (TXC_FORMAT(cfg) == R8_FMT_PAGE1 && (TXC_BAND(cfg) & 7))
         return 0;
-    if (cfg->npal && !cfg->palette)
+    if (TXC_NPAL(cfg) && !cfg->palette)
         return 0;
     return 1;
 }
@@ -230,11 +271,11 @@ unsigned r8_tx_band_bytes(const r8_tx_cfg *cfg)
     unsigned b, w;
     if (!cfg_ok(cfg))
         return 0;
-    b = (unsigned)cfg->band;   /* both <= R8_WIRE_MAX_DIM */
-    w = (unsigned)cfg->width;
-    if (cfg->format == R8_FMT_PAGE1)
+    b = (unsigned)TXC_BAND(cfg);   /* both <= R8_WIRE_MAX_DIM */
+    w = (unsigned)TXC_WIDTH(cfg);
+    if (TXC_FORMAT(cfg) == R8_FMT_PAGE1)
         b = (b + 7u) >> 3;
-    if (cfg->format == R8_FMT_ROW1)
+    if (TXC_FORMAT(cfg) == R8_FMT_ROW1)
         w = (w + 7u) >> 3;
     /* b * w may exceed an unsigned on 16-bit targets */
     if (b > R8_WIRE_MAX_BAND / w)
@@ -247,7 +288,8 @@ unsigned r8_tx_band_bytes(const r8_tx_cfg *cfg)
  * constant expressions need, costs a multiply on the 8-bit targets.) */
 static unsigned tx_pkt_bytes(const r8_tx_cfg *cfg, unsigned bb)
 {
-    unsigned p = 3u * (unsigned)cfg->npal + R8_WIRE_START_BYTES;
+    unsigned p = 3u * (unsigned)TXC_NPAL(cfg) + R8_WIRE_START_BYTES;
+    (void)cfg;         /* (a fixed stream: no field read) */
     if (!bb)
         return 0;
     if (bb + R8_WIRE_BAND_HDR > p)
@@ -260,7 +302,7 @@ unsigned r8_tx_scratch(const r8_tx_cfg *cfg)
     unsigned p = tx_pkt_bytes(cfg, r8_tx_band_bytes(cfg));
     if (!p)
         return 0;
-    return p + 4u * R8_WIRE_NBANDS(cfg->height, cfg->band);
+    return p + 4u * R8_WIRE_NBANDS(TXC_HEIGHT(cfg), TXC_BAND(cfg));
 }
 
 int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
@@ -278,7 +320,7 @@ int r8_tx_init(r8_tx *tx, const r8_tx_cfg *cfg, r8_u8 *scratch,
     tx->put = put;
     tx->ctx = ctx;
     tx->band_bytes = r8_tx_band_bytes(cfg);
-    tx->nbands = R8_WIRE_NBANDS(cfg->height, cfg->band);
+    tx->nbands = R8_WIRE_NBANDS(TXC_HEIGHT(cfg), TXC_BAND(cfg));
     tx->pkt_size = tx_pkt_bytes(cfg, tx->band_bytes);
     tx->pkt = scratch;
     tx->fp = scratch + tx->pkt_size;
@@ -338,9 +380,9 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     tx_st s;
     if (tx->in_frame)
         return R8_E_ARG;
-    if (tx->cfg.full_period && tx->since_full >= tx->cfg.full_period)
+    if (TXC_FULL_PERIOD(&tx->cfg) && tx->since_full >= TXC_FULL_PERIOD(&tx->cfg))
         tx->want_full = 1;
-    tx->full = (r8_u8)(tx->want_full || !tx->cfg.dirty);
+    tx->full = (r8_u8)(tx->want_full || !TXC_DIRTY(&tx->cfg));
     if (tx->full) {
         tx->want_full = 0;
         tx->since_full = 0;
@@ -363,20 +405,24 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
     /* the CRC of the first 3 bytes of this frame's BAND packets:
      * R8_PKT_BAND (0xC1B2 from 0xFFFF) and the frame number */
     tx->hcrc = r8_crc16_update(0xC1B2u, p + 2, 2);
-    put16(p + 4, (unsigned)tx->cfg.width);
-    put16(p + 6, (unsigned)tx->cfg.height);
-    p[8] = tx->cfg.format;
-    put16(p + 9, (unsigned)tx->cfg.band);
-    p[11] = tx->cfg.codec;
+    put16(p + 4, (unsigned)TXC_WIDTH(&tx->cfg));
+    put16(p + 6, (unsigned)TXC_HEIGHT(&tx->cfg));
+    p[8] = TXC_FORMAT(&tx->cfg);
+    put16(p + 9, (unsigned)TXC_BAND(&tx->cfg));
+    p[11] = TXC_CODEC(&tx->cfg);
 #ifdef TX_MORE
     if (p[11] == R8_CODEC_BEST)
         p[11] = R8_CODEC_RAW; /* no one codec: each BAND says its own */
 #endif
     p[12] = (r8_u8)(tx->full ? R8_FLAG_FULL : 0);
-    p[13] = tx->cfg.npal;
-    for (k = 0; k < 3u * tx->cfg.npal; k++)
+    p[13] = TXC_NPAL(&tx->cfg);
+#if !defined(R8_TXCFG_NPAL) || R8_TXCFG_NPAL > 0
+    for (k = 0; k < 3u * TXC_NPAL(&tx->cfg); k++)
         p[R8_WIRE_START_BYTES + k] = tx->cfg.palette[k];
-    tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * tx->cfg.npal, 1);
+#else
+    (void)k;
+#endif
+    tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * TXC_NPAL(&tx->cfg), 1);
     return R8_OK;
 }
 
@@ -539,7 +585,7 @@ static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n
     b[0] = R8_PKT_BAND;
     PUT16(b + 1, tx->frame);
     PUT16(b + 3, y0);
-    b[5] = tx->cfg.codec;
+    b[5] = TXC_CODEC(&tx->cfg);
 #ifndef R8_NO_RLE
     if (b[5] == R8_CODEC_RLE) {
         s.pkt = s.code = tx->pkt;
@@ -614,22 +660,22 @@ int r8_tx_band(register r8_tx *tx, const r8_fb *band)
     r8_s16 y0 = band->y0;
     r8_u8 *fp, changed;
     r8_u16 xn;
-    if (!tx->in_frame || y0 < 0 || y0 >= tx->cfg.height ||
-        band->width != tx->cfg.width || band->format != tx->cfg.format)
+    if (!tx->in_frame || y0 < 0 || y0 >= TXC_HEIGHT(&tx->cfg) ||
+        band->width != TXC_WIDTH(&tx->cfg) || band->format != TXC_FORMAT(&tx->cfg))
         return R8_E_ARG;
     if (y0 == tx->next_y) {
         idx = tx->next_idx;
     } else {
-        if (y0 % tx->cfg.band)
+        if (y0 % TXC_BAND(&tx->cfg))
             return R8_E_ARG;
-        idx = (unsigned)y0 / (unsigned)tx->cfg.band;
+        idx = (unsigned)y0 / (unsigned)TXC_BAND(&tx->cfg);
     }
-    tx->next_y = (r8_s16)(y0 + tx->cfg.band);
+    tx->next_y = (r8_s16)(y0 + TXC_BAND(&tx->cfg));
     tx->next_idx = idx + 1u;
     n = tx->band_bytes;
     xn = tx->xn;
-    if (tx->cfg.height - y0 < tx->cfg.band) {
-        n = r8_fb_bytes(tx->cfg.format, tx->cfg.width, (r8_s16)(tx->cfg.height - y0));
+    if (TX_PARTIAL && TXC_HEIGHT(&tx->cfg) - y0 < TXC_BAND(&tx->cfg)) {
+        n = r8_fb_bytes(TXC_FORMAT(&tx->cfg), TXC_WIDTH(&tx->cfg), (r8_s16)(TXC_HEIGHT(&tx->cfg) - y0));
         xn = r8_crc16_xpow(n);
     }
     tx->raw_bytes += n;

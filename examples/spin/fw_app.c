@@ -72,6 +72,49 @@ int main(int argc, char **argv)
     return 0;
 }
 #else
+/* The renderer built into this firmware (fw_trim.c, FW_RENDER) for this
+ * configuration only (src/render.c: R8_CFG_METHOD): r8_render_defaults'
+ * size, band and cull, PAGE1, no clipper (a mesh scene: a world's
+ * firmware keeps its clipper and the general plan). */
+#if defined(FW_RENDER) && defined(R8_NO_PORTAL) && !defined(__CC65__)
+/* (not cc65: its "Unreachable code" error on the folded checks; sdcc's
+ * warning about them is off) */
+#ifdef __SDCC
+#pragma disable_warning 126
+#endif
+#if FW_METHOD == R8_VIS_BSP
+#define R8_CFG_METHOD R8_VIS_PAINTER   /* (vis_bsp.c plans and sets up its
+                                          painter's renderer) */
+#else
+#define R8_CFG_METHOD FW_METHOD
+#endif
+#define R8_CFG_SHADING FW_SHADING
+#define R8_CFG_CULL R8_CULL_NORMAL
+#define R8_CFG_FORMAT R8_FMT_PAGE1
+#define R8_CFG_WIDTH 128
+#define R8_CFG_HEIGHT 64
+#define R8_CFG_BAND 8
+#define R8_CFG_CLIP 0
+#ifdef FW_POOL
+#define R8_CFG_POOL FW_POOL
+#else
+#define R8_CFG_POOL R8_POOL_AUTO
+#endif
+#ifdef FW_NVERTS      /* its scene's sizes (ports/scene_strip.py --counts) */
+#define R8_CFG_NOBJ FW_NOBJ
+#define R8_CFG_NVERTS FW_NVERTS
+#define R8_CFG_NFACES FW_NFACES
+#endif
+/* and its stream (src/wire.c, built into the AVR firmware): app_defaults' */
+#define R8_TXCFG_FORMAT R8_FMT_PAGE1
+#define R8_TXCFG_WIDTH 128
+#define R8_TXCFG_HEIGHT 64
+#define R8_TXCFG_BAND 8
+#define R8_TXCFG_CODEC R8_CODEC_RLE
+#define R8_TXCFG_FULL 32
+#define R8_TXCFG_DIRTY 1
+#define R8_TXCFG_NPAL 0
+#endif
 #include "fw_trim.c"
 #ifndef FW_RAM
 #define FW_RAM 1
