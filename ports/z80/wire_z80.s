@@ -264,6 +264,20 @@ _r8_tx_zeros:
 ;; r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
 ;;   s HL, o DE, p and k on the stack -> A (the count)
 ;; r8_tx_st: +0 crc (low, high), +2 f1, +3 f2, +6 code, +8 g.
+        .macro  SCANV           ; 4 compares with v (A), HL on
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        .endm
 _r8_tx_run:
         push    hl
         pop     iy              ; IY = s
@@ -284,18 +298,45 @@ _r8_tx_run:
         inc     hl              ; p + 3
         ld      c, a            ; v
         ld      a, b
-        sub     a, #3
-        ld      b, a            ; the bytes left to look at: k - 3
+        sub     a, #3           ; the bytes left to look at: k - 3
+        jr      z, scanv_cnt
+        ;; 16 compares unrolled a round (~22 T a byte; a djnz loop took
+        ;; 33): the first round enters the run at its (k - 3) mod 16th
+        ;; compare from the end (through the stack and ret)
+        push    de              ; o
+        ld      b, a
+        neg
+        and     a, #0x0F        ; the compares the first round skips
+        add     a, a
+        add     a, a            ; (4 bytes each)
+        add     a, #<scanv
+        ld      e, a
+        ld      a, #>scanv
+        adc     a, #0
+        ld      d, a
+        push    de
+        ld      a, b
+        add     a, #15
+        rrca
+        rrca
+        rrca
+        rrca
+        and     a, #0x0F
+        ld      b, a            ; the rounds: (k - 3 + 15) / 16 (k <= 127)
         ld      a, c
-        jr      z, 2$
-1$:     cp      a, (hl)
-        jr      nz, 2$
-        inc     hl
-        djnz    1$
-2$:     ld      hl, #4          ; the count: k - left
+        ret                     ; into the round
+scanv:  SCANV
+        SCANV
+        SCANV
+        SCANV
+        djnz    scanv
+scanv_out:
+        pop     de              ; o
+scanv_cnt:
+        ld      a, l            ; the count: HL - p (< 128)
+        ld      hl, #2
         add     hl, sp
-        ld      a, (hl)
-        sub     a, b
+        sub     a, (hl)
         ld      b, a            ; B = count, C = v
         ex      de, hl
         ld      (hl), b         ; o[0] = count
