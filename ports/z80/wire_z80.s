@@ -423,6 +423,12 @@ scanv_cnt:
 ;; (g = (g ^ Pb) * x^(8L) ^ Pa) and Fletcher sums; every 0x00 linked into
 ;; the COBS chain unless it has stopped (bit 7 of the result: a block got
 ;; too long, the caller undoes the chain).
+        .macro  LITPOS          ; p[i + 1] = p[i] (in A)? HL = p + i on
+        inc     hl
+        cp      a, (hl)
+        call    z, litcand
+        ld      a, (hl)
+        .endm
 _r8_tx_lit:
         push    hl
         pop     iy              ; IY = s
@@ -440,27 +446,65 @@ _r8_tx_lit:
         ld      c, (hl)         ; c
         ex      de, hl          ; HL = p
         push    hl
-        ld      a, b            ; scan: the first run of 3 among k positions
-        or      a, a
-        jr      z, 4$
-        ld      a, (hl)         ; p[i]
-1$:     inc     hl
-        cp      a, (hl)         ; p[i + 1] = p[i]?
-        jr      z, 3$
-2$:     ld      a, (hl)
-        djnz    1$
-        jr      4$
-3$:     inc     hl              ; p[i + 2] too?
+        ld      a, b            ; scan: the first run of 3 among k positions,
+        or      a, a            ; 16 unrolled a round (~31 T a position; a
+        jp      z, lit_scanned  ; djnz loop took 40), the first round
+        neg                     ; entered at its k mod 16th position from
+        and     a, #0x0F        ; the end (through the stack and ret)
+        ld      e, a
+        add     a, a
+        add     a, e
+        add     a, a            ; (6 bytes each)
+        add     a, #<litscan
+        ld      e, a
+        ld      a, #>litscan
+        adc     a, #0
+        ld      d, a
+        ld      a, b
+        add     a, #15
+        rrca
+        rrca
+        rrca
+        rrca
+        and     a, #0x0F
+        ld      b, a            ; the rounds: (k + 15) / 16 (k <= 127)
+        ld      a, (hl)         ; p[0]
+        push    de
+        ret                     ; into the round
+litscan:
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        djnz    litscan
+        jr      lit_scanned
+;; p[i + 1] = p[i] = A, HL = p + i + 1: p[i + 2] too?
+litcand:
+        inc     hl
         cp      a, (hl)
         dec     hl
-        jr      nz, 2$
-        ld      hl, #8          ; a run at i = k - B: L = i (k: above
-                                ; p, o and the return address)
-        add     hl, sp
-        ld      a, (hl)
-        sub     a, b
+        ret     nz              ; no: on with the scan
+        ld      a, l            ; a run at i: L = i = HL - 1 - p (< 128)
+        pop     de              ; (the scan's return address: dropped)
+        pop     hl              ; p
+        push    hl
+        sub     a, l
+        dec     a
         ld      c, a
-4$:     pop     hl              ; HL = p
+lit_scanned:
+        pop     hl              ; HL = p
         pop     de              ; DE = o
         ld      a, c
         or      a, #0x80
