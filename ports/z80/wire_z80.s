@@ -19,8 +19,9 @@
 ;;     ld a, byte; xor b; ld l, a; ld a, (hl); xor c; ld b, a;
 ;;     inc h; ld c, (hl); dec h                                  (46 T)
 ;; r8_tx_lit copies, CRCs, Fletcher-sums and links its literals in one
-;; loop (~120 T a byte); r8_tx_run scans ~33 T a byte; r8_tx_zeros 8
-;; bytes at a time (~15 T a byte); r8_crc16_mul is 16 shift-xor steps.
+;; loop (~120 T a byte); r8_tx_run scans ~33 T a byte; r8_tx_zeros 16
+;; bytes at a time (~14.5 T a byte); r8_crc16_mul is 16 shift-xor steps
+;; and two table reductions.
 ;; The cube / cull firmware (bench/kernz80.py, emu/z80sim, frames 1-3):
 ;; Z80_ASM="mul16 mullong" 1,612,609 T a frame, with wire 1,177,491
 ;; (-27%); the image 1,531 bytes larger (512 of them the table).
@@ -129,20 +130,19 @@ _r8_crc16_update:
         ret
 
 ;; r8_u16 r8_crc16_mul(r8_u16 a, r8_u16 b): a * b modulo x^16 + x^12 +
-;; x^5 + 1.  a HL, b DE -> DE.  Shift and xor over the bits of b, most
-;; significant first.                                         ~1100 T
+;; x^5 + 1.  a HL, b DE -> DE.  Horner over b's two bytes, each a
+;; carry-less 16 x 8 product into 24 bits with the reduction left to the
+;; end: E holds the multiplier byte; add hl, hl; rl e shifts the 24-bit
+;; E:H:L, the multiplier's next bit into carry and the product's top bit
+;; into E's bottom, so after 8 steps E is the product's top byte (x^16 to
+;; x^23), which the CRC table reduces (T[E] = E * x^16 mod P).  The
+;; second byte starts from the first's result: r * x^8 + a * bl.
+;;                                        ~800 T (was ~1100 bit by bit)
         .macro  MULBIT
-        add     hl, hl          ; r * x; the top bit out: reduce
-        jr      nc, .+10        ; (. is the jr itself: 2 + 8 bytes)
-        ld      a, h
-        xor     a, #0x10
-        ld      h, a
-        ld      a, l
-        xor     a, #0x21
-        ld      l, a
-        rl      e               ; the next bit of b (a byte of it in E)
-        jr      nc, .+8
-        ld      a, h
+        add     hl, hl          ; E:H:L * x, b's next bit into carry
+        rl      e
+        jr      nc, .+8         ; (. is the jr itself: 2 + 6 bytes)
+        ld      a, h            ; + a
         xor     a, b
         ld      h, a
         ld      a, l
@@ -152,73 +152,110 @@ _r8_crc16_update:
 _r8_crc16_mul:
         ld      b, h
         ld      c, l            ; BC = a
+        push    de              ; b's low byte for the second pass
+        ld      e, d            ; E = b's high byte
         ld      hl, #0
-        ld      a, e
-        ld      e, d            ; b's high byte first
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        ex      de, hl          ; D:E = the low 16 bits, L = the top byte
+        ld      h, #>r8z_crctab
+        ld      a, (hl)
+        xor     a, d
         ld      d, a
-        call    1$
-        ld      e, d            ; then its low byte
-        call    1$
+        inc     h
+        ld      a, (hl)
+        xor     a, e
+        ld      l, a
+        ld      h, d            ; HL = a * bh mod P
+        pop     de              ; E = b's low byte
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
+        MULBIT
         ex      de, hl
-        ret
-1$:     MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
+        ld      h, #>r8z_crctab
+        ld      a, (hl)
+        xor     a, d
+        ld      d, a
+        inc     h
+        ld      a, (hl)
+        xor     a, e
+        ld      e, a            ; DE = a * b mod P
         ret
 
 ;; unsigned r8_tx_zeros(const r8_u8 *p, unsigned n): how many bytes of
 ;; p[0..n) are 0x00 before the first other.  p HL, n DE -> DE.
+;; 16 bytes a pass (`or (hl); inc hl`, ~14.5 T a byte; was 8 a pass with
+;; a 16-bit count, ~24 T), the pass with a non-zero again byte by byte
+;; (it stops there: no count), then the n mod 16 left.
+        .macro  OR2
+        or      a, (hl)
+        inc     hl
+        or      a, (hl)
+        inc     hl
+        .endm
 _r8_tx_zeros:
         push    hl
-        ld      b, d
-        ld      c, e            ; BC = the bytes left
-1$:     ld      a, b            ; 8 at a time while 8 are left
+        ld      a, e
+        and     a, #0x0F
+        ld      c, a            ; C = n mod 16
+        srl     d
+        rr      e
+        srl     d
+        rr      e
+        srl     d
+        rr      e
+        srl     d
+        rr      e               ; DE = the passes
+        ld      a, d
+        or      a, e
+        jr      z, 3$
+        ld      b, e            ; B: the passes of the first round (0 = 256),
+        ld      a, e            ; D: the rounds
         or      a, a
-        jr      nz, 2$
-        ld      a, c
-        cp      a, #8
-        jr      c, 4$
-2$:     xor     a, a
-        or      a, (hl)
+        jr      z, 1$
+        inc     d
+1$:     xor     a, a
+        OR2
+        OR2
+        OR2
+        OR2
+        OR2
+        OR2
+        OR2
+        OR2
+        jr      nz, 4$
+        djnz    1$
+        dec     d
+        jr      nz, 1$
+3$:     ld      a, c            ; the n mod 16 left
+        or      a, a
+        jr      z, 6$
+        ld      b, a
+2$:     ld      a, (hl)
+        or      a, a
+        jr      nz, 6$
         inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        or      a, (hl)
-        inc     hl
-        jr      nz, 3$
-        ld      a, c
-        sub     a, #8
-        ld      c, a
-        jr      nc, 1$
-        dec     b
-        jr      1$
-3$:     ld      de, #-8         ; a non-zero among these 8: one by one
+        djnz    2$
+        jr      6$
+4$:     ld      de, #-16        ; a non-zero among these 16: it ends the scan
         add     hl, de
-4$:     ld      a, b
-        or      a, c
-        jr      z, 5$
-        ld      a, (hl)
+5$:     ld      a, (hl)
         or      a, a
-        jr      nz, 5$
+        jr      nz, 6$
         inc     hl
-        dec     bc
-        jr      4$
-5$:     pop     de              ; HL - p
+        jr      5$
+6$:     pop     de              ; HL - p
         or      a, a
         sbc     hl, de
         ex      de, hl
@@ -227,6 +264,20 @@ _r8_tx_zeros:
 ;; r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
 ;;   s HL, o DE, p and k on the stack -> A (the count)
 ;; r8_tx_st: +0 crc (low, high), +2 f1, +3 f2, +6 code, +8 g.
+        .macro  SCANV           ; 4 compares with v (A), HL on
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        cp      a, (hl)
+        jr      nz, scanv_out
+        inc     hl
+        .endm
 _r8_tx_run:
         push    hl
         pop     iy              ; IY = s
@@ -247,18 +298,45 @@ _r8_tx_run:
         inc     hl              ; p + 3
         ld      c, a            ; v
         ld      a, b
-        sub     a, #3
-        ld      b, a            ; the bytes left to look at: k - 3
+        sub     a, #3           ; the bytes left to look at: k - 3
+        jr      z, scanv_cnt
+        ;; 16 compares unrolled a round (~22 T a byte; a djnz loop took
+        ;; 33): the first round enters the run at its (k - 3) mod 16th
+        ;; compare from the end (through the stack and ret)
+        push    de              ; o
+        ld      b, a
+        neg
+        and     a, #0x0F        ; the compares the first round skips
+        add     a, a
+        add     a, a            ; (4 bytes each)
+        add     a, #<scanv
+        ld      e, a
+        ld      a, #>scanv
+        adc     a, #0
+        ld      d, a
+        push    de
+        ld      a, b
+        add     a, #15
+        rrca
+        rrca
+        rrca
+        rrca
+        and     a, #0x0F
+        ld      b, a            ; the rounds: (k - 3 + 15) / 16 (k <= 127)
         ld      a, c
-        jr      z, 2$
-1$:     cp      a, (hl)
-        jr      nz, 2$
-        inc     hl
-        djnz    1$
-2$:     ld      hl, #4          ; the count: k - left
+        ret                     ; into the round
+scanv:  SCANV
+        SCANV
+        SCANV
+        SCANV
+        djnz    scanv
+scanv_out:
+        pop     de              ; o
+scanv_cnt:
+        ld      a, l            ; the count: HL - p (< 128)
+        ld      hl, #2
         add     hl, sp
-        ld      a, (hl)
-        sub     a, b
+        sub     a, (hl)
         ld      b, a            ; B = count, C = v
         ex      de, hl
         ld      (hl), b         ; o[0] = count
@@ -345,6 +423,12 @@ _r8_tx_run:
 ;; (g = (g ^ Pb) * x^(8L) ^ Pa) and Fletcher sums; every 0x00 linked into
 ;; the COBS chain unless it has stopped (bit 7 of the result: a block got
 ;; too long, the caller undoes the chain).
+        .macro  LITPOS          ; p[i + 1] = p[i] (in A)? HL = p + i on
+        inc     hl
+        cp      a, (hl)
+        call    z, litcand
+        ld      a, (hl)
+        .endm
 _r8_tx_lit:
         push    hl
         pop     iy              ; IY = s
@@ -362,27 +446,65 @@ _r8_tx_lit:
         ld      c, (hl)         ; c
         ex      de, hl          ; HL = p
         push    hl
-        ld      a, b            ; scan: the first run of 3 among k positions
-        or      a, a
-        jr      z, 4$
-        ld      a, (hl)         ; p[i]
-1$:     inc     hl
-        cp      a, (hl)         ; p[i + 1] = p[i]?
-        jr      z, 3$
-2$:     ld      a, (hl)
-        djnz    1$
-        jr      4$
-3$:     inc     hl              ; p[i + 2] too?
+        ld      a, b            ; scan: the first run of 3 among k positions,
+        or      a, a            ; 16 unrolled a round (~31 T a position; a
+        jp      z, lit_scanned  ; djnz loop took 40), the first round
+        neg                     ; entered at its k mod 16th position from
+        and     a, #0x0F        ; the end (through the stack and ret)
+        ld      e, a
+        add     a, a
+        add     a, e
+        add     a, a            ; (6 bytes each)
+        add     a, #<litscan
+        ld      e, a
+        ld      a, #>litscan
+        adc     a, #0
+        ld      d, a
+        ld      a, b
+        add     a, #15
+        rrca
+        rrca
+        rrca
+        rrca
+        and     a, #0x0F
+        ld      b, a            ; the rounds: (k + 15) / 16 (k <= 127)
+        ld      a, (hl)         ; p[0]
+        push    de
+        ret                     ; into the round
+litscan:
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        LITPOS
+        djnz    litscan
+        jr      lit_scanned
+;; p[i + 1] = p[i] = A, HL = p + i + 1: p[i + 2] too?
+litcand:
+        inc     hl
         cp      a, (hl)
         dec     hl
-        jr      nz, 2$
-        ld      hl, #8          ; a run at i = k - B: L = i (k: above
-                                ; p, o and the return address)
-        add     hl, sp
-        ld      a, (hl)
-        sub     a, b
+        ret     nz              ; no: on with the scan
+        ld      a, l            ; a run at i: L = i = HL - 1 - p (< 128)
+        pop     de              ; (the scan's return address: dropped)
+        pop     hl              ; p
+        push    hl
+        sub     a, l
+        dec     a
         ld      c, a
-4$:     pop     hl              ; HL = p
+lit_scanned:
+        pop     hl              ; HL = p
         pop     de              ; DE = o
         ld      a, c
         or      a, #0x80
