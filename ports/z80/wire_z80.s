@@ -19,12 +19,14 @@
 ;;     ld a, byte; xor b; ld l, a; ld a, (hl); xor c; ld b, a;
 ;;     inc h; ld c, (hl); dec h                                  (46 T)
 ;; r8_tx_lit copies, CRCs, Fletcher-sums and links its literals in one
-;; loop (~120 T a byte); r8_tx_run scans ~33 T a byte; r8_tx_zeros 16
+;; loop (~120 T a byte; its run-of-3 scan ~31 T a position); r8_tx_run
+;; scans ~22 T a byte (16 compares a round); r8_tx_zeros 16
 ;; bytes at a time (~14.5 T a byte); r8_crc16_mul is 16 shift-xor steps
 ;; and two table reductions.
-;; The cube / cull firmware (bench/kernz80.py, emu/z80sim, frames 1-3):
-;; Z80_ASM="mul16 mullong" 1,612,609 T a frame, with wire 1,177,491
-;; (-27%); the image 1,531 bytes larger (512 of them the table).
+;; When these kernels were first written (round 4; bench/kernz80.py,
+;; emu/z80sim, frames 1-3) the cube / cull firmware went from 1,612,609
+;; to 1,177,491 T a frame (-27%), the image 1,531 bytes larger (512 of
+;; them the table); round 8's figures are in docs/benchmarks.md.
         .module wire_z80
 
         .globl  _r8_crc16_update
