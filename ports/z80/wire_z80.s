@@ -157,14 +157,9 @@ _r8_crc16_mul:
         push    de              ; b's low byte for the second pass
         ld      e, d            ; E = b's high byte
         ld      hl, #0
+        .rept   8
         MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
+        .endm
         ex      de, hl          ; D:E = the low 16 bits, L = the top byte
         ld      h, #>r8z_crctab
         ld      a, (hl)
@@ -176,14 +171,9 @@ _r8_crc16_mul:
         ld      l, a
         ld      h, d            ; HL = a * bh mod P
         pop     de              ; E = b's low byte
+        .rept   8
         MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
-        MULBIT
+        .endm
         ex      de, hl
         ld      h, #>r8z_crctab
         ld      a, (hl)
