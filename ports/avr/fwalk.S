@@ -68,7 +68,7 @@
 #define ZERO r15
 
 #include "facemac.h"   /* DOT3: r8k_cull's sum */
-
+#include "saves.h"     /* SAVE18, RESTORE18 */
 
 /* lo:hi (upper registers) = R8_FLOOR16(v + 7) =
  * ((v + 0x8007) mod 2^16 >> 4) - 2048 */
@@ -242,24 +242,7 @@ vt\sfx:
     .global r8k_fwalk
     .type   r8k_fwalk, @function
 r8k_fwalk:
-    push  r2
-    push  r3
-    push  r4
-    push  r5
-    push  r6
-    push  r7
-    push  r8
-    push  r9
-    push  r10
-    push  r11
-    push  r12
-    push  r13
-    push  r14
-    push  r15
-    push  r16
-    push  r17
-    push  r28
-    push  r29
+    SAVE18
     movw  r28, r24          /* Y = w */
     ldd   r2, Y+W_F         /* f */
     ldd   r3, Y+W_F+1
@@ -435,24 +418,7 @@ r8k_fwalk_ret1:
 out:
     clr   r1
     ldi   r25, 0
-    pop   r29
-    pop   r28
-    pop   r17
-    pop   r16
-    pop   r15
-    pop   r14
-    pop   r13
-    pop   r12
-    pop   r11
-    pop   r10
-    pop   r9
-    pop   r8
-    pop   r7
-    pop   r6
-    pop   r5
-    pop   r4
-    pop   r3
-    pop   r2
+    RESTORE18
     ret
 box8:
     BOXLOOP 8, 1

@@ -76,6 +76,8 @@
 #define M    r25    /* the row's bit(s) */
 /* X (r27:r26) = column pointer, Y (r29:r28) = t, Z (r31:r30) = span end */
 
+#include "saves.h"   /* SAVE18, RESTORE18 */
+
 /* X = page + xl, Z = page + xr (from X = xl, Z = xr); T0 = n = xr - xl
  * (low byte: the loop is entered at column (-n) & 3) */
 .macro SETUP
@@ -893,24 +895,7 @@ fin:
     std   Z+1, LVH
     std   Z+4, LEL
     std   Z+5, LEH
-    pop   r29
-    pop   r28
-    pop   r17
-    pop   r16
-    pop   r15
-    pop   r14
-    pop   r13
-    pop   r12
-    pop   r11
-    pop   r10
-    pop   r9
-    pop   r8
-    pop   r7
-    pop   r6
-    pop   r5
-    pop   r4
-    pop   r3
-    pop   r2
+    RESTORE18
     clr   r1
     ret
 

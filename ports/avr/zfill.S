@@ -48,6 +48,8 @@
 #define YL_ r22
 #define YH_ r23
 
+#include "saves.h"   /* SAVE18, RESTORE18 */
+
 /* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
  * of the interpolator at Z+off (the four lie in one r8_scan:
  * lx, then rx, ld, rd 13, 27 and 47 bytes on, asserted in src/zrows.c) */
@@ -125,24 +127,7 @@
 .endm
 
 .macro PUSHALL
-        push    r2
-        push    r3
-        push    r4
-        push    r5
-        push    r6
-        push    r7
-        push    r8
-        push    r9
-        push    r10
-        push    r11
-        push    r12
-        push    r13
-        push    r14
-        push    r15
-        push    r16
-        push    r17
-        push    r28
-        push    r29
+        SAVE18
 .endm
 
         .section .text.r8k_zrows,"ax",@progbits
@@ -283,24 +268,7 @@ r8k_zband:
 
 zrestore:
         ldi     r25, 0
-        pop     r29
-        pop     r28
-        pop     r17
-        pop     r16
-        pop     r15
-        pop     r14
-        pop     r13
-        pop     r12
-        pop     r11
-        pop     r10
-        pop     r9
-        pop     r8
-        pop     r7
-        pop     r6
-        pop     r5
-        pop     r4
-        pop     r3
-        pop     r2
+        RESTORE18
         ret
 
 /* the rows: Y = t, the registers saved; r24 the value */
