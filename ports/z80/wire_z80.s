@@ -140,6 +140,18 @@ _r8_crc16_update:
 ;; x^23), which the CRC table reduces (T[E] = E * x^16 mod P).  The
 ;; second byte starts from the first's result: r * x^8 + a * bl.
 ;;                                        ~800 T (was ~1100 bit by bit)
+;; the top byte reduced by the table: from E:H:L, D = the high byte of
+;; the result and A its low byte (H, L changed)
+        .macro  REDUCE
+        ex      de, hl          ; D:E = the low 16 bits, L = the top byte
+        ld      h, #>r8z_crctab
+        ld      a, (hl)
+        xor     a, d
+        ld      d, a
+        inc     h
+        ld      a, (hl)
+        xor     a, e
+        .endm
         .macro  MULBIT
         add     hl, hl          ; E:H:L * x, b's next bit into carry
         rl      e
@@ -160,28 +172,14 @@ _r8_crc16_mul:
         .rept   8
         MULBIT
         .endm
-        ex      de, hl          ; D:E = the low 16 bits, L = the top byte
-        ld      h, #>r8z_crctab
-        ld      a, (hl)
-        xor     a, d
-        ld      d, a
-        inc     h
-        ld      a, (hl)
-        xor     a, e
+        REDUCE
         ld      l, a
         ld      h, d            ; HL = a * bh mod P
         pop     de              ; E = b's low byte
         .rept   8
         MULBIT
         .endm
-        ex      de, hl
-        ld      h, #>r8z_crctab
-        ld      a, (hl)
-        xor     a, d
-        ld      d, a
-        inc     h
-        ld      a, (hl)
-        xor     a, e
+        REDUCE
         ld      e, a            ; DE = a * b mod P
         ret
 
