@@ -212,6 +212,10 @@ typedef struct r8_state {
                            zn16..zf16 in 64 buckets; kmul3 for z sums of 3 */
     r8_u8 *depth;       /* the method's depth memory for one band */
     unsigned depth_bytes;
+    r8_u8 zx[2];        /* 16-bit z-buffer, width <= 255: the columns */
+                        /* [zx[0], zx[1]) hold every depth written since */
+                        /* the last clear (r8_render_band clears those); */
+                        /* 0, 255: unknown, the whole band is cleared */
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
@@ -258,6 +262,11 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
  * pixels and depths as r8_scan_next + r8_vis_zbuf, without a span
  * record or a division per span. */
 void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16);
+/* The 16-bit z-buffer of width w (<= 255, band rows): before a band
+ * (of fb) r8_zclear clears the columns st->zx, after it r8_zkeep adds
+ * the kernel's (r8zrows.h) to st->zx. */
+void r8_zclear(r8_state *st, const r8_fb *fb, r8_u16 w, r8_u16 band);
+void r8_zkeep(r8_state *st);
 void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span *sp, int mask);
 void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);

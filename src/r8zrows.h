@@ -42,6 +42,13 @@ typedef struct r8_zrows {
     r8_u8 fast;           /* 30: (the kernel's) */
 } r8_zrows;
 
+/* The columns [r8_zcols[0], r8_zcols[1]) hold every span r8k_zrows has
+ * drawn since its caller last set them (bytes: exact for w <= 255; the
+ * caller then clears only those columns of the depth rows, vis_zbuf.c's
+ * r8_zclear).  One for all renderers: r8_zclear takes it into the
+ * state's st->zx after each band's clear and before the next. */
+extern r8_u8 r8_zcols[2];
+
 /* r8_zfill's rows from y up to lim (judd's test decided or off): on
  * each, when y reaches an edge's yend, r8_scan_row_attrs(s, y, 0) moves
  * the edges on (the interpolators in s re-read after); then the span
@@ -54,7 +61,10 @@ typedef struct r8_zrows {
  * Returns 1 when y reached lim; 2 when it stopped before drawing row y
  * (its edges moved on), whose span (lx->val < rx->val) starts left of
  * column 0 or is 256 columns or more: the caller draws that row; 0
- * when r8_scan_row_attrs said the polygon is over.  y is left in t->y. */
+ * when r8_scan_row_attrs said the polygon is over.  y is left in t->y.
+ * Each span drawn (xa = lx->val to xb = min(rx->val, w)) widens
+ * r8_zcols to hold it: [0] = min([0], xa), [1] = max([1], xb), both as
+ * bytes. */
 int r8k_zrows(r8_zrows *t);
 
 /* r8_zfill's common case in one call: face a's rows from a->s.c.y (at

@@ -629,6 +629,8 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->persp = cfg->persp;
 #endif
     st->first = (r8_fid)R8_FID_END;
+    st->zx[0] = 0;        /* the depth memory: unknown, all cleared first */
+    st->zx[1] = 255;
     st->npoly = 0;
     st->dropped = 0;
     st->nclipped = 0;
@@ -1137,6 +1139,12 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
         }
     }
     st->first = cur;
+#if R8_W_DEPTH
+    if (st->nclip) {      /* the clipper's polygons may lie on the depth */
+        st->zx[0] = 0;    /* memory: the next band clears all of it */
+        st->zx[1] = 255;
+    }
+#endif
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
 #ifndef R8_NO_POOL
@@ -1453,9 +1461,16 @@ void r8_render_band(r8_render *r, r8_fb *fb)
         r8k_fill(fb->buf, 0, r8_fb_bytes(fb->format, fb->width, fb->rows));
 #if R8_W_DEPTH
     if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
-        r8k_fill(st->depth, 0, st->depth_bytes);
-        if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
-            memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
+#ifndef R8_NO_ZBUF
+        if (st->method == R8_VIS_Z16 && CFG_WIDTH(&r->cfg) <= 255)
+            r8_zclear(st, fb, (r8_u16)CFG_WIDTH(&r->cfg), (r8_u16)CFG_BAND(&r->cfg));
+        else
+#endif
+        {
+            r8k_fill(st->depth, 0, st->depth_bytes);
+            if (st->method == R8_VIS_BLOCK)   /* owner ids: none */
+                memset(st->depth + st->depth_bytes / 2u, 0xFF, st->depth_bytes - st->depth_bytes / 2u);
+        }
     }
 #endif
 #if R8_W_SBUF
@@ -1538,6 +1553,10 @@ void r8_render_band(r8_render *r, r8_fb *fb)
             *link = (r8_fid)R8_FID_END;
     }
     st->first = head;
+#ifndef R8_NO_ZBUF
+    if (st->method == R8_VIS_Z16)
+        r8_zkeep(st);      /* the columns r8k_zband drew: cleared next */
+#endif
 #ifndef R8_NO_SBUF
 #if R8_W_SBUF
     if (st->method == R8_VIS_SBUF)

@@ -113,6 +113,12 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
         return;
     pixw_init(&w, fb, sp->y);
     row = (unsigned)(sp->y - fb->y0) * (unsigned)fb->width;
+    if (bits16) {             /* the columns written (st->zx, r8int.h) */
+        if ((r8_u8)xa < st->zx[0])
+            st->zx[0] = (r8_u8)xa;
+        if ((r8_u8)xb > st->zx[1])
+            st->zx[1] = (r8_u8)xb;
+    }
     if (bits16 && w.row && !gouraud) {
         /* the common case, written out: 16-bit depth, one level, pages */
         r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
@@ -270,6 +276,10 @@ static ZF_NOINLINE void zfill_gen(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb 
                 r8_u16 de = d.err, dr = d.r, dn = d.den, k = (r8_u16)(xb - xa);
                 if (bits16) {
                     r8_u16 *z = (r8_u16 *)(void *)st->depth + by * (unsigned)w + xa;
+                    if ((r8_u8)xa < st->zx[0])           /* the columns written */
+                        st->zx[0] = (r8_u8)xa;
+                    if ((r8_u8)xb > st->zx[1])
+                        st->zx[1] = (r8_u8)xb;
                     do {
                         if ((r8_u16)dv >= *z) {
                             *z = (r8_u16)dv;
@@ -349,6 +359,47 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
     }
 #endif
     zfill_gen(st, a, ylimit, fb, bits16);
+}
+
+/* (r8int.h) the depth rows' columns st->zx cleared (band rows w
+ * apart), then none written: st->zx and the kernel's r8_zcols empty;
+ * all of them next when this band's rows lie another width apart */
+void r8_zclear(r8_state *st, const r8_fb *fb, r8_u16 w, r8_u16 band)
+{
+    r8_u16 lo = st->zx[0], hi = st->zx[1];
+    if (hi > w)
+        hi = w;
+    if (lo < hi) {
+        r8_u8 *p = st->depth + 2u * lo;
+        r8_u16 n = (r8_u16)(2u * (hi - lo)), step = (r8_u16)(2u * w);
+        for (; band; band--) {
+            r8k_fill(p, 0, n);
+            p += step;
+        }
+    }
+    st->zx[0] = 255;
+    st->zx[1] = 0;
+    if (fb->width != (r8_s16)w) {
+        st->zx[0] = 0;
+        st->zx[1] = 255;
+    }
+#if R8_ZROWS
+    r8_zcols[0] = 255;
+    r8_zcols[1] = 0;
+#endif
+}
+
+/* (r8int.h) the columns the kernel drew this band, into st->zx */
+void r8_zkeep(r8_state *st)
+{
+#if R8_ZROWS
+    if (r8_zcols[0] < st->zx[0])
+        st->zx[0] = r8_zcols[0];
+    if (r8_zcols[1] > st->zx[1])
+        st->zx[1] = r8_zcols[1];
+#else
+    (void)st;
+#endif
 }
 
 /* The 4x4-block z-buffer, two designs (docs/visibility.md):

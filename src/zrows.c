@@ -9,6 +9,8 @@
 #include "r8scan.h"
 
 #if !defined(R8_ASM_ZFILL) && (R8_ZROWS || defined(R8_ZROWS_REF))
+r8_u8 r8_zcols[2];    /* (r8zrows.h; the AVR kernel's in zfill.S) */
+
 int r8k_zrows(r8_zrows *t)
 {
     r8_interp *lx = t->lx, *rx = t->rx, *ld = t->ld, *rd = t->rd;
@@ -54,7 +56,12 @@ int r8k_zrows(r8_zrows *t)
                 }
                 for (k = (r8_u8)(xl & 7); k; k--)      /* pat rotated left */
                     pat = (r8_u8)((pat << 1) | (pat >> 7));
-                k = (r8_u8)((xr > (r8_s16)t->w ? (r8_s16)t->w : xr) - xl);
+                xr = xr > (r8_s16)t->w ? (r8_s16)t->w : xr;
+                if ((r8_u8)xl < r8_zcols[0])             /* the columns drawn */
+                    r8_zcols[0] = (r8_u8)xl;
+                if ((r8_u8)xr > r8_zcols[1])
+                    r8_zcols[1] = (r8_u8)xr;
+                k = (r8_u8)(xr - xl);
                 do {
                     if ((r8_u16)dv >= *z) {
                         *z = (r8_u16)dv;

@@ -24,6 +24,9 @@
  * lyend, ryend are not read), and the dither phase from y (t->k, y & 3,
  * only written at the end).  r8k_zband (below) builds t itself.
  *
+ * Each span drawn widens the columns [r8_zcols[0], r8_zcols[1]) to hold
+ * it (bytes; 10 cycles a span).
+ *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_zrows {lx 0, rx 2, ld 4, rd 6, z 8, page 10, w 12,
  * m 14, k 15, pat 16, s 18, lyend 20, ryend 22, y 24, lim 26, end 28}.
@@ -129,6 +132,14 @@
 .macro PUSHALL
         SAVE18
 .endm
+
+/* r8_u8 r8_zcols[2] (src/r8zrows.h) */
+        .section .bss.r8_zcols,"aw",@nobits
+        .global r8_zcols
+        .type   r8_zcols, @object
+        .size   r8_zcols, 2
+r8_zcols:
+        .zero   2
 
         .section .text.r8k_zrows,"ax",@progbits
         .global r8k_zrows
@@ -372,7 +383,15 @@ zbody:
         cpc     r21, RXVH
         brlt    5f
         movw    r20, RXVL
-5:      sub     r20, LXVL               /* columns (1..255) */
+5:      lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
+        cp      r18, r20                /* r8_zcols[1] = max(it, xb), */
+        brsh    30f
+        sts     r8_zcols+1, r20
+30:     lds     r18, r8_zcols           /* r8_zcols[0] = min(it, xl) */
+        cp      LXVL, r18
+        brsh    31f
+        sts     r8_zcols, LXVL
+31:     sub     r20, LXVL               /* columns (1..255) */
         cpi     r20, 1                  /* one: its depth is ld's, no */
         brne    6f                      /* step, no division */
         rjmp    .Lone

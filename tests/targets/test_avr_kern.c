@@ -985,7 +985,9 @@ static void test_depth_random(void)
  * the band, now and then left of 0 or spans 256+ wide (the rows the
  * kernel leaves: the test steps past them as r8_zfill does and calls
  * again), depths anywhere in 0..32767.  The return values, rows, all
- * the memory, the scans and t's z, page, m, k must end equal.  One in
+ * the memory, the scans, t's z, page, m, k and r8_zcols (from a random
+ * start: none or some columns) must end equal, and every depth the
+ * reference changed lie in its r8_zcols' columns.  One in
  * eight scans carries shade too (the kernel's general attribute set-up,
  * r8_scan_attr_edge). ---- */
 #define R8_ZROWS_REF 1
@@ -994,7 +996,9 @@ static void test_depth_random(void)
 #define r8_attr_first r8_attr_first_ref
 #define r8k_zband r8k_zband_ref
 #define r8_scan_attrs r8_scan_attrs_ref
+#define r8_zcols r8_zcols_ref
 #include "zrows.c"
+#undef r8_zcols
 #undef r8_scan_attrs
 #undef r8k_zband
 #undef r8k_zrows
@@ -1003,6 +1007,7 @@ static void test_depth_random(void)
 int r8_attr_first(r8_interp *it, const r8_s16 *a, const r8_s16 *b, r8_s16 y, r8_u8 k);
 int r8k_zrows(r8_zrows *t);
 int r8k_zband(struct r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit);
+extern r8_u8 r8_zcols[2];
 void r8_interp_init_sub(r8_interp *it, r8_s16 base, r8_u16 s0, r8_s16 dv, r8_u16 n);
 
 static int interp_eq(const r8_interp *a, const r8_interp *b)
@@ -1017,6 +1022,23 @@ static r8_u16 zsum(const r8_u8 *p, unsigned n)
     while (n--)
         h = (r8_u16)(((h << 1) | (h >> 15)) + *p++);
     return h;
+}
+
+/* after the reference ran on band_ref, before the kernel runs on
+ * band_asm (equal before): every depth of the band (rows of w at zoff)
+ * the reference changed lies in the columns [xlo, xhi) (those a caller
+ * clears next: r8_zcols) */
+static int zcols_cover(unsigned zoff, unsigned rows, r8_u16 w, r8_u8 xlo, r8_u8 xhi)
+{
+    unsigned x, y;
+    for (y = 0; y < rows; y++)
+        for (x = 0; x < w; x++) {
+            unsigned o = zoff + 2u * (y * w + x);
+            if ((band_ref[o] != band_asm[o] || band_ref[o + 1] != band_asm[o + 1]) &&
+                (x < xlo || x >= xhi))
+                return 0;
+        }
+    return 1;
 }
 
 /* t's row state for row y of the band at y0 */
@@ -1103,19 +1125,29 @@ static void test_zrows_random(void)
         tr.w = ta.w = w;
         tr.lim = ta.lim = lim;
         tr.pat = ta.pat = &r8_fb_dither_tab[4u * rndn(17)];   /* flash */
+        r8_zcols_ref[0] = (r8_u8)(rndn(2) ? 255 : rndn(w + 1));   /* none, or some */
+        r8_zcols_ref[1] = (r8_u8)(r8_zcols_ref[0] == 255 ? 0 : r8_zcols_ref[0] + rndn(w + 1 - r8_zcols_ref[0]));
+        r8_zcols[0] = r8_zcols_ref[0];
+        r8_zcols[1] = r8_zcols_ref[1];
         sum0 = zsum(band_ref, len);
         for (;;) {
             r8_s16 le = zscan_ref.c.l.yend, re = zscan_ref.c.r.yend;
             zrows_at(&tr, band_ref, zoff, w, y0, y);
             zrows_at(&ta, band_asm, zoff, w, y0, y);
             rr = r8k_zrows_ref(&tr);
+            if (!zcols_cover(zoff, rows, w, r8_zcols_ref[0], r8_zcols_ref[1])) {
+                print_case("r8k_zrows", i);
+                unity_fail_int(__LINE__, "r8k_zrows: depth past r8_zcols", r8_zcols_ref[0], r8_zcols_ref[1]);
+                return;
+            }
             ra = r8k_zrows(&ta);
             calls++;
             moves += zscan_ref.c.l.yend != le || zscan_ref.c.r.yend != re;
             if (ra != rr || ta.y != tr.y || memcmp(band_ref, band_asm, len) != 0 ||
                 memcmp(&zscan_ref, &zscan_asm, sizeof zscan_ref) != 0 ||
                 (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
-                ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k) {
+                ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k ||
+                r8_zcols[0] != r8_zcols_ref[0] || r8_zcols[1] != r8_zcols_ref[1]) {
                 print_case("r8k_zrows", i);
                 unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
                 return;
@@ -1156,7 +1188,8 @@ static void test_zrows_random(void)
  * r8k_zband builds the r8_zrows r8_zfill did (z, page, m, k from y -
  * fb->y0, the pattern from the level, the limit) and writes c.y; the
  * rows it leaves (its 2) are stepped past as r8_zfill's C does.  The
- * return values, all the memory and both acts must end equal. ---- */
+ * return values, all the memory, both acts and r8_zcols must end equal,
+ * the depths changed inside r8_zcols' columns. ---- */
 static void test_zband_random(void)
 {
     unsigned long i, stops = 0, drawn = 0, calls = 0, cut = 0;
@@ -1219,12 +1252,22 @@ static void test_zband_random(void)
         }
         cut += ylimit < zact_ref.s.c.ybot && ylimit < (r8_s16)(y0 + rows);
         sum0 = zsum(band_ref, len);
+        r8_zcols_ref[0] = (r8_u8)(rndn(2) ? 255 : rndn(w + 1));   /* none, or some */
+        r8_zcols_ref[1] = (r8_u8)(r8_zcols_ref[0] == 255 ? 0 : r8_zcols_ref[0] + rndn(w + 1 - r8_zcols_ref[0]));
+        r8_zcols[0] = r8_zcols_ref[0];
+        r8_zcols[1] = r8_zcols_ref[1];
         for (;;) {
             rr = r8k_zband_ref(&zact_ref, &fb_ref, (r8_u16 *)(void *)(band_ref + zoff), ylimit);
+            if (!zcols_cover(zoff, rows, w, r8_zcols_ref[0], r8_zcols_ref[1])) {
+                print_case("r8k_zband", i);
+                unity_fail_int(__LINE__, "r8k_zband: depth past r8_zcols", r8_zcols_ref[0], r8_zcols_ref[1]);
+                return;
+            }
             ra = r8k_zband(&zact_asm, &fb_asm, (r8_u16 *)(void *)(band_asm + zoff), ylimit);
             calls++;
             if (ra != rr || memcmp(band_ref, band_asm, len) != 0 ||
-                memcmp(&zact_ref, &zact_asm, sizeof zact_ref) != 0) {
+                memcmp(&zact_ref, &zact_asm, sizeof zact_ref) != 0 ||
+                r8_zcols[0] != r8_zcols_ref[0] || r8_zcols[1] != r8_zcols_ref[1]) {
                 print_case("r8k_zband", i);
                 unity_fail_int(__LINE__, "r8k_zband differs from the reference", (long)ra, (long)rr);
                 return;
