@@ -133,6 +133,13 @@
         SAVE18
 .endm
 
+/* r8k_zband's r8_zrows (31 bytes) */
+        .section .bss.zband_t,"aw",@nobits
+        .type   zband_t, @object
+        .size   zband_t, 31
+zband_t:
+        .zero   31
+
 /* r8_u8 r8_zcols[2] (src/r8zrows.h) */
         .section .bss.r8_zcols,"aw",@nobits
         .global r8_zcols
@@ -152,7 +159,8 @@ r8k_zrows:
 
 /* int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
  * (src/r8zrows.h): the r8_zrows of the reference (src/zrows.c) built in
- * a 31-byte frame on the stack, then zbody; a->s.c.y = t.y on 1 and 2.
+ * a static 31 bytes (zband_t; no stack frame to make), then zbody;
+ * a->s.c.y = t.y on 1 and 2.
  * In: r25:24 a, r23:22 fb, r21:20 depth, r19:18 ylimit.  Offsets
  * (asserted in src/zrows.c): r8_act {level 0, s 2}; r8_scanx {y 21,
  * ybot 23, l.x 25, l.yend 35, r.x 38, r.yend 48}; r8_scan {ld 52,
@@ -161,15 +169,8 @@ r8k_zrows:
         .type   r8k_zband, @function
 r8k_zband:
         PUSHALL
-        in      r28, 0x3D               /* a frame of 31: Y = SP + 1 */
-        in      r29, 0x3E
-        sbiw    r28, 31
-        in      r0, 0x3F
-        cli
-        out     0x3E, r29
-        out     0x3F, r0
-        out     0x3D, r28
-        adiw    r28, 1
+        ldi     r28, lo8(zband_t)       /* Y = its r8_zrows (static: */
+        ldi     r29, hi8(zband_t)       /* not reentrant, as r8_zcols) */
         movw    r30, r24                /* Z = a */
         ld      r17, Z+                 /* level, min 16: pat */
         cpi     r17, 17
@@ -268,13 +269,7 @@ r8k_zband:
         ldd     r19, Y+25
         std     Z+21, r18
         std     Z+22, r19
-4:      adiw    r28, 30                 /* the frame off */
-        in      r0, 0x3F
-        cli
-        out     0x3E, r29
-        out     0x3F, r0
-        out     0x3D, r28
-        rjmp    zrestore
+4:      rjmp    zrestore
         .size   r8k_zband, .-r8k_zband
 
 zrestore:
