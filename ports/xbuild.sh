@@ -112,7 +112,12 @@ PY
       gcs=$(python3 ports/z80/gcz80.py "$base.gc" "${progs[@]}" -- "${members[@]}" 2>> "$log") || fail
       link=()
       for g in $gcs; do
-        sdasz80 -plosgffw "${g%.*}.rel" "$g" >> "$log" 2>&1 || fail
+        # as sdcc -c assembles its output (.sym: emu/z80sim's static
+        # functions) and mk/targets.mk the kernels
+        case $g in
+          *.asm) sdasz80 -plosgffw "${g%.*}.rel" "$g" >> "$log" 2>&1 || fail ;;
+          *) sdasz80 -o "${g%.*}.rel" "$g" >> "$log" 2>&1 || fail ;;
+        esac
         link+=("${g%.*}.rel")
       done
     fi

@@ -2,7 +2,7 @@
 """gcz80.py - function-level dead-code removal for sdcc Z80 programs (the
 Z80 port's link step, ports/xbuild.sh; Z80_GC=0 turns it off).
 
-    gcz80.py OUTDIR MAIN.asm [MORE.asm ...] -- MEMBER.asm|.s ...
+    gcz80.py [--why NAME ...] OUTDIR MAIN.asm [MORE.asm ...] -- MEMBER.asm|.s ...
 
 sdld links whole modules: a library module comes in with every function
 and table in it once one of its symbols is needed, and the firmware's own
@@ -31,7 +31,8 @@ left to sdld.
 Prints the files written, one per line, in link order (the program's
 first, then members in the order they were needed); "gcz80: ..." with
 the kept share of the source goes to stderr.  Exit status 2 on a usage
-error or an unreadable file.
+error or an unreadable file.  --why NAME prints the chain of references
+that keeps NAME (or "not kept").
 """
 import os
 import re
@@ -172,8 +173,9 @@ class Module:
         return out
 
 
-def reach(progs, members):
-    """Marks what _main reaches; returns the modules to link, in order."""
+def reach(progs, members, why=None):
+    """Marks what _main reaches; returns the modules to link, in order.
+    why: a dict that gets, for each block kept, the name that needed it."""
     order, owner, pending = [], {}, []
     archive = {}
     for m in members:
@@ -185,13 +187,13 @@ def reach(progs, members):
         order.append(m)
         for e in m.exports:
             owner.setdefault(e, m)
-        pending.extend((m, r) for r in m.roots)
+        pending.extend((m, r, m.path) for r in m.roots)
 
     for m in progs:
         use(m)
-    pending.append((progs[0], "_main"))
+    pending.append((progs[0], "_main", "crt0"))
     while pending:
-        m, n = pending.pop()
+        m, n, by = pending.pop()
         if n in m.blocks:
             t = m
         elif n in m.defs:
@@ -207,11 +209,18 @@ def reach(progs, members):
         if b is None or b.live:
             continue
         b.live = True
-        pending.extend((t, r) for r in b.refs)
+        if why is not None:
+            why[n] = by
+        pending.extend((t, r, n) for r in b.refs)
     return order
 
 
 def main(argv):
+    why = {}
+    trace = []
+    while len(argv) > 2 and argv[1] == "--why":
+        trace.append(argv[2])
+        del argv[1:3]
     if len(argv) < 3 or "--" not in argv[2:] or argv[1] in ("-h", "--help"):
         sys.stderr.write(__doc__)
         return 2
@@ -227,7 +236,7 @@ def main(argv):
         return 2
     os.makedirs(argv[1], exist_ok=True)
     total = kept = 0
-    for m in reach(progs, members):
+    for m in reach(progs, members, why):
         path = os.path.join(argv[1], os.path.basename(m.path))
         with open(path, "w") as f:
             f.write("\n".join(m.text()) + "\n")
@@ -236,6 +245,11 @@ def main(argv):
             total += size
             kept += size if b.live else 0
         print(path)
+    for n in trace:
+        chain = [n]
+        while chain[-1] in why and len(chain) < 50:
+            chain.append(why[chain[-1]])
+        sys.stderr.write("gcz80: %s\n" % (" <- ".join(chain) if n in why else n + ": not kept"))
     sys.stderr.write("gcz80: kept %d of %d bytes of function and data source\n" % (kept, total))
     return 0
 
