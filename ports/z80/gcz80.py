@@ -62,10 +62,13 @@ class Block:
     def __init__(self, name, area, first):
         self.name, self.area, self.lines = name, area, [first]
         self.refs = set()
-        self.live = False
+        self.live = self.equate = False
 
     def falls_through(self):
-        body = [c for c in map(code, self.lines[1:]) if c.strip()]
+        if self.equate:
+            return False
+        head = COL0_LABEL.sub("", self.lines[0], 1)
+        body = [c for c in map(code, [head] + self.lines[1:]) if c.strip()]
         if not body:
             return True
         last = body[-1].strip()
@@ -113,13 +116,14 @@ class Module:
             m = COL0_LABEL.match(l)
             if m:
                 cur = Block(m.group(1), area, l)
+                cur.refs = names(l[m.end():])   # (code after the label)
                 self.blocks[cur.name] = cur
                 self.seq.append(cur)
                 continue
             m = EQUATE.match(l)
             if m and not l[:1].isspace():
                 b = Block(m.group(1), area, l)
-                b.refs = names(l.split("=")[-1])
+                b.refs, b.equate = names(l.split("=")[-1]), True
                 self.blocks[b.name] = b
                 self.seq.append(b)
                 cur = None
