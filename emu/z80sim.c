@@ -923,7 +923,7 @@ int main(int argc, char **argv)
 {
     const char *out = NULL, *marks = NULL, *proff = NULL, *histf = NULL, *mapf = NULL, *sizef = NULL;
     unsigned long long limit = 4000000000ULL;
-    char mapbuf[1024], dir1[1024], dir2[1040];
+    char mapbuf[1024], dir0[1024], dir1[1024], dir2[1040];
     const char *state;
     int c, i, rc;
     while ((c = getopt(argc, argv, "o:m:ql:P:F:H:M:s:uz:ah")) != -1) {
@@ -972,16 +972,29 @@ int main(int argc, char **argv)
         size_t dl = slash ? (size_t)(slash - ihx) : 1;
         snprintf(dir1, sizeof dir1, "%.*s", (int)dl, slash ? ihx : ".");
         snprintf(dir2, sizeof dir2, "%s/../obj", dir1);
+        {   /* FILE.gc/: the modules ports/z80/gcz80.py cut, linked in place of those */
+            size_t n = strlen(ihx);
+            const char *name = slash ? slash + 1 : ihx;
+            size_t m = strlen(name);
+            FILE *g;
+            snprintf(dir0, sizeof dir0, "%.*s.gc", (int)(n > 4 ? n - 4 : n), ihx);
+            snprintf(main_sym, sizeof main_sym, "%.*s.gc/%.*s.sym", (int)(n > 4 ? n - 4 : n), ihx,
+                     (int)(m > 4 ? m - 4 : m), name);
+            g = fopen(main_sym, "r");
+            if (g) {
+                fclose(g);
+                sym_dirs[nsym_dirs++] = dir0;
+            } else {
+                n = strlen(ihx);
+                snprintf(main_sym, sizeof main_sym, "%.*s.sym", (int)(n > 4 ? n - 4 : n), ihx);
+            }
+        }
         sym_dirs[nsym_dirs++] = dir1;
         sym_dirs[nsym_dirs++] = dir2;
         if (!mapf) {
             size_t n = strlen(ihx);
             snprintf(mapbuf, sizeof mapbuf, "%.*s.map", (int)(n > 4 ? n - 4 : n), ihx);
             mapf = mapbuf;
-        }
-        {
-            size_t n = strlen(ihx);
-            snprintf(main_sym, sizeof main_sym, "%.*s.sym", (int)(n > 4 ? n - 4 : n), ihx);
         }
         prof_init(mapf);
         if (sizef)

@@ -102,6 +102,10 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 # whatever Z80_ASM says, and
 # tests/c/test_wirek.c (step xunit-z80) the wire kernels when linked.
 # bench/kernz80.py: the cube's T-states per frame with and without each.
+# Z80 programs link through ports/z80/gcz80.py (ports/xbuild.sh): only the
+# functions and data _main reaches, from the .asm sdcc -c leaves beside
+# each object (sdld links whole modules); Z80_GC=0 (environment or make
+# command line) links the objects and rast8.lib whole, as before.
 Z80_ASM    ?= 1
 Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
@@ -114,7 +118,7 @@ Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter tra
 Z80_KSTAMP := $(XB)/z80-kernels.txt
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE) \
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX)
-XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)"
+XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)" $(if $(Z80_GC),Z80_GC="$(Z80_GC)")
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk vertex
 AVR_KERN0  := $(if $(filter 1,$(AVR_ASM)),$(AVR_KALL),$(filter $(AVR_KALL),$(AVR_ASM)))

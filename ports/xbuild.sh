@@ -93,7 +93,35 @@ PY
     ;;
   z80)
     bash ports/z80/sdcc.sh $Z80_CFLAGS "$@" -c -o "$base.rel" "$src" > "$log" 2>&1 || fail
-    python3 ports/z80/z80link.py "$out" "$base.rel" "${objs[@]}" $X/obj/plat_z80.rel $X/rast8.lib >> "$log" 2>&1 || {
+    link=("$base.rel" "${objs[@]}" $X/obj/plat_z80.rel $X/rast8.lib)
+    # Function-level dead-code removal (ports/z80/gcz80.py; Z80_GC=0: off):
+    # the sdasz80 sources sdcc -c left beside the program's objects and the
+    # library's members (ports/z80/*.s for the kernels), only what _main
+    # reaches, assembled in $base.gc/ and linked as objects (crt0 and
+    # z80.lib as before).  A program object without its .asm links whole.
+    progs=()
+    for o in "$base.rel" "${objs[@]}" $X/obj/plat_z80.rel; do
+      [ -e "${o%.*}.asm" ] && progs+=("${o%.*}.asm")
+    done
+    if [ "${Z80_GC:-1}" != 0 ] && [ ${#progs[@]} = $((${#objs[@]} + 2)) ]; then
+      members=()
+      for m in $(sdar t $X/rast8.lib); do
+        if [ -e "$X/obj/${m%.rel}.asm" ]; then members+=("$X/obj/${m%.rel}.asm"); else members+=("ports/z80/${m%.rel}.s"); fi
+      done
+      rm -rf "$base.gc"
+      gcs=$(python3 ports/z80/gcz80.py "$base.gc" "${progs[@]}" -- "${members[@]}" 2>> "$log") || fail
+      link=()
+      for g in $gcs; do
+        # as sdcc -c assembles its output (.sym: emu/z80sim's static
+        # functions) and mk/targets.mk the kernels
+        case $g in
+          *.asm) sdasz80 -plosgffw "${g%.*}.rel" "$g" >> "$log" 2>&1 || fail ;;
+          *) sdasz80 -o "${g%.*}.rel" "$g" >> "$log" 2>&1 || fail ;;
+        esac
+        link+=("${g%.*}.rel")
+      done
+    fi
+    python3 ports/z80/z80link.py "$out" "${link[@]}" >> "$log" 2>&1 || {
       [ $? = 3 ] && skip "$(grep -m1 'does not fit' "$log" | sed 's/^does not fit: //') (64 KB Z80 map)"; fail; }
     grep -o 'code=[0-9]* data=[0-9]*' "$log" | tail -1 | sed 's/code=\([0-9]*\) data=\([0-9]*\)/flash=\1 ram_static=\2/' > "$out.size"
     ;;
