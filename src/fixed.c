@@ -174,17 +174,12 @@ void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
                       r8_mul16(m->m[8], v->z) + 8192);
 }
 
-void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out)
-{
-    /* column k of m with v: a loop (once an object a frame; a third of
-     * the flash of three copies) */
-    r8_s16 *o = &out->x;
-    const r8_s16 *c = m->m;
-    r8_u8 k;
-    for (k = 0; k < 3; k++, c++)
-        o[k] = r8_sat16(r8_asr14(r8_mul16(c[0], v->x) + r8_mul16(c[3], v->y) +
-                                 r8_mul16(c[6], v->z) + 8192));
-}
+/* r8_mat_apply_t14: src/r8tfref.h (the Z80's: ports/z80/tframe_z80.s) */
+#ifndef R8_ASM_TFRAME
+#define TFREF_T14
+#include "r8tfref.h"
+#undef TFREF_T14
+#endif
 
 void r8_mat_apply16(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
 {
