@@ -3,10 +3,59 @@
  *   TFREF_ROT: rot_offset, an object's offset in camera units
  *              (src/transform.c; the kernel is r8k_rotoff, r8kern.h)
  *   TFREF_T14: r8_mat_apply_t14, the light in model space (src/fixed.c)
- * Without R8_ASM_TFRAME the library includes these sections in those two
+ *   TFREF_ROTATE: r8_mat_rotate, a pose's rotation matrix (src/fixed.c)
+ * Without R8_ASM_TFRAME the library includes these sections in those
  * files, each at the place its function always had (the same code on
  * every target); tests/targets/test_z80_kern.c includes them under other
  * names and compares the kernels with them on random inputs. */
+#ifdef TFREF_ROTATE
+/* r8_sat16(R8_ASR32C(q, 14)) on the 16-bit halves of q: floor(q / 2^14)
+ * is hi * 4 + (lo >> 14), in range when hi is in -2^13 .. 2^13 - 1 (no
+ * 32-bit shift or compare on 8-bit CPUs) */
+static r8_s16 sat_asr14(r8_s32 q)
+{
+    r8_u16 hi = (r8_u16)((r8_u32)q >> 16), lo = (r8_u16)((r8_u32)q & 0xFFFFu);
+    if ((r8_u16)(hi + 0x2000u) < 0x4000u)
+        return (r8_s16)((r8_u16)(hi << 2) | (lo >> 14));
+    if (hi & 0x8000u)
+        return (r8_s16)(-32767 - 1);
+    return 32767;
+}
+
+/* round(a * b / 2^14) as r8_mat_mul rounds each entry */
+static r8_s16 rmul(r8_s16 a, r8_s16 b)
+{
+    return sat_asr14(R8_MUL16(a, b) + 8192);
+}
+
+/* round((a * b + c * d) / 2^14), saturated */
+static r8_s16 rmul2(r8_s16 a, r8_s16 b, r8_s16 c, r8_s16 d)
+{
+    return sat_asr14(R8_MUL16(a, b) + R8_MUL16(c, d) + 8192);
+}
+
+void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az)
+{
+    /* Rx (Ry Rz) with the zero and one entries of each factor left out:
+     * the same entries, rounded the same way, as two r8_mat_mul calls
+     * on the three axis matrices, in 16 products instead of 54 */
+    r8_s16 sa = r8_sin(ax), ca = r8_cos(ax), sb = r8_sin(ay), cb = r8_cos(ay);
+    r8_s16 sc = r8_sin(az), cc = r8_cos(az);
+    r8_s16 t0 = rmul(cb, cc), t1 = rmul(cb, (r8_s16)-sc);
+    r8_s16 t6 = rmul((r8_s16)-sb, cc), t7 = rmul(sb, sc);
+    /* Ry Rz = [t0 t1 sb; sc cc 0; t6 t7 cb] */
+    m->m[0] = t0;
+    m->m[1] = t1;
+    m->m[2] = sb;
+    m->m[3] = rmul2(ca, sc, (r8_s16)-sa, t6);
+    m->m[4] = rmul2(ca, cc, (r8_s16)-sa, t7);
+    m->m[5] = rmul((r8_s16)-sa, cb);
+    m->m[6] = rmul2(sa, sc, ca, t6);
+    m->m[7] = rmul2(sa, cc, ca, t7);
+    m->m[8] = rmul(ca, cb);
+}
+#endif
+
 #ifdef TFREF_ROT
 /* a * b for a Q1.14 entry and a world-unit difference (|b| < 2^17):
  * |sum of three| < 2^31 for a rotation row. */

@@ -2,7 +2,7 @@
 ;; 4.2, sdas; issue 10).  In the Z80 archive with -DR8_ASM_TFRAME
 ;; (mk/targets.mk, Z80_ASM "tframe"); the C89 references are in
 ;; src/r8tfref.h (rot_offset, which src/transform.c uses without the
-;; macro, and r8_mat_apply_t14, src/fixed.c's), and
+;; macro, and src/fixed.c's r8_mat_apply_t14 and r8_mat_rotate), and
 ;; tests/targets/test_z80_kern.c (step xkern-z80) compares them on random
 ;; matrices and vectors.
 ;;
@@ -18,12 +18,20 @@
 ;;   out[k] = r8_sat16(floor((m[k] v.x + m[k+3] v.y + m[k+6] v.z + 8192)
 ;;            / 2^14)), the products from r8z_smul16, the sum in 32 bits.
 ;;
+;; void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az)
+;;   src/fixed.c's entries: the six sines and cosines from r8_sin (C),
+;;   then the 14 rounded products (rmul, rmul2: floor((sum + 8192) /
+;;   2^14), saturated) from r8z_smul16, the same sums in the same order.
+;;
 ;; sdcc's __sdcccall(1): the first two pointers in HL and DE, the rest on
-;; the stack (popped here: both return void).  IX is kept.
+;; the stack (popped here: all return void); r8_mat_rotate: m in HL, ax,
+;; ay, az one byte each on the stack.  IX is kept.
         .module tframe_z80
         .area   _CODE
         .globl  _r8k_rotoff
         .globl  _r8_mat_apply_t14
+        .globl  _r8_mat_rotate
+        .globl  _r8_sin
         .globl  r8z_umul16
         .globl  r8z_smul16
 
@@ -32,6 +40,7 @@ fe:     .ds     2               ; the row's first element
 fstep:  .ds     2               ; bytes from a row's first element to the next row's
 fcol:   .ds     2               ; bytes between a row's elements
 fp:     .ds     2               ; the next element
+fm:     .ds     2               ; m (r8_mat_rotate)
 fo:     .ds     2               ; the next output
 fd:     .ds     12              ; d[0..2] (r8k_rotoff), v (r8_mat_apply_t14)
 frow:   .ds     1               ; rows left
@@ -39,6 +48,18 @@ facc:   .ds     4               ; the row's sum
 fa:     .ds     2               ; |e|
 fb:     .ds     4               ; |d[j]|
 fsg:    .ds     1               ; bit 7: the product is negative
+fang:   .ds     3               ; ax, ay, az
+fsa:    .ds     2               ; sin ax, cos ax, ... (r8_mat_rotate)
+fca:    .ds     2
+fsb:    .ds     2
+fcb:    .ds     2
+fsc:    .ds     2
+fcc:    .ds     2
+fnsa:   .ds     2               ; -sin ax, -sin ay, -sin az
+fnsb:   .ds     2
+fnsc:   .ds     2
+ft6:    .ds     2               ; rmul(-sb, cc), rmul(sb, sc)
+ft7:    .ds     2
 
         .area   _CODE
 
@@ -237,25 +258,8 @@ _r8_mat_apply_t14:
         call    tterm
         ld      hl, (fd + 4)
         call    tterm
-        ld      hl, (facc + 2)  ; hi: the quotient is hi * 4 + (lo >> 14)
-        ld      bc, #0x2000
-        add     hl, bc
-        ld      a, h
-        cp      a, #0x40
-        jr      nc, 2$          ; hi outside -2^13 .. 2^13 - 1: saturate
-        ld      hl, (facc + 2)
-        ld      a, (facc + 1)
-        add     a, a
-        adc     hl, hl
-        add     a, a
-        adc     hl, hl
-        jr      3$
-2$:     ld      a, (facc + 3)
-        ld      hl, #0x7FFF
-        add     a, a
-        jr      nc, 3$
-        inc     hl              ; -32768
-3$:     ex      de, hl
+        call    fsat
+        ex      de, hl
         ld      hl, (fo)
         ld      (hl), e
         inc     hl
@@ -288,4 +292,138 @@ tterm:
         ld      l, c
         call    r8z_smul16      ; HL:DE = m * v
         FACC
+        ret
+
+;; HL = r8_sat16(floor(facc / 2^14)) (sat_asr14: hi * 4 + (lo >> 14) when
+;; hi, facc's high word, is in -2^13 .. 2^13 - 1)
+fsat:
+        ld      hl, (facc + 2)
+        ld      bc, #0x2000
+        add     hl, bc
+        ld      a, h
+        cp      a, #0x40
+        jr      nc, 1$          ; out of range: saturate
+        ld      hl, (facc + 2)
+        ld      a, (facc + 1)
+        add     a, a
+        adc     hl, hl
+        add     a, a
+        adc     hl, hl
+        ret
+1$:     ld      a, (facc + 3)
+        ld      hl, #0x7FFF
+        add     a, a
+        ret     nc
+        inc     hl              ; -32768
+        ret
+
+;; facc += HL * DE (signed)
+fmac:
+        call    r8z_smul16
+        FACC
+        ret
+
+;; facc = 8192 + (p1) * (p2)
+        .macro  RM1 p1, p2
+        ld      hl, #8192
+        ld      (facc), hl
+        ld      hl, #0
+        ld      (facc + 2), hl
+        ld      hl, (p1)
+        ld      de, (p2)
+        call    fmac
+        .endm
+
+;; facc += (p1) * (p2)
+        .macro  RM2 p1, p2
+        ld      hl, (p1)
+        ld      de, (p2)
+        call    fmac
+        .endm
+
+;; m[k] = HL
+        .macro  MPUT k
+        ex      de, hl
+        ld      hl, (fm)
+        ld      bc, #2 * k
+        add     hl, bc
+        ld      (hl), e
+        inc     hl
+        ld      (hl), d
+        .endm
+
+;; (q1) = r8_sin((q2) + q3)
+        .macro  SINOF q1, q2, q3
+        ld      a, (q2)
+        add     a, #q3
+        call    _r8_sin
+        ld      (q1), de
+        .endm
+
+;; (q1) = -(q2)
+        .macro  NEGOF q1, q2
+        ld      de, (q2)
+        xor     a, a
+        ld      h, a
+        ld      l, a
+        sbc     hl, de
+        ld      (q1), hl
+        .endm
+
+_r8_mat_rotate:
+        ld      (fm), hl
+        pop     bc              ; the return address
+        pop     de              ; E = ax, D = ay
+        ld      hl, #0
+        add     hl, sp
+        ld      a, (hl)         ; az
+        inc     sp
+        push    bc
+        ld      (fang), de
+        ld      (fang + 2), a
+        SINOF   fsa, fang, 0
+        SINOF   fca, fang, 64   ; r8_cos(a) = r8_sin(a + 64)
+        SINOF   fsb, fang+1, 0
+        SINOF   fcb, fang+1, 64
+        SINOF   fsc, fang+2, 0
+        SINOF   fcc, fang+2, 64
+        NEGOF   fnsa, fsa
+        NEGOF   fnsb, fsb
+        NEGOF   fnsc, fsc
+        RM1     fcb, fcc        ; m[0] = t0 = rmul(cb, cc)
+        call    fsat
+        MPUT    0
+        RM1     fcb, fnsc       ; m[1] = t1 = rmul(cb, -sc)
+        call    fsat
+        MPUT    1
+        ld      hl, (fsb)       ; m[2] = sb
+        MPUT    2
+        RM1     fnsb, fcc       ; t6 = rmul(-sb, cc)
+        call    fsat
+        ld      (ft6), hl
+        RM1     fsb, fsc        ; t7 = rmul(sb, sc)
+        call    fsat
+        ld      (ft7), hl
+        RM1     fca, fsc        ; m[3] = rmul2(ca, sc, -sa, t6)
+        RM2     fnsa, ft6
+        call    fsat
+        MPUT    3
+        RM1     fca, fcc        ; m[4] = rmul2(ca, cc, -sa, t7)
+        RM2     fnsa, ft7
+        call    fsat
+        MPUT    4
+        RM1     fnsa, fcb       ; m[5] = rmul(-sa, cb)
+        call    fsat
+        MPUT    5
+        RM1     fsa, fsc        ; m[6] = rmul2(sa, sc, ca, t6)
+        RM2     fca, ft6
+        call    fsat
+        MPUT    6
+        RM1     fsa, fcc        ; m[7] = rmul2(sa, cc, ca, t7)
+        RM2     fca, ft7
+        call    fsat
+        MPUT    7
+        RM1     fca, fcb        ; m[8] = rmul(ca, cb)
+        call    fsat
+        MPUT    8
         ret

@@ -24,11 +24,14 @@
  *     r8_project_recip) on random points, focal lengths, guard bands and
  *     projections (tests/targets/test_avr_kern.c's cases), every path of
  *     the reference counted; out, *m, *e and the result compared.
- *   r8k_rotoff and r8_mat_apply_t14 (tframe_z80.s): against
- *     src/r8tfref.h's references (rot_offset, r8_mat_apply_t14), renamed,
- *     on random matrices (Q1.14 rows, full 16-bit, zeros, the extremes),
- *     offsets d (world-sized, full 32-bit, high words 0, 1, -1, zeros) and
- *     vectors, both orders; every output and saturation side counted.
+ *   r8k_rotoff, r8_mat_apply_t14 and r8_mat_rotate (tframe_z80.s):
+ *     against src/r8tfref.h's references (rot_offset, r8_mat_apply_t14,
+ *     r8_mat_rotate), renamed, on random matrices (Q1.14 rows, full
+ *     16-bit, zeros, the extremes), offsets d (world-sized, full 32-bit,
+ *     high words 0, 1, -1, zeros) and vectors, both orders, every output
+ *     and saturation side counted; r8_mat_rotate on every angle of each
+ *     axis (the others random) and random triples, the words around m
+ *     kept.
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
@@ -65,15 +68,20 @@ r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
 /* tframe_z80.s's references (src/r8tfref.h), renamed */
 void r8_mat_apply_t14_ref(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out);
+void r8_mat_rotate_ref(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az);
 #define rot_offset r8k_rotoff_ref
 #define r8_mat_apply_t14 r8_mat_apply_t14_ref
+#define r8_mat_rotate r8_mat_rotate_ref
 #define TFREF_ROT
 #define TFREF_T14
+#define TFREF_ROTATE
 #include "r8tfref.h"
 #undef TFREF_ROT
 #undef TFREF_T14
+#undef TFREF_ROTATE
 #undef rot_offset
 #undef r8_mat_apply_t14
+#undef r8_mat_rotate
 
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
@@ -406,6 +414,55 @@ static void test_tframe_random(void)
         TEST_FAIL_MESSAGE("tframe: a case class too rare");
 }
 
+static void test_rotate(void)
+{
+    unsigned long i;
+    unsigned j;
+    r8_mat3 w[3], r;                     /* w[1] the kernel's, between guards */
+    r8_u8 a[3];                          /* (function scope: sdcc, DEVELOPERS.md) */
+    for (i = 0; i < 1024; i++) {
+        for (j = 0; j < 3; j++)
+            a[j] = (r8_u8)rnd();
+        if (i < 768)
+            a[i >> 8] = (r8_u8)i;         /* every angle of each axis */
+        memset(w, 0xA5, sizeof w);
+        memset(&r, 0x5A, sizeof r);
+        r8_mat_rotate_ref(&r, a[0], a[1], a[2]);
+        r8_mat_rotate(&w[1], a[0], a[1], a[2]);
+        if (memcmp(&w[1], &r, sizeof r) != 0) {
+            print_case("r8_mat_rotate", i);
+            for (j = 0; j < 3; j++) {
+                unity_print_long((long)a[j]);
+                unity_print(" ");
+            }
+            for (j = 0; j < 9; j++) {
+                unity_print_long((long)r.m[j]);
+                unity_print("/");
+                unity_print_long((long)w[1].m[j]);
+                unity_print(" ");
+            }
+            unity_print("\n");
+            for (j = 0; j < 9; j++)
+                TEST_ASSERT_EQUAL_INT16(r.m[j], w[1].m[j]);
+        }
+        for (j = 0; j < 9; j++)
+            if (w[0].m[j] != (r8_s16)0xA5A5u || w[2].m[j] != (r8_s16)0xA5A5u) {
+                print_case("r8_mat_rotate", i);
+                TEST_FAIL_MESSAGE("r8_mat_rotate wrote outside m");
+            }
+    }
+    /* the identity and a quarter turn about y, exactly */
+    r8_mat_rotate(&r, 0, 0, 0);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[0]);
+    TEST_ASSERT_EQUAL_INT16(0, r.m[1]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[4]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[8]);
+    r8_mat_rotate(&r, 0, 64, 0);
+    TEST_ASSERT_EQUAL_INT16(0, r.m[0]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[2]);
+    TEST_ASSERT_EQUAL_INT16(-16384, r.m[6]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -416,6 +473,7 @@ int main(void)
     RUN_TEST(test_fill_random);
     RUN_TEST(test_xform_random);
     RUN_TEST(test_tframe_random);
+    RUN_TEST(test_rotate);
     RUN_TEST(test_project_random);
     RUN_TEST(test_edge_random);
     return UNITY_END();
