@@ -356,11 +356,11 @@ static void test_tframe_random(void)
 {
     unsigned long i;
     unsigned j, sat_hi = 0, sat_lo = 0, tr_n = 0;
+    r8_mat3 m, m0;                      /* (function scope: sdcc, DEVELOPERS.md) */
+    r8_s32 d[3], d0[3];
+    r8_vec3l oa, or_;
+    r8_vec3 v, v0, ta, tr;
     for (i = 0; i < TFRAME_CASES; i++) {
-        r8_mat3 m, m0;
-        r8_s32 d[3], d0[3];
-        r8_vec3l oa, or_;
-        r8_vec3 v, v0, ta, tr;
         unsigned c = rndn(5);
         int t = (int)rndn(2);
         for (j = 0; j < 9; j++)
