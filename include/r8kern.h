@@ -52,6 +52,13 @@ void r8k_trap(r8_trapfill *t, r8_interp *l, r8_interp *r, r8_u16 rows);
  * t.  v points at three r8_s16 in R8_FLASH (a mesh vertex). */
 void r8k_xform(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3l *out);
 
+/* out = m * d (transpose: m's transpose * d), each row's three Q1.14 x
+ * r8_s32 products summed in 32 bits (wrapping), plus 512, shifted right
+ * 10 with floor: r8_tf_frame's object offsets.  The Z80's kernel
+ * (ports/z80/tframe_z80.s, R8_ASM_TFRAME); reference rot_offset in
+ * src/r8tfref.h. */
+void r8k_rotoff(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int transpose);
+
 /* c (camera space, z >= 1) to 12.4 screen coordinates out[0], out[1]
  * through p, exactly as r8_project (r8fixed.h); *m, *e get the
  * reciprocal of c->z as r8_recip gives it (the depth is taken from it).

@@ -106,51 +106,12 @@ void r8_cross3(const r8_vec3 *a, const r8_vec3 *b, r8_vec3l *c)
     c->z = r8_mul16(a->x, b->y) - r8_mul16(a->y, b->x);
 }
 
-/* r8_sat16(R8_ASR32C(q, 14)) on the 16-bit halves of q: floor(q / 2^14)
- * is hi * 4 + (lo >> 14), in range when hi is in -2^13 .. 2^13 - 1 (no
- * 32-bit shift or compare on 8-bit CPUs) */
-static r8_s16 sat_asr14(r8_s32 q)
-{
-    r8_u16 hi = (r8_u16)((r8_u32)q >> 16), lo = (r8_u16)((r8_u32)q & 0xFFFFu);
-    if ((r8_u16)(hi + 0x2000u) < 0x4000u)
-        return (r8_s16)((r8_u16)(hi << 2) | (lo >> 14));
-    if (hi & 0x8000u)
-        return (r8_s16)(-32767 - 1);
-    return 32767;
-}
-
-/* round(a * b / 2^14) as r8_mat_mul rounds each entry */
-static r8_s16 rmul(r8_s16 a, r8_s16 b)
-{
-    return sat_asr14(R8_MUL16(a, b) + 8192);
-}
-
-/* round((a * b + c * d) / 2^14), saturated */
-static r8_s16 rmul2(r8_s16 a, r8_s16 b, r8_s16 c, r8_s16 d)
-{
-    return sat_asr14(R8_MUL16(a, b) + R8_MUL16(c, d) + 8192);
-}
-
-void r8_mat_rotate(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az)
-{
-    /* Rx (Ry Rz) with the zero and one entries of each factor left out:
-     * the same entries, rounded the same way, as two r8_mat_mul calls
-     * on the three axis matrices, in 16 products instead of 54 */
-    r8_s16 sa = r8_sin(ax), ca = r8_cos(ax), sb = r8_sin(ay), cb = r8_cos(ay);
-    r8_s16 sc = r8_sin(az), cc = r8_cos(az);
-    r8_s16 t0 = rmul(cb, cc), t1 = rmul(cb, (r8_s16)-sc);
-    r8_s16 t6 = rmul((r8_s16)-sb, cc), t7 = rmul(sb, sc);
-    /* Ry Rz = [t0 t1 sb; sc cc 0; t6 t7 cb] */
-    m->m[0] = t0;
-    m->m[1] = t1;
-    m->m[2] = sb;
-    m->m[3] = rmul2(ca, sc, (r8_s16)-sa, t6);
-    m->m[4] = rmul2(ca, cc, (r8_s16)-sa, t7);
-    m->m[5] = rmul((r8_s16)-sa, cb);
-    m->m[6] = rmul2(sa, sc, ca, t6);
-    m->m[7] = rmul2(sa, cc, ca, t7);
-    m->m[8] = rmul(ca, cb);
-}
+/* r8_mat_rotate: src/r8tfref.h (the Z80's: ports/z80/tframe_z80.s) */
+#ifndef R8_ASM_TFRAME
+#define TFREF_ROTATE
+#include "r8tfref.h"
+#undef TFREF_ROTATE
+#endif
 
 void r8_mat_mul(const r8_mat3 *a, const r8_mat3 *b, r8_mat3 *c)
 {
@@ -174,17 +135,12 @@ void r8_mat_apply(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
                       r8_mul16(m->m[8], v->z) + 8192);
 }
 
-void r8_mat_apply_t14(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out)
-{
-    /* column k of m with v: a loop (once an object a frame; a third of
-     * the flash of three copies) */
-    r8_s16 *o = &out->x;
-    const r8_s16 *c = m->m;
-    r8_u8 k;
-    for (k = 0; k < 3; k++, c++)
-        o[k] = r8_sat16(r8_asr14(r8_mul16(c[0], v->x) + r8_mul16(c[3], v->y) +
-                                 r8_mul16(c[6], v->z) + 8192));
-}
+/* r8_mat_apply_t14: src/r8tfref.h (the Z80's: ports/z80/tframe_z80.s) */
+#ifndef R8_ASM_TFRAME
+#define TFREF_T14
+#include "r8tfref.h"
+#undef TFREF_T14
+#endif
 
 void r8_mat_apply16(const r8_mat3 *m, const r8_vec3 *v, r8_vec3l *out)
 {

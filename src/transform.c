@@ -9,32 +9,16 @@
 #include "r8int.h"
 #include "r8kern.h"
 
-/* a * b for a Q1.14 entry and a world-unit difference (|b| < 2^17):
- * |sum of three| < 2^31 for a rotation row. */
-static r8_s32 mulq(r8_s16 a, r8_s32 b)
-{
-    r8_s32 p = a;
-    p *= b;
-    return p;
-}
-
-/* out = m * d >> 10 (rounded): world units -> camera units (<< 4) */
-static void rot_offset(const r8_mat3 *m, const r8_s32 *d, r8_vec3l *out, int transpose)
-{
-    r8_s32 *o = &out->x;
-    r8_u8 i, j, row = 3, col = 1;     /* one loop for both: less flash */
-    if (transpose) {
-        row = 1;
-        col = 3;
-    }
-    for (i = 0; i < 3; i++) {
-        const r8_s16 *e = m->m + i * row;
-        r8_s32 s = 0;
-        for (j = 0; j < 3; j++, e += col)
-            s += mulq(*e, d[j]);
-        o[i] = r8_asr32(s + 512, 10);
-    }
-}
+/* rot_offset(m, d, out, transpose): out = m (or its transpose) * d >> 10,
+ * rounded (world units -> camera units << 4); src/r8tfref.h, or the Z80's
+ * r8k_rotoff (ports/z80/tframe_z80.s) */
+#ifdef R8_ASM_TFRAME
+#define rot_offset r8k_rotoff
+#else
+#define TFREF_ROT
+#include "r8tfref.h"
+#undef TFREF_ROT
+#endif
 
 /* World -> camera rotation of cam into c; 0 when it is the identity.
  * R8_CAM_FIXED: a build whose caller has proved its camera never turns

@@ -24,6 +24,14 @@
  *     r8_project_recip) on random points, focal lengths, guard bands and
  *     projections (tests/targets/test_avr_kern.c's cases), every path of
  *     the reference counted; out, *m, *e and the result compared.
+ *   r8k_rotoff, r8_mat_apply_t14 and r8_mat_rotate (tframe_z80.s):
+ *     against src/r8tfref.h's references (rot_offset, r8_mat_apply_t14,
+ *     r8_mat_rotate), renamed, on random matrices (Q1.14 rows, full
+ *     16-bit, zeros, the extremes), offsets d (world-sized, full 32-bit,
+ *     high words 0, 1, -1, zeros) and vectors, both orders, every output
+ *     and saturation side counted; r8_mat_rotate on every angle of each
+ *     axis (the others random) and random triples, the words around m
+ *     kept.
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
@@ -58,6 +66,23 @@ void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 
 r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 
+/* tframe_z80.s's references (src/r8tfref.h), renamed */
+void r8_mat_apply_t14_ref(const r8_mat3 *m, const r8_vec3 *v, r8_vec3 *out);
+void r8_mat_rotate_ref(r8_mat3 *m, r8_u8 ax, r8_u8 ay, r8_u8 az);
+#define rot_offset r8k_rotoff_ref
+#define r8_mat_apply_t14 r8_mat_apply_t14_ref
+#define r8_mat_rotate r8_mat_rotate_ref
+#define TFREF_ROT
+#define TFREF_T14
+#define TFREF_ROTATE
+#include "r8tfref.h"
+#undef TFREF_ROT
+#undef TFREF_T14
+#undef TFREF_ROTATE
+#undef rot_offset
+#undef r8_mat_apply_t14
+#undef r8_mat_rotate
+
 #ifndef TRAP_CASES
 #define TRAP_CASES 3000
 #endif
@@ -69,6 +94,9 @@ r8_s32 r8z_mul16s(r8_s16 a, r8_s16 b); /* mulz_z80.s */
 #endif
 #ifndef XFORM_CASES
 #define XFORM_CASES 2000
+#endif
+#ifndef TFRAME_CASES
+#define TFRAME_CASES 3000
 #endif
 #ifndef MUL_CASES
 #define MUL_CASES 3000
@@ -286,6 +314,155 @@ static void test_fill_random(void)
     TEST_ASSERT_EQUAL_UINT8(0x5A, band_ref[4098]);
 }
 
+/* ---- r8k_rotoff, r8_mat_apply_t14 (tframe_z80.s) ---- */
+static r8_s16 rnd_elem(unsigned c)
+{
+    switch (c) {
+    case 0:
+        return rnds(-16384, 16384);             /* a rotation's range */
+    case 1:
+        return (r8_s16)rnd();
+    case 2:
+        return 0;
+    case 3:
+        return rndn(2) ? 32767 : (r8_s16)(-32767 - 1);
+    default:
+        return rnds(-300, 300);
+    }
+}
+
+static r8_s32 rnd_d(void)
+{
+    r8_u32 u = rnd();
+    switch (rndn(8)) {
+    case 0:
+        return 0;
+    case 1:
+        return (r8_s32)rnds(-32767, 32767);
+    case 2:                                     /* |d| < 2^17, as r8_tf_frame's */
+        return rndn(2) ? (r8_s32)(u & 0x1FFFFUL) : -(r8_s32)(u & 0x1FFFFUL);
+    case 3:
+        return (r8_s32)((u & 0xFFFFUL) | 0x10000UL);    /* high word 1 */
+    case 4:
+        return (r8_s32)((u & 0xFFFFUL) | 0xFFFF0000UL); /* high word -1 */
+    case 5:
+        return rndn(2) ? (r8_s32)0x7FFFFFFFL : (r8_s32)(-0x7FFFFFFFL - 1);
+    default:
+        return (r8_s32)u;
+    }
+}
+
+static void test_tframe_random(void)
+{
+    unsigned long i;
+    unsigned j, sat_hi = 0, sat_lo = 0, tr_n = 0;
+    r8_mat3 m, m0;                      /* (function scope: sdcc, DEVELOPERS.md) */
+    r8_s32 d[3], d0[3];
+    r8_vec3l oa, or_;
+    r8_vec3 v, v0, ta, tr;
+    for (i = 0; i < TFRAME_CASES; i++) {
+        unsigned c = rndn(5);
+        int t = (int)rndn(2);
+        for (j = 0; j < 9; j++)
+            m.m[j] = rnd_elem(rndn(4) == 0 ? rndn(5) : c);
+        for (j = 0; j < 3; j++)
+            d[j] = rnd_d();
+        v.x = rnd_elem(rndn(5));
+        v.y = rnd_elem(rndn(5));
+        v.z = rnd_elem(rndn(5));
+        m0 = m;
+        v0 = v;
+        memcpy(d0, d, sizeof d);
+        memset(&oa, 0x5A, sizeof oa);
+        memset(&or_, 0xA5, sizeof or_);
+        r8k_rotoff_ref(&m, d, &or_, t);
+        r8k_rotoff(&m, d, &oa, t);
+        tr_n += (unsigned)t;
+        if (memcmp(&oa, &or_, sizeof oa) != 0 || memcmp(&m, &m0, sizeof m) != 0 ||
+            memcmp(d, d0, sizeof d) != 0) {
+            print_case("r8k_rotoff", i);
+            TEST_ASSERT_EQUAL_INT32(or_.x, oa.x);
+            TEST_ASSERT_EQUAL_INT32(or_.y, oa.y);
+            TEST_ASSERT_EQUAL_INT32(or_.z, oa.z);
+            TEST_FAIL_MESSAGE("r8k_rotoff changed m or d");
+        }
+        memset(&ta, 0x5A, sizeof ta);
+        memset(&tr, 0xA5, sizeof tr);
+        r8_mat_apply_t14_ref(&m, &v, &tr);
+        r8_mat_apply_t14(&m, &v, &ta);
+        if (memcmp(&ta, &tr, sizeof ta) != 0 || memcmp(&m, &m0, sizeof m) != 0 ||
+            memcmp(&v, &v0, sizeof v) != 0) {
+            print_case("r8_mat_apply_t14", i);
+            TEST_ASSERT_EQUAL_INT16(tr.x, ta.x);
+            TEST_ASSERT_EQUAL_INT16(tr.y, ta.y);
+            TEST_ASSERT_EQUAL_INT16(tr.z, ta.z);
+            TEST_FAIL_MESSAGE("r8_mat_apply_t14 changed m or v");
+        }
+        sat_hi += (tr.x == 32767) + (tr.y == 32767) + (tr.z == 32767);
+        sat_lo += (tr.x == -32767 - 1) + (tr.y == -32767 - 1) + (tr.z == -32767 - 1);
+    }
+    unity_print("tframe: ");
+    unity_print_long((long)i);
+    unity_print(" cases, transposed ");
+    unity_print_long((long)tr_n);
+    unity_print(", saturated ");
+    unity_print_long((long)sat_hi);
+    unity_print(" / ");
+    unity_print_long((long)sat_lo);
+    unity_print("\n");
+    if (sat_hi < 20 || sat_lo < 20 || tr_n < TFRAME_CASES / 3)
+        TEST_FAIL_MESSAGE("tframe: a case class too rare");
+}
+
+static void test_rotate(void)
+{
+    unsigned long i;
+    unsigned j;
+    r8_mat3 w[3], r;                     /* w[1] the kernel's, between guards */
+    r8_u8 a[3];                          /* (function scope: sdcc, DEVELOPERS.md) */
+    for (i = 0; i < 1024; i++) {
+        for (j = 0; j < 3; j++)
+            a[j] = (r8_u8)rnd();
+        if (i < 768)
+            a[i >> 8] = (r8_u8)i;         /* every angle of each axis */
+        memset(w, 0xA5, sizeof w);
+        memset(&r, 0x5A, sizeof r);
+        r8_mat_rotate_ref(&r, a[0], a[1], a[2]);
+        r8_mat_rotate(&w[1], a[0], a[1], a[2]);
+        if (memcmp(&w[1], &r, sizeof r) != 0) {
+            print_case("r8_mat_rotate", i);
+            for (j = 0; j < 3; j++) {
+                unity_print_long((long)a[j]);
+                unity_print(" ");
+            }
+            for (j = 0; j < 9; j++) {
+                unity_print_long((long)r.m[j]);
+                unity_print("/");
+                unity_print_long((long)w[1].m[j]);
+                unity_print(" ");
+            }
+            unity_print("\n");
+            for (j = 0; j < 9; j++)
+                TEST_ASSERT_EQUAL_INT16(r.m[j], w[1].m[j]);
+        }
+        for (j = 0; j < 9; j++)
+            if (w[0].m[j] != (r8_s16)0xA5A5u || w[2].m[j] != (r8_s16)0xA5A5u) {
+                print_case("r8_mat_rotate", i);
+                TEST_FAIL_MESSAGE("r8_mat_rotate wrote outside m");
+            }
+    }
+    /* the identity and a quarter turn about y, exactly */
+    r8_mat_rotate(&r, 0, 0, 0);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[0]);
+    TEST_ASSERT_EQUAL_INT16(0, r.m[1]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[4]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[8]);
+    r8_mat_rotate(&r, 0, 64, 0);
+    TEST_ASSERT_EQUAL_INT16(0, r.m[0]);
+    TEST_ASSERT_EQUAL_INT16(16384, r.m[2]);
+    TEST_ASSERT_EQUAL_INT16(-16384, r.m[6]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -295,6 +472,8 @@ int main(void)
     RUN_TEST(test_trap_many_rows);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_xform_random);
+    RUN_TEST(test_tframe_random);
+    RUN_TEST(test_rotate);
     RUN_TEST(test_project_random);
     RUN_TEST(test_edge_random);
     return UNITY_END();
