@@ -840,12 +840,23 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = R8_PAINTER(st->method);
     const r8_object *ob = &sc->objects[i];
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    /* (painter, normal: constants where the build fixes them, as cc65
+     * folds no local variable: the depth keys and cull paths go) */
+#if R8_W_PAINTER
+    int painter = R8_PAINTER(st->method);
+#else
+#define painter 0
+#endif
+#ifdef R8_CFG_CULL
+#define normal (R8_CFG_CULL == R8_CULL_NORMAL)
+#else
+    r8_u8 normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+#endif
+    r8_u8 vsh = R8_VSH(st);
 #ifndef __SDCC
     r8_u8 kcull;
 #endif
@@ -1086,6 +1097,8 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     st->npoly = (r8_u16)(st->npoly + fw.npoly);   /* those r8k_fwalk put */
 #endif
 }
+#undef painter
+#undef normal
 
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
