@@ -107,7 +107,35 @@ static int fw_spin_bad(const app_cfg *c)
  * normals, the reads of normals from RAM. */
 #include "render.c"
 #define R8_SCAN_GUARDED  /* only the renderer scans: inside its guard band */
+/* 6502 (R8_ASM_SCANX): ports/6502/scanx_6502.s hands r8_scanx_fill_c,
+ * scan.c's C version, only a call with a Judd test pending, a band not
+ * PAGE1, or a polygon whose next row lies above the band.  This
+ * firmware's configuration has none of them: the normal cull (judd 0),
+ * PAGE1 bands, and with no clipper and the fused fill alone every face
+ * draw_face meets is a mesh face started at the band's first row
+ * (r8_scanx_begin) or going on where the band above stopped (as the
+ * AVR's R8_BANDK_ONLY).  So the C version is left out (1,328 B): it is
+ * compiled under another name nothing calls, and r8_scanx_fill_c below
+ * stops the firmware if it were ever reached. */
+#if defined(__CC65__) && defined(R8_ASM_SCANX) && defined(R8_CFG_CULL) && defined(R8_NO_CLIP) && \
+    defined(R8_FAST_ONLY)
+#if R8_CFG_CULL == R8_CULL_NORMAL && R8_CFG_FORMAT == R8_FMT_PAGE1
+#define FW_NO_SCANX_C 1
+#endif
+#endif
+#ifdef FW_NO_SCANX_C
+#define r8_scanx_fill_c fw_scanx_fill_unused
+#endif
 #include "scan.c"
+#ifdef FW_NO_SCANX_C
+#undef r8_scanx_fill_c
+void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+{
+    (void)s; (void)ylimit; (void)judd; (void)fb; (void)level;
+    plat_exit(APP_E_CFG);          /* (never: see above) */
+}
+#endif
 #include "transform.c"
 #include "cull.c"
 #if !defined(R8_NO_WIRE) && !defined(R8_PLAN_ONLY)
