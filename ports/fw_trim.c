@@ -7,7 +7,7 @@
  *                 R8_E_ARG ("codec not built in").
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
- *                 part costs); on AVR src/wire.c too, its codecs chosen
+ *                 part costs); on AVR and the 6502 src/wire.c too, its codecs chosen
  *                 at compile time (R8_NO_LZ77).
  *   FW_SPIN       a mesh scene's firmware (R8_NO_PORTAL: objects that
  *                 only turn in place, no walks, no moving objects, and a
@@ -145,12 +145,14 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
-#if defined(__AVR__) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+#if (defined(__AVR__) || defined(__CC65__)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
 /* the wire encoder with this firmware's codec switches (fwdefs.sh: it
  * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
- * compile time): the archive's wire.o, built with LZ77, is not linked.
- * (The 6502 and Z80 keep the archive's: their r8_tx_band kernels; the
- * maze's too: raycast.c has a cfg_ok of its own.) */
+ * compile time, and its stream fixed: R8_TXCFG_* in fw_app.c): the
+ * archive's wire.o, built with LZ77, is not linked.  On the 6502 too
+ * (txband_6502.s then hands its other bands to this unit's
+ * r8_tx_band_c).  (The Z80 keeps the archive's; the maze's firmware
+ * too: raycast.c has a cfg_ok of its own.) */
 #include "wire.c"
 #endif
 #ifndef R8_NO_RAY
