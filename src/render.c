@@ -1460,10 +1460,12 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     /* the band and depth clears: r8k_fill (r8kern.h; AVR: fill.S) */
-    if (fb->format == R8_FMT_PAGE1)
-        r8k_fill(fb->buf, 0, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
-    else
+#ifndef R8_PAGE1_ONLY          /* (r8config.h: page-1 bands only) */
+    if (fb->format != R8_FMT_PAGE1)
         r8k_fill(fb->buf, 0, r8_fb_bytes(fb->format, fb->width, fb->rows));
+    else
+#endif
+        r8k_fill(fb->buf, 0, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
 #if R8_W_DEPTH
     if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
         r8k_fill(st->depth, 0, st->depth_bytes);
