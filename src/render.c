@@ -739,6 +739,7 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
         vp[i] = st->sv + ((unsigned)idx[i] << R8_VSH(st));
 }
 
+#if R8_W_PAINTER
 /* Painter's key of a polygon whose camera-space z summed over its n
  * vertices is zsum: the centroid's depth in 64 buckets between znear
  * and zfar, 0 = far .. 63 = near (the seed's midpoint sort). */
@@ -814,6 +815,7 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
         tz *= n;
     return sx + tz;
 }
+#endif
 
 /* R8_FWALK_K: r8_bucket_object walks the faces with r8k_fwalk (AVR:
  * ports/avr/fwalk.S; the host: kern.c's reference) and takes the ones
@@ -1066,6 +1068,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #if R8_FWALK_K
     bucket:
 #endif
+#if R8_W_PAINTER
         if (painter) {
 #ifndef R8_NO_BSP
             if (bsp)
@@ -1081,7 +1084,11 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 r8_u16 b = band_of(st, top, r->cfg.band);
                 st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
             }
-        } else {
+        } else
+#else
+        (void)zsum;
+#endif
+        {
             key = band_of(st, top, r->cfg.band);
         }
         st->next[id] = st->heads[key];
@@ -1104,7 +1111,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc;
+#if R8_W_PAINTER
     int painter;
+#endif
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
@@ -1115,7 +1124,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
 #endif
     sc = st->scene;
+#if R8_W_PAINTER
     painter = R8_PAINTER(st->method);
+#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -1139,6 +1150,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* painter's: chain the buckets, far to near, into the draw list;
      * band buckets stay apart (r8_render_band merges them) */
     cur = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
     for (k = st->nheads; painter && k-- > 0;) {
         r8_fid h = st->heads[k];
         if (h != (r8_fid)R8_FID_END) {
@@ -1149,6 +1161,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             cur = h;
         }
     }
+#endif
     st->first = cur;
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
