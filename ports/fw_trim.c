@@ -52,7 +52,35 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
                        * flash normals): no r8_cull_front (6502: 795 B) */
 #endif
+/* 6502 (R8_ASM_PROJECT): ports/6502/proj_6502.s hands r8_project_recip
+ * a point only when its shift sh <= 0, its guard band is 1024 px or
+ * more, or x or y is outside +-32767.  Here r8_proj_init sets the guard
+ * (900 px) and fw_spin_bad proves x and y within 16 (|d| + radius) + 4
+ * <= 32644: only sh <= 0 is left, where the C version projects the axis
+ * alone (to cx, cy) and refuses any other point.  So that is all the
+ * r8_project_recip below does; proj.c's, under another name, is
+ * linked only if something else calls it (r8_project). */
+#if defined(__CC65__) && defined(R8_ASM_PROJECT)
+#define FW_PROJ_AXIS 1
+#include "r8fixed.h"
+#define r8_project_recip fw_project_recip_full
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy);
+#endif
 #include "proj.c"
+#ifdef FW_PROJ_AXIS
+#undef r8_project_recip
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy)
+{
+    (void)m; (void)e;
+    if (v->x || v->y)
+        return 1;
+    *sx = p->cx;
+    *sy = p->cy;
+    return 0;
+}
+#endif
 /* 1 unless the demo scene's camera is not turned and no vertex can
  * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
  * |dz| + radius (world units) against 2040 (16 x 2040 + rounding <
