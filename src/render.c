@@ -78,6 +78,11 @@
 #define CFG_CLIP(c) ((c)->clip)
 #define CFG_POOL(c) ((c)->pool)
 #endif
+/* R8_VSH1: a build whose screen vertices are always 2 r8_s16 (r8int.h:
+ * R8_VSH(st) is 1): one branch of the vertex pointer code */
+#if !(R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE)
+#define R8_VSH1 1
+#endif
 /* and, with the normal cull and no clipper, every face draw_face meets
  * is a mesh face whose rows start at the band's first row or below (no
  * Judd test): r8k_scanband alone, without r8_scanx_fill (R8_BANDK_ONLY;
@@ -697,9 +702,14 @@ static r8_u16 band_of(const r8_state *st, r8_s16 y, r8_s16 band)
 {
     if (y < 0)
         return 0;
+#if defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    (void)st; (void)band;
+    return (r8_u16)((r8_u16)y >> 3);   /* (st->bsh: r8_render_init) */
+#else
     if (st->bsh >= 0)
         return (r8_u16)((r8_u16)y >> st->bsh);
     return (r8_u16)((r8_u16)y / (r8_u16)band);
+#endif
 }
 
 /* Rows [*top, *bot) of the box [xmin, xmax] x [ymin, ymax] (12.4); 0 if
@@ -731,6 +741,7 @@ static int face_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n, r8_s1
 }
 #endif
 
+#ifndef R8_NO_CLIP
 /* Vertex pointers of the polygon over screen vertex list idx. */
 static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16 **vp)
 {
@@ -738,6 +749,7 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
     for (i = 0; i < n; i++)
         vp[i] = st->sv + ((unsigned)idx[i] << R8_VSH(st));
 }
+#endif
 
 #if R8_W_PAINTER
 /* Painter's key of a polygon whose camera-space z summed over its n
@@ -1020,7 +1032,12 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             r8_s16 x;
             if (j)
                 vi[j] = R8_RDU8(&fc->v[j]);
+#ifdef R8_VSH1
+            v = base + 2u * vi[j];
+            (void)vsh;
+#else
             v = base + (vsh == 1 ? 2u * vi[j] : 4u * vi[j]);   /* no variable shift */
+#endif
 #ifndef R8_NO_CLIP
             vp[j] = v;
 #endif
@@ -1183,26 +1200,30 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
 {
     const r8_scene *sc = st->scene;
     r8_u8 i = 0, n, j;
+#ifndef R8_NO_CLIP                      /* (else no clipped polygons) */
     if (g >= st->nfaces) {
         const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
         face_vp(st, cp->idx, cp->n, vp);
         *oi = 255;
         return cp->n;
     }
+#endif
     while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
         i++;
     {
         const r8_objx *o = &st->obj[i];
         const r8_face *fc = &sc->objects[i].mesh->faces[g - o->fbase];
         const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-        r8_u8 vsh = R8_VSH(st);
         n = R8_RDU8(&fc->n);
-        if (vsh == 1) {                 /* no run-time multiply */
-            for (j = 0; j < n; j++)
-                vp[j] = base + 2u * R8_RDU8(&fc->v[j]);
-        } else {
+#ifndef R8_VSH1
+        if (R8_VSH(st) != 1) {
             for (j = 0; j < n; j++)
                 vp[j] = base + 4u * R8_RDU8(&fc->v[j]);
+        } else
+#endif
+        {                               /* no run-time multiply */
+            for (j = 0; j < n; j++)
+                vp[j] = base + 2u * R8_RDU8(&fc->v[j]);
         }
     }
     *oi = i;
@@ -1213,8 +1234,10 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
 static r8_u8 face_level(const r8_state *st, r8_fid g, r8_u8 oi)
 {
     const r8_objx *o;
+#ifndef R8_NO_CLIP
     if (oi == 255)
         return st->cpoly[g - st->nfaces].level;
+#endif
     o = &st->obj[oi];
     return r8_face_level(st, o, &st->scene->objects[oi], (r8_u16)(g - o->fbase));
 }

@@ -282,13 +282,20 @@ void r8_tf_vertices(r8_state *st, int lazy)
         r8_u16 k, g = o->vbase;
         if (o->hidden)
             continue;
-        if (lazy) {
+#if !defined(R8_CFG_CULL) || R8_CFG_CULL != R8_CULL_NORMAL
+        if (!lazy) {
+            for (k = 0; k < me->nverts; k++, mv += 3)
+                r8_tf_vertex(st, o, mv, g++);
+            continue;
+        }
+#else
+        (void)lazy;    /* (render.c: always, with the normal cull) */
+        (void)mv;
+#endif
+        {
             r8_s16 *out = st->sv + ((unsigned)g << vsh);
             for (k = 0; k < me->nverts; k++, out += 1u << vsh)
                 *out = R8_VX_TODO;
-            continue;
         }
-        for (k = 0; k < me->nverts; k++, mv += 3)
-            r8_tf_vertex(st, o, mv, g++);
     }
 }
