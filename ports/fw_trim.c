@@ -7,7 +7,7 @@
  *                 R8_E_ARG ("codec not built in").
  *   FW_RENDER     src/render.c itself, built with this firmware's
  *                 R8_NO_* switches (docs/benchmarks.md: the flash each
- *                 part costs); on AVR src/wire.c too, its codecs chosen
+ *                 part costs); on AVR and the 6502 src/wire.c too, its codecs chosen
  *                 at compile time (R8_NO_LZ77).
  *   FW_SPIN       a mesh scene's firmware (R8_NO_PORTAL: objects that
  *                 only turn in place, no walks, no moving objects, and a
@@ -18,7 +18,7 @@
  *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
- *                 On AVR also R8_CULL16: render.c's back-face test is
+ *                 On AVR and the 6502 also R8_CULL16: render.c's back-face test is
  *                 r8k_cull alone (16 bits, flash normals), without the
  *                 32-bit r8_cull_front (564 B); fw_spin_bad proves the
  *                 eye within |d| <= 1000 units of each object and its
@@ -48,11 +48,39 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #endif
 #define R8_PROJ16
 #define R8_CAM_FIXED
-#if defined(__AVR__) && defined(R8_NO_RT_NORMALS)
+#if (defined(__AVR__) || defined(__CC65__)) && defined(R8_NO_RT_NORMALS)
 #define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
-                       * flash normals): no r8_cull_front */
+                       * flash normals): no r8_cull_front (6502: 795 B) */
+#endif
+/* 6502 (R8_ASM_PROJECT): ports/6502/proj_6502.s hands r8_project_recip
+ * a point only when its shift sh <= 0, its guard band is 1024 px or
+ * more, or x or y is outside +-32767.  Here r8_proj_init sets the guard
+ * (900 px) and fw_spin_bad proves x and y within 16 (|d| + radius) + 4
+ * <= 32644: only sh <= 0 is left, where the C version projects the axis
+ * alone (to cx, cy) and refuses any other point.  So that is all the
+ * r8_project_recip below does; proj.c's, under another name, is
+ * linked only if something else calls it (r8_project). */
+#if defined(__CC65__) && defined(R8_ASM_PROJECT)
+#define FW_PROJ_AXIS 1
+#include "r8fixed.h"
+#define r8_project_recip fw_project_recip_full
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy);
 #endif
 #include "proj.c"
+#ifdef FW_PROJ_AXIS
+#undef r8_project_recip
+int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
+                     r8_s16 *sx, r8_s16 *sy)
+{
+    (void)m; (void)e;
+    if (v->x || v->y)
+        return 1;
+    *sx = p->cx;
+    *sy = p->cy;
+    return 0;
+}
+#endif
 /* 1 unless the demo scene's camera is not turned and no vertex can
  * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
  * |dz| + radius (world units) against 2040 (16 x 2040 + rounding <
@@ -107,7 +135,35 @@ static int fw_spin_bad(const app_cfg *c)
  * normals, the reads of normals from RAM. */
 #include "render.c"
 #define R8_SCAN_GUARDED  /* only the renderer scans: inside its guard band */
+/* 6502 (R8_ASM_SCANX): ports/6502/scanx_6502.s hands r8_scanx_fill_c,
+ * scan.c's C version, only a call with a Judd test pending, a band not
+ * PAGE1, or a polygon whose next row lies above the band.  This
+ * firmware's configuration has none of them: the normal cull (judd 0),
+ * PAGE1 bands, and with no clipper and the fused fill alone every face
+ * draw_face meets is a mesh face started at the band's first row
+ * (r8_scanx_begin) or going on where the band above stopped (as the
+ * AVR's R8_BANDK_ONLY).  So the C version is left out (1,328 B): it is
+ * compiled under another name nothing calls, and r8_scanx_fill_c below
+ * stops the firmware if it were ever reached. */
+#if defined(__CC65__) && defined(R8_ASM_SCANX) && defined(R8_CFG_CULL) && defined(R8_NO_CLIP) && \
+    defined(R8_FAST_ONLY)
+#if R8_CFG_CULL == R8_CULL_NORMAL && R8_CFG_FORMAT == R8_FMT_PAGE1
+#define FW_NO_SCANX_C 1
+#endif
+#endif
+#ifdef FW_NO_SCANX_C
+#define r8_scanx_fill_c fw_scanx_fill_unused
+#endif
 #include "scan.c"
+#ifdef FW_NO_SCANX_C
+#undef r8_scanx_fill_c
+void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level);
+void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 level)
+{
+    (void)s; (void)ylimit; (void)judd; (void)fb; (void)level;
+    plat_exit(APP_E_CFG);          /* (never: see above) */
+}
+#endif
 #include "transform.c"
 #include "cull.c"
 #if !defined(R8_NO_WIRE) && !defined(R8_PLAN_ONLY)
@@ -117,12 +173,14 @@ static int fw_spin_bad(const app_cfg *c)
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
-#if defined(__AVR__) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+#if (defined(__AVR__) || defined(__CC65__)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
 /* the wire encoder with this firmware's codec switches (fwdefs.sh: it
  * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
- * compile time): the archive's wire.o, built with LZ77, is not linked.
- * (The 6502 and Z80 keep the archive's: their r8_tx_band kernels; the
- * maze's too: raycast.c has a cfg_ok of its own.) */
+ * compile time, and its stream fixed: R8_TXCFG_* in fw_app.c): the
+ * archive's wire.o, built with LZ77, is not linked.  On the 6502 too
+ * (txband_6502.s then hands its other bands to this unit's
+ * r8_tx_band_c).  (The Z80 keeps the archive's; the maze's firmware
+ * too: raycast.c has a cfg_ok of its own.) */
 #include "wire.c"
 #endif
 #ifndef R8_NO_RAY

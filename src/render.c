@@ -78,6 +78,11 @@
 #define CFG_CLIP(c) ((c)->clip)
 #define CFG_POOL(c) ((c)->pool)
 #endif
+/* R8_VSH1: a build whose screen vertices are always 2 r8_s16 (r8int.h:
+ * R8_VSH(st) is 1): one branch of the vertex pointer code */
+#if !(R8_W_DEPTH || R8_W_GOURAUD || R8_W_TEXTURE)
+#define R8_VSH1 1
+#endif
 /* and, with the normal cull and no clipper, every face draw_face meets
  * is a mesh face whose rows start at the band's first row or below (no
  * Judd test): r8k_scanband alone, without r8_scanx_fill (R8_BANDK_ONLY;
@@ -699,9 +704,14 @@ static r8_u16 band_of(const r8_state *st, r8_s16 y, r8_s16 band)
 {
     if (y < 0)
         return 0;
+#if defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    (void)st; (void)band;
+    return (r8_u16)((r8_u16)y >> 3);   /* (st->bsh: r8_render_init) */
+#else
     if (st->bsh >= 0)
         return (r8_u16)((r8_u16)y >> st->bsh);
     return (r8_u16)((r8_u16)y / (r8_u16)band);
+#endif
 }
 
 /* Rows [*top, *bot) of the box [xmin, xmax] x [ymin, ymax] (12.4); 0 if
@@ -733,6 +743,7 @@ static int face_rows(const r8_state *st, const r8_s16 *const *vp, r8_u8 n, r8_s1
 }
 #endif
 
+#ifndef R8_NO_CLIP
 /* Vertex pointers of the polygon over screen vertex list idx. */
 static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16 **vp)
 {
@@ -740,7 +751,9 @@ static void face_vp(const r8_state *st, const r8_u16 *idx, r8_u8 n, const r8_s16
     for (i = 0; i < n; i++)
         vp[i] = st->sv + ((unsigned)idx[i] << R8_VSH(st));
 }
+#endif
 
+#if R8_W_PAINTER
 /* Painter's key of a polygon whose camera-space z summed over its n
  * vertices is zsum: the centroid's depth in 64 buckets between znear
  * and zfar, 0 = far .. 63 = near (the seed's midpoint sort). */
@@ -816,6 +829,7 @@ static r8_s32 face_zsum(const r8_objx *o, const r8_mesh *me, const r8_u8 *vi, r8
         tz *= n;
     return sx + tz;
 }
+#endif
 
 /* R8_FWALK_K: r8_bucket_object walks the faces with r8k_fwalk (AVR:
  * ports/avr/fwalk.S; the host: kern.c's reference) and takes the ones
@@ -842,12 +856,23 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc = st->scene;
-    int painter = R8_PAINTER(st->method);
     const r8_object *ob = &sc->objects[i];
     const r8_mesh *me = ob->mesh;
     const r8_objx *o = &st->obj[i];
     const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-    r8_u8 vsh = R8_VSH(st), normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+    /* (painter, normal: constants where the build fixes them, as cc65
+     * folds no local variable: the depth keys and cull paths go) */
+#if R8_W_PAINTER
+    int painter = R8_PAINTER(st->method);
+#else
+#define painter 0
+#endif
+#ifdef R8_CFG_CULL
+#define normal (R8_CFG_CULL == R8_CULL_NORMAL)
+#else
+    r8_u8 normal = (r8_u8)(r->cfg.cull == R8_CULL_NORMAL);
+#endif
+    r8_u8 vsh = R8_VSH(st);
 #ifndef __SDCC
     r8_u8 kcull;
 #endif
@@ -1009,7 +1034,12 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             r8_s16 x;
             if (j)
                 vi[j] = R8_RDU8(&fc->v[j]);
+#ifdef R8_VSH1
+            v = base + 2u * vi[j];
+            (void)vsh;
+#else
             v = base + (vsh == 1 ? 2u * vi[j] : 4u * vi[j]);   /* no variable shift */
+#endif
 #ifndef R8_NO_CLIP
             vp[j] = v;
 #endif
@@ -1057,6 +1087,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
 #if R8_FWALK_K
     bucket:
 #endif
+#if R8_W_PAINTER
         if (painter) {
 #ifndef R8_NO_BSP
             if (bsp)
@@ -1072,7 +1103,11 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 r8_u16 b = band_of(st, top, r->cfg.band);
                 st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
             }
-        } else {
+        } else
+#else
+        (void)zsum;
+#endif
+        {
             key = band_of(st, top, r->cfg.band);
         }
         st->next[id] = st->heads[key];
@@ -1088,12 +1123,16 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
     st->npoly = (r8_u16)(st->npoly + fw.npoly);   /* those r8k_fwalk put */
 #endif
 }
+#undef painter
+#undef normal
 
 void r8_render_frame(r8_render *r, const r8_camera *cam)
 {
     r8_state *st = (r8_state *)r->state;
     const r8_scene *sc;
+#if R8_W_PAINTER
     int painter;
+#endif
     r8_u16 k;
     r8_u8 i;
     r8_fid cur;
@@ -1104,7 +1143,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
 #endif
     sc = st->scene;
+#if R8_W_PAINTER
     painter = R8_PAINTER(st->method);
+#endif
     st->npoly = 0;
     st->sv_used = st->nverts;
     st->nclipped = 0;
@@ -1128,6 +1169,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* painter's: chain the buckets, far to near, into the draw list;
      * band buckets stay apart (r8_render_band merges them) */
     cur = (r8_fid)R8_FID_END;
+#if R8_W_PAINTER
     for (k = st->nheads; painter && k-- > 0;) {
         r8_fid h = st->heads[k];
         if (h != (r8_fid)R8_FID_END) {
@@ -1138,6 +1180,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
             cur = h;
         }
     }
+#endif
     st->first = cur;
 #if R8_W_DEPTH
     if (st->nclip) {      /* the clipper's polygons may lie on the depth */
@@ -1165,26 +1208,30 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
 {
     const r8_scene *sc = st->scene;
     r8_u8 i = 0, n, j;
+#ifndef R8_NO_CLIP                      /* (else no clipped polygons) */
     if (g >= st->nfaces) {
         const r8_cpoly *cp = &st->cpoly[g - st->nfaces];
         face_vp(st, cp->idx, cp->n, vp);
         *oi = 255;
         return cp->n;
     }
+#endif
     while (i + 1 < sc->nobjects && g >= st->obj[i + 1].fbase)
         i++;
     {
         const r8_objx *o = &st->obj[i];
         const r8_face *fc = &sc->objects[i].mesh->faces[g - o->fbase];
         const r8_s16 *base = st->sv + ((unsigned)o->vbase << R8_VSH(st));
-        r8_u8 vsh = R8_VSH(st);
         n = R8_RDU8(&fc->n);
-        if (vsh == 1) {                 /* no run-time multiply */
-            for (j = 0; j < n; j++)
-                vp[j] = base + 2u * R8_RDU8(&fc->v[j]);
-        } else {
+#ifndef R8_VSH1
+        if (R8_VSH(st) != 1) {
             for (j = 0; j < n; j++)
                 vp[j] = base + 4u * R8_RDU8(&fc->v[j]);
+        } else
+#endif
+        {                               /* no run-time multiply */
+            for (j = 0; j < n; j++)
+                vp[j] = base + 2u * R8_RDU8(&fc->v[j]);
         }
     }
     *oi = i;
@@ -1195,8 +1242,10 @@ static r8_u8 face_setup(const r8_state *st, r8_fid g, const r8_s16 **vp, r8_u8 *
 static r8_u8 face_level(const r8_state *st, r8_fid g, r8_u8 oi)
 {
     const r8_objx *o;
+#ifndef R8_NO_CLIP
     if (oi == 255)
         return st->cpoly[g - st->nfaces].level;
+#endif
     o = &st->obj[oi];
     return r8_face_level(st, o, &st->scene->objects[oi], (r8_u16)(g - o->fbase));
 }
@@ -1455,10 +1504,12 @@ void r8_render_band(r8_render *r, r8_fb *fb)
     if (y1 > fb->height)
         y1 = fb->height;
     /* the band and depth clears: r8k_fill (r8kern.h; AVR: fill.S) */
-    if (fb->format == R8_FMT_PAGE1)
-        r8k_fill(fb->buf, 0, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
-    else
+#ifndef R8_PAGE1_ONLY          /* (r8config.h: page-1 bands only) */
+    if (fb->format != R8_FMT_PAGE1)
         r8k_fill(fb->buf, 0, r8_fb_bytes(fb->format, fb->width, fb->rows));
+    else
+#endif
+        r8k_fill(fb->buf, 0, R8_FB_PAGE1_BYTES(fb->width, fb->rows));
 #if R8_W_DEPTH
     if (st->method >= R8_VIS_Z8 && st->depth_bytes) {
 #ifndef R8_NO_ZBUF

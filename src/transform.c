@@ -51,13 +51,17 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
     r8_mat3 c, r;
     r8_s32 zn, zf;
     r8_u8 i;
-    int turned;
 #ifdef R8_CAM_FIXED
+#define turned 0       /* (a constant: cc65 folds no local, r8_mat_mul goes) */
     (void)c;
+#else
+    int turned;
 #endif
     r8_proj_init(&st->cam, st->width, st->height, cam->focal,
                  (r8_s32)cam->znear * R8_CSCALE);
+#ifndef R8_CAM_FIXED
     turned = cam_rotation(cam, &c);
+#endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_object *ob = &sc->objects[i];
         r8_objx *o = &st->obj[i];
@@ -101,6 +105,7 @@ void r8_tf_frame(r8_state *st, const r8_camera *cam)
         zf = zn + (zn >> 3) + 16;      /* keeps 1 - zn/zf >= 1/9 */
     st->zn16 = zn;
     st->zf16 = zf;
+#undef turned
 #if R8_W_PAINTER
     if (st->method == R8_VIS_PAINTER) {
         st->kmul = (r8_u32)r8_muldiv(R8_JEFF_BUCKETS, 1L << 16, zf - zn);
@@ -261,13 +266,20 @@ void r8_tf_vertices(r8_state *st, int lazy)
         r8_u16 k, g = o->vbase;
         if (o->hidden)
             continue;
-        if (lazy) {
+#if !defined(R8_CFG_CULL) || R8_CFG_CULL != R8_CULL_NORMAL
+        if (!lazy) {
+            for (k = 0; k < me->nverts; k++, mv += 3)
+                r8_tf_vertex(st, o, mv, g++);
+            continue;
+        }
+#else
+        (void)lazy;    /* (render.c: always, with the normal cull) */
+        (void)mv;
+#endif
+        {
             r8_s16 *out = st->sv + ((unsigned)g << vsh);
             for (k = 0; k < me->nverts; k++, out += 1u << vsh)
                 *out = R8_VX_TODO;
-            continue;
         }
-        for (k = 0; k < me->nverts; k++, mv += 3)
-            r8_tf_vertex(st, o, mv, g++);
     }
 }

@@ -587,7 +587,7 @@ static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n
     PUT16(b + 3, y0);
     b[5] = TXC_CODEC(&tx->cfg);
 #ifndef R8_NO_RLE
-    if (b[5] == R8_CODEC_RLE) {
+    if (TXC_CODEC(&tx->cfg) == R8_CODEC_RLE) {   /* (R8_TXCFG_CODEC: folded) */
         s.pkt = s.code = tx->pkt;
         s.crc = r8_crc16_update(tx->hcrc, b + 3, 3);
         /* header zeros (no code is more than 5 bytes back) */
