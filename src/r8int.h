@@ -212,12 +212,10 @@ typedef struct r8_state {
                            zn16..zf16 in 64 buckets; kmul3 for z sums of 3 */
     r8_u8 *depth;       /* the method's depth memory for one band */
     unsigned depth_bytes;
-#if R8_W_DEPTH
     r8_u8 zx[2];        /* 16-bit z-buffer, width <= 255: the columns */
                         /* [zx[0], zx[1]) hold every depth written since */
                         /* the last clear (r8_render_band clears those); */
                         /* 0, 255: unknown, the whole band is cleared */
-#endif
     r8_snode *snode;    /* S-buffer nodes */
     r8_u16 *shead;      /* S-buffer row heads, band rows */
     r8_u16 nsnode, sused;
@@ -269,17 +267,6 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16);
  * the kernel's (r8zrows.h) to st->zx. */
 void r8_zclear(r8_state *st, const r8_fb *fb, r8_u16 w, r8_u16 band);
 void r8_zkeep(r8_state *st);
-/* st->zx set to lo, hi; widened by the span's columns [a, b) (a build
- * without the depth methods has no st->zx: nothing) */
-#if R8_W_DEPTH
-#define R8_ZX_SET(st, lo, hi) ((st)->zx[0] = (lo), (st)->zx[1] = (hi))
-#define R8_ZX_WIDEN(st, a, b) do { \
-        if ((r8_u8)(a) < (st)->zx[0]) (st)->zx[0] = (r8_u8)(a); \
-        if ((r8_u8)(b) > (st)->zx[1]) (st)->zx[1] = (r8_u8)(b); } while (0)
-#else
-#define R8_ZX_SET(st, lo, hi) ((void)0)
-#define R8_ZX_WIDEN(st, a, b) ((void)0)
-#endif
 void r8_vis_block(r8_state *st, r8_fb *fb, r8_u8 level, r8_u8 id, const r8_span *sp, int mask);
 void r8_vis_sbuf_insert(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp);
 void r8_vis_sbuf_flush(r8_state *st, r8_fb *fb);

@@ -634,7 +634,8 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->persp = cfg->persp;
 #endif
     st->first = (r8_fid)R8_FID_END;
-    R8_ZX_SET(st, 0, 255);   /* the depth memory: unknown, all cleared first */
+    st->zx[0] = 0;        /* the depth memory: unknown, all cleared first */
+    st->zx[1] = 255;
     st->npoly = 0;
     st->dropped = 0;
     st->nclipped = 0;

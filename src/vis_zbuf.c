@@ -113,8 +113,12 @@ void r8_vis_zbuf(r8_state *st, r8_fb *fb, r8_u8 level, const r8_span *sp, int bi
         return;
     pixw_init(&w, fb, sp->y);
     row = (unsigned)(sp->y - fb->y0) * (unsigned)fb->width;
-    if (bits16)               /* the columns written (st->zx, r8int.h) */
-        R8_ZX_WIDEN(st, xa, xb);
+    if (bits16) {             /* the columns written (st->zx, r8int.h) */
+        if ((r8_u8)xa < st->zx[0])
+            st->zx[0] = (r8_u8)xa;
+        if ((r8_u8)xb > st->zx[1])
+            st->zx[1] = (r8_u8)xb;
+    }
     if (bits16 && w.row && !gouraud) {
         /* the common case, written out: 16-bit depth, one level, pages */
         r8_u16 *z = (r8_u16 *)(void *)st->depth + row;
@@ -272,7 +276,10 @@ static ZF_NOINLINE void zfill_gen(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb 
                 r8_u16 de = d.err, dr = d.r, dn = d.den, k = (r8_u16)(xb - xa);
                 if (bits16) {
                     r8_u16 *z = (r8_u16 *)(void *)st->depth + by * (unsigned)w + xa;
-                    R8_ZX_WIDEN(st, xa, xb);             /* the columns written */
+                    if ((r8_u8)xa < st->zx[0])           /* the columns written */
+                        st->zx[0] = (r8_u8)xa;
+                    if ((r8_u8)xb > st->zx[1])
+                        st->zx[1] = (r8_u8)xb;
                     do {
                         if ((r8_u16)dv >= *z) {
                             *z = (r8_u16)dv;
@@ -359,7 +366,6 @@ void r8_zfill(r8_state *st, r8_act *a, r8_s16 ylimit, r8_fb *fb, int bits16)
  * all of them next when this band's rows lie another width apart */
 void r8_zclear(r8_state *st, const r8_fb *fb, r8_u16 w, r8_u16 band)
 {
-#if R8_W_DEPTH
     r8_u16 lo = st->zx[0], hi = st->zx[1];
     if (hi > w)
         hi = w;
@@ -381,15 +387,12 @@ void r8_zclear(r8_state *st, const r8_fb *fb, r8_u16 w, r8_u16 band)
     r8_zcols[0] = 255;
     r8_zcols[1] = 0;
 #endif
-#else
-    (void)st; (void)fb; (void)w; (void)band;
-#endif
 }
 
 /* (r8int.h) the columns the kernel drew this band, into st->zx */
 void r8_zkeep(r8_state *st)
 {
-#if R8_ZROWS && R8_W_DEPTH
+#if R8_ZROWS
     if (r8_zcols[0] < st->zx[0])
         st->zx[0] = r8_zcols[0];
     if (r8_zcols[1] > st->zx[1])
