@@ -24,7 +24,7 @@ extern "C" {
 #ifndef SPIN_RAM
 /* app_ram() of this configuration on AVR (larger on 32-bit boards:
  * raise it there, app_run returns APP_E_RAM when it is too small). */
-#define SPIN_RAM 770
+#define SPIN_RAM 774
 #endif
 
 static r8_u8 arena[SPIN_RAM];

@@ -17,7 +17,7 @@ extern "C" {
 
 #ifndef OLED_RAM
 /* oled_cube_ram() on AVR: oled_cube_init refuses a smaller arena */
-#define OLED_RAM 600
+#define OLED_RAM 604
 #endif
 #ifndef OLED_FRAMES
 #define OLED_FRAMES 0   /* frames to draw; 0 = forever */
