@@ -362,19 +362,11 @@ zbody:
         LDI3    27, LDVL, LDVH, LDE
         LDI3    47, RDVL, RDVH, RDE
         FASTT
+        rjmp    .Lcheck
 
-.Lcheck:                                /* a segment from y: r25:r24, Z = lx */
+.Lmove:                                 /* y in T_Y for emove */
         sts     T_Y, r24
         sts     T_Y+1, r25
-        lds     r18, T_LIM              /* y < lim, else done */
-        lds     r19, T_LIM+1
-        cp      r24, r18
-        cpc     r25, r19
-        brlt    1f
-        ldi     r24, 1
-        rjmp    .Lout
-1:      ldd     r20, Z+10               /* the left edge ends at y: on */
-        ldd     r21, Z+11
         cp      r24, r20
         cpc     r25, r21
         brlt    2f
@@ -393,20 +385,45 @@ zbody:
         LDI3    13, RXVL, RXVH, RXE
         LDI3    47, RDVL, RDVH, RDE
         FASTT
-3:      lds     r18, T_LIM              /* end = min(lim, yends) */
+3:      lds     r18, T_LIM
         lds     r19, T_LIM+1
         ldd     r20, Z+10
         ldd     r21, Z+11
+        ldd     r26, Z+23
+        ldd     r27, Z+24
+        rjmp    .Lseg
+.Ldone:                                 /* y reached lim */
+        sts     T_Y, r24
+        sts     T_Y+1, r25
+        ldi     r24, 1
+        rjmp    .Lout
+
+.Lcheck:                                /* a segment from y: r25:r24, Z = lx */
+        lds     r18, T_LIM              /* y < lim, else done */
+        lds     r19, T_LIM+1
+        cp      r24, r18
+        cpc     r25, r19
+        brge    .Ldone
+        ldd     r20, Z+10               /* an edge ends at y: on */
+        ldd     r21, Z+11
+        ldd     r26, Z+23
+        ldd     r27, Z+24
+        cp      r24, r20
+        cpc     r25, r21
+        brge    9f
+        cp      r24, r26
+        cpc     r25, r27
+        brlt    .Lseg
+9:      rjmp    .Lmove
+.Lseg:                                  /* end = min(lim, yends) */
         cp      r20, r18
         cpc     r21, r19
         brge    4f
         movw    r18, r20
-4:      ldd     r20, Z+23
-        ldd     r21, Z+24
-        cp      r20, r18
-        cpc     r21, r19
+4:      cp      r26, r18
+        cpc     r27, r19
         brge    5f
-        movw    r18, r20
+        movw    r18, r26
 5:      movw    r20, r18                /* ROWS = end - y: 1..255 */
         sub     r20, r24
         sbc     r21, r25
