@@ -106,22 +106,17 @@
 .macro STEPB off, vl, vh, el
         ldd     r18, Z+\off+6
         ldd     r19, Z+\off+8
+        ldd     r20, Z+\off+2
+        ldd     r21, Z+\off+3
         add     \el, r18
         brcs    1f
         cp      \el, r19
         brlo    2f
 1:      sub     \el, r19
-        ldd     r18, Z+\off+2
-        ldd     r19, Z+\off+3
-        sec
-        adc     \vl, r18
-        adc     \vh, r19
-        rjmp    3f
-2:      ldd     r18, Z+\off+2
-        ldd     r19, Z+\off+3
-        add     \vl, r18
-        adc     \vh, r19
-3:
+        subi    r20, 0xFF               /* q + 1 */
+        sbci    r21, 0xFF
+2:      add     \vl, r20
+        adc     \vh, r21
 .endm
 
 /* T = a den of the four is 256 or more (Z = lx: their high bytes at 9,
@@ -576,12 +571,15 @@ zbody:
         adc     r31, LXVH
         mov     NM, M_
         com     NM
-.Lpx:
+.Lpx:                                   /* depth >= the stored one: */
+        ldd     r0, Z+1                 /* the high bytes decide, but */
+        cp      r19, r0                 /* when equal */
+        brlo    .Lskip
+        brne    .Ldraw
         ld      r0, Z
         cp      r18, r0
-        ldd     r0, Z+1
-        cpc     r19, r0
         brlo    .Lskip
+.Ldraw:
         st      Z+, r18                 /* nearer or equal: depth, pixel */
         st      Z+, r19
         ld      r0, X
