@@ -788,10 +788,7 @@ emove:
         adiw    r24, 20
         lds     r18, T_Y                /* y */
         lds     r19, T_Y+1
-        push    r16
-        ldi     r16, 2
-        call    r8_attr_first
-        pop     r16
+        call    afirst_d
         or      r24, r25
         brne    .Lemret
 .Lemgen:
@@ -1057,6 +1054,71 @@ r8_attr_first:
         rjmp    isub
         .size   r8_attr_first, .-r8_attr_first
 
+/* afirst_d: r8_attr_first(it, a, b, y, 2) for this file's callers
+ * (depth alone: k fixed, not in r16), the same registers otherwise */
+afirst_d:
+        cpi     r19, 8                  /* y < 2048 (unsigned) */
+        brsh    .Ldfail
+        movw    r30, r22                /* X = ay */
+        ldd     r26, Z+2
+        ldd     r27, Z+3
+        ldd     r22, Z+4                /* r23:r22 = a[2] */
+        ldd     r23, Z+5
+        lsl     r18                     /* s0 = 16 y + 8 - ay */
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        subi    r18, 0xF8
+        sbci    r19, 0xFF
+        sub     r18, r26
+        sbc     r19, r27
+        tst     r19                     /* s0 < 16 */
+        brne    .Ldfail
+        cpi     r18, 16
+        brsh    .Ldfail
+        movw    r30, r20                /* n = by - ay, or 1 */
+        ldd     r20, Z+2
+        ldd     r21, Z+3
+        cp      r26, r20
+        cpc     r27, r21
+        brlt    1f
+        ldi     r20, 1
+        ldi     r21, 0
+        rjmp    2f
+.Ldfail:                                /* (here: in reach of every branch) */
+        ldi     r24, 0
+        ldi     r25, 0
+        ret
+1:      sub     r20, r26
+        sbc     r21, r27
+2:      cpi     r21, 1                  /* n <= 256 */
+        brlo    3f
+        brne    .Ldfail
+        cpi     r20, 0
+        brne    .Ldfail
+3:      ldd     r26, Z+4                /* dv = b[2] - a[2] */
+        ldd     r27, Z+5
+        sub     r26, r22
+        sbc     r27, r23
+        brvs    .Ldfail                 /* |dv| >= 32768 */
+        cpi     r26, 0x00               /* dv < 4096 */
+        ldi     r30, 0x10
+        cpc     r27, r30
+        brge    .Ldfail
+        cpi     r26, 0x01               /* dv >= -4095 */
+        ldi     r30, 0xF0
+        cpc     r27, r30
+        brlt    .Ldfail
+        movw    r30, r26                /* on to isub: X = it, r25:24 = dv, */
+        movw    r26, r24                /* r18 = s0 (r19 = 0), r21:20 = n, */
+        movw    r24, r30                /* r23:22 = a[2] */
+        rjmp    isub
+        .size   afirst_d, .-afirst_d
+
 /* void r8_scan_attrs(r8_scan *s)                       (include/r8raster.h)
  * The C reference is src/zrows.c's: nothing without attributes; depth
  * alone: each edge's from r8_attr_first(&s->ld (rd), vp[from], vp[vi],
@@ -1074,8 +1136,7 @@ r8_scan_attrs:
         tst     r0
         brne    1f
         ret
-1:      push    r16
-        push    r17
+1:      push    r17
         push    r28
         push    r29
         movw    r28, r24
@@ -1120,8 +1181,7 @@ r8_scan_attrs:
         adc     r25, r29
         ldd     r18, Y+21               /* y */
         ldd     r19, Y+22
-        ldi     r16, 2
-        call    r8_attr_first
+        call    afirst_d
         or      r24, r25
         brne    .Lsanext
 .Lsagen:
@@ -1138,6 +1198,5 @@ r8_scan_attrs:
         pop     r29
         pop     r28
         pop     r17
-        pop     r16
         ret
         .size   r8_scan_attrs, .-r8_scan_attrs
