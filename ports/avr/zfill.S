@@ -283,8 +283,15 @@ r8k_zband:
         movw    r14, r18
 3:      sts     T_LIM, r14
         sts     T_LIM+1, r15
-        ldd     r10, Z+2                /* w, 2w */
-        ldd     r11, Z+3
+        ldd     r10, Z+2                /* w, 2w (stored when not the */
+        ldd     r11, Z+3                /* last call's) */
+        lds     r18, T_W2
+        lds     r19, T_W2+1
+        lds     r16, T_W
+        lds     r17, T_W+1
+        cp      r16, r10
+        cpc     r17, r11
+        breq    5f
         sts     T_W, r10
         sts     T_W+1, r11
         movw    r18, r10
@@ -292,6 +299,7 @@ r8k_zband:
         rol     r19
         sts     T_W2, r18
         sts     T_W2+1, r19
+5:
         movw    r16, r24                /* by = y - y0 (>= 0) */
         sub     r16, r12
         sbc     r17, r13
@@ -301,6 +309,7 @@ r8k_zband:
         add     r29, r0
         mul     r17, r18
         add     r29, r0
+        clr     r1
         add     r28, r20
         adc     r29, r21
         ldi     M_, 1                   /* m = 1 << (by & 7) */
@@ -310,24 +319,26 @@ r8k_zband:
         lsl     M_
         sbrc    r16, 2
         swap    M_
-        lsr     r17                     /* page = buf + (by >> 3) * w */
+        ld      r18, Z                  /* page = buf + (by >> 3) * w */
+        ldd     r19, Z+1
+        cpi     r16, 8                  /* (by < 8: buf) */
+        cpc     r17, r1
+        brlo    6f
+        lsr     r17
         ror     r16
         lsr     r17
         ror     r16
         lsr     r17
         ror     r16
         mul     r16, r10
-        movw    r18, r0
+        add     r18, r0
+        adc     r19, r1
         mul     r16, r11
         add     r19, r0
         mul     r17, r10
         add     r19, r0
         clr     r1
-        ld      r0, Z
-        add     r18, r0
-        ldd     r0, Z+1
-        adc     r19, r0
-        sts     T_PAGE, r18
+6:      sts     T_PAGE, r18
         sts     T_PAGE+1, r19
         rcall   zbody
         tst     r24                     /* 1, 2: c.y = t.y */
