@@ -492,15 +492,18 @@ zbody:
         add     r30, r20
         adc     r31, r1
         lpm     PAT, Z
-        mov     r20, LXVL               /* rotated left by xl & 7: */
-        sbrc    r20, 2                  /* 4 (swap), then xl & 3 */
-        swap    PAT
-        andi    r20, 3
-        breq    9f
-8:      lsl     PAT
+        sbrc    LXVL, 2                 /* rotated left by xl & 7: 4 */
+        swap    PAT                     /* (swap), 2, 1 */
+        sbrs    LXVL, 1
+        rjmp    8f
+        lsl     PAT
         adc     PAT, r1
-        dec     r20
-        brne    8b
+        lsl     PAT
+        adc     PAT, r1
+8:      sbrs    LXVL, 0
+        rjmp    9f
+        lsl     PAT
+        adc     PAT, r1
 9:      movw    r18, RDVL               /* diff = rd - ld; r27: its sign */
         sub     r18, LDVL
         sbc     r19, LDVH
