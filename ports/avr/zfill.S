@@ -585,46 +585,86 @@ zbody:
         adc     r31, LXVH
         mov     NM, M_
         com     NM
-.Lpx:                                   /* depth >= the stored one: */
+.Lpx:                                   /* two pixels a turn (A, B): */
+        lsr     CNT                     /* CNT = pairs; odd: from B */
+        brcc    .Lpa
+        inc     CNT
+        rjmp    .Lpb
+.Lpa:                                   /* depth >= the stored one: */
         ldd     r0, Z+1                 /* the high bytes decide, but */
         cp      r19, r0                 /* when equal */
-        brlo    .Lskip
-        brne    .Ldraw
+        brlo    .Lska
+        brne    1f
         ld      r0, Z
         cp      r18, r0
-        brlo    .Lskip
-.Ldraw:
-        st      Z+, r18                 /* nearer or equal: depth, pixel */
+        brlo    .Lska
+1:      st      Z+, r18                 /* nearer or equal: depth, pixel */
         st      Z+, r19
         ld      r0, X
         and     r0, NM
         lsl     PAT
-        brcc    11f
+        brcc    2f
         inc     PAT
         or      r0, M_
-11:     st      X+, r0
-        add     r24, r25                /* the DDA (twice: no jump); the */
-        brcc    13f                     /* error kept as e + 256 - n: */
-        add     r24, NDEN               /* carry when e + r >= n, then */
-        sec                             /* dv += q + 1 */
-13:     adc     r18, r20
+2:      st      X+, r0
+        add     r24, r25                /* the DDA; the error kept as */
+        brcc    3f                      /* e + 256 - n: carry when */
+        add     r24, NDEN               /* e + r >= n, then dv += q + 1 */
+        sec
+3:      adc     r18, r20
+        adc     r19, r21
+.Lpb:
+        ldd     r0, Z+1
+        cp      r19, r0
+        brlo    .Lskb
+        brne    4f
+        ld      r0, Z
+        cp      r18, r0
+        brlo    .Lskb
+4:      st      Z+, r18
+        st      Z+, r19
+        ld      r0, X
+        and     r0, NM
+        lsl     PAT
+        brcc    5f
+        inc     PAT
+        or      r0, M_
+5:      st      X+, r0
+        add     r24, r25
+        brcc    6f
+        add     r24, NDEN
+        sec
+6:      adc     r18, r20
         adc     r19, r21
         dec     CNT
-        brne    .Lpx
+        brne    .Lpa
         rjmp    .Lstep
-.Lskip:
+.Lska:                                  /* farther: not drawn (each its */
+        lsl     PAT                     /* own copy of the step) */
+        adc     PAT, r1
+        adiw    r26, 1
+        adiw    r30, 2
+        add     r24, r25
+        brcc    7f
+        add     r24, NDEN
+        sec
+7:      adc     r18, r20
+        adc     r19, r21
+        rjmp    .Lpb
+.Lskb:
         lsl     PAT
         adc     PAT, r1
         adiw    r26, 1
         adiw    r30, 2
         add     r24, r25
-        brcc    18f
+        brcc    8f
         add     r24, NDEN
         sec
-18:     adc     r18, r20
+8:      adc     r18, r20
         adc     r19, r21
         dec     CNT
-        brne    .Lpx
+        breq    .Lstep
+        rjmp    .Lpa
 
 .Lstep:
         lds     r30, T_LX               /* Z = lx: rx, ld, rd at 13, 27, 47 */
