@@ -1179,8 +1179,39 @@ afirst_d:
  * c.y, 2), from = the left edge's vi + 1 (0 past n - 1), the right's
  * vi - 1 (n - 1 before 0); else, or on its 0, r8_scan_attr_edge(s, side,
  * c.y).  Offsets (asserted in src/zrows.c): r8_scan {vp 0, n 18, y 21,
- * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  r17 = the side, Y = s
- * (r8_attr_first, r8_scan_attr_edge keep both). */
+ * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  The two sides written
+ * out; Y = s (afirst_d, r8_scan_attr_edge keep it). */
+/* a = vp[r18], b = vp[r20], y = c.y (Y = s), then afirst_d (it in
+ * r25:r24); Z flag set when it returned 0 */
+.macro SAAB
+        movw    r30, r28
+        add     r30, r18
+        adc     r31, r1
+        add     r30, r18
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        movw    r30, r28
+        add     r30, r20
+        adc     r31, r1
+        add     r30, r20
+        adc     r31, r1
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldd     r18, Y+21
+        ldd     r19, Y+22
+        call    afirst_d
+        or      r24, r25
+.endm
+/* r8_scan_attr_edge(s, side, c.y) (Y = s) */
+.macro SAGEN side
+        movw    r24, r28
+        ldi     r22, \side
+        ldi     r23, 0
+        ldd     r20, Y+21
+        ldd     r21, Y+22
+        call    r8_scan_attr_edge
+.endm
         .section .text.r8_scan_attrs,"ax",@progbits
         .global r8_scan_attrs
         .type   r8_scan_attrs, @function
@@ -1190,15 +1221,11 @@ r8_scan_attrs:
         tst     r0
         brne    1f
         ret
-1:      push    r17
-        push    r28
+1:      push    r28
         push    r29
         movw    r28, r24
-        ldi     r17, 0
-.Lsaside:
-        ldd     r0, Y+51                /* depth alone? */
-        dec     r0
-        brne    .Lsagen
+        dec     r0                      /* depth alone? */
+        brne    5f
         ldd     r21, Y+18               /* n */
         ldd     r20, Y+37               /* the left: vi, from = vi + 1 */
         mov     r18, r20
@@ -1206,51 +1233,28 @@ r8_scan_attrs:
         cp      r18, r21
         brne    2f
         clr     r18
-2:      ldi     r24, 52                 /* it = s + 52 */
-        sbrs    r17, 0
-        rjmp    3f
+2:      movw    r24, r28                /* it = s + 52 */
+        adiw    r24, 52
+        SAAB
+        brne    6f
+5:      SAGEN   0
+6:      ldd     r0, Y+51
+        dec     r0
+        brne    8f
+        ldd     r21, Y+18
         ldd     r20, Y+50               /* the right: from = vi - 1 */
         mov     r18, r20
         tst     r18
-        brne    4f
+        brne    7f
         mov     r18, r21
-4:      dec     r18
-        ldi     r24, 72                 /* it = s + 72 */
-3:      movw    r30, r28                /* a = vp[from] */
-        add     r30, r18
-        adc     r31, r1
-        add     r30, r18
-        adc     r31, r1
-        ld      r22, Z
-        ldd     r23, Z+1
-        movw    r30, r28                /* b = vp[vi] */
-        add     r30, r20
-        adc     r31, r1
-        add     r30, r20
-        adc     r31, r1
-        ld      r20, Z
-        ldd     r21, Z+1
-        ldi     r25, 0
-        add     r24, r28
-        adc     r25, r29
-        ldd     r18, Y+21               /* y */
-        ldd     r19, Y+22
-        call    afirst_d
-        or      r24, r25
-        brne    .Lsanext
-.Lsagen:
-        movw    r24, r28                /* r8_scan_attr_edge(s, side, y) */
-        mov     r22, r17
-        ldi     r23, 0
-        ldd     r20, Y+21
-        ldd     r21, Y+22
-        call    r8_scan_attr_edge
-.Lsanext:
-        inc     r17
-        cpi     r17, 2
-        brne    .Lsaside
-        pop     r29
+7:      dec     r18
+        movw    r24, r28                /* it = s + 72 */
+        subi    r24, lo8(-72)
+        sbci    r25, hi8(-72)
+        SAAB
+        brne    9f
+8:      SAGEN   1
+9:      pop     r29
         pop     r28
-        pop     r17
         ret
         .size   r8_scan_attrs, .-r8_scan_attrs
