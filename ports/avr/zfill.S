@@ -209,6 +209,8 @@ r8k_zrows:
         ld      r19, X+
         sts     T_LIM, r18
         sts     T_LIM+1, r19
+        lds     r30, T_LX               /* Z = lx */
+        lds     r31, T_LX+1
         rcall   zbody
         pop     r27
         pop     r26
@@ -340,13 +342,12 @@ r8k_zband:
         clr     r1
 6:      sts     T_PAGE, r18
         sts     T_PAGE+1, r19
+        movw    r30, r26                /* Z = lx */
         rcall   zbody
-        tst     r24                     /* 1, 2: c.y = t.y */
+        tst     r24                     /* 1, 2: c.y = t.y (r19:r18) */
         breq    4f
         lds     r30, T_S
         lds     r31, T_S+1
-        lds     r18, T_Y
-        lds     r19, T_Y+1
         std     Z+21, r18
         std     Z+22, r19
 4:      rjmp    zrestore
@@ -357,12 +358,11 @@ zrestore:
         RESTORE18
         ret
 
-/* the rows: zband_t's lx, page, w, 2w, pat, s, lim set, Y = the depth
- * row of row y, M_ its bit, r25:r24 = y; the registers saved.  Returns
- * r24 (1: y reached lim, 2: row y is the caller's), y in T_Y. */
+/* the rows: zband_t's lx, page, w, 2w, pat, s, lim set, Z = lx, Y =
+ * the depth row of row y, M_ its bit, r25:r24 = y; the registers saved.
+ * Returns r24 (1: y reached lim, 2: row y is the caller's), y in T_Y
+ * and r19:r18. */
 zbody:
-        lds     r30, T_LX               /* Z = lx */
-        lds     r31, T_LX+1
         LDI3    0, LXVL, LXVH, LXE
         LDI3    13, RXVL, RXVH, RXE
         LDI3    27, LDVL, LDVH, LDE
@@ -401,6 +401,7 @@ zbody:
 .Ldone:                                 /* y reached lim */
         sts     T_Y, r24
         sts     T_Y+1, r25
+        movw    r18, r24
         ldi     r24, 1
         rjmp    .Lout
 
@@ -803,6 +804,10 @@ emove:
 5:      ldd     r20, Z+12               /* vi */
         cp      r20, r9
         breq    .Lemret                 /* vi unchanged: no attributes */
+        movw    r24, r30                /* it = e + 27 (ld), e + 34 (rd) */
+        adiw    r24, 27
+        sbrc    r5, 0
+        adiw    r24, 7
         lds     r30, T_S                /* Z = s */
         lds     r31, T_S+1
         ldd     r0, Z+51                /* attrs: depth alone, else C */
@@ -835,11 +840,6 @@ emove:
         ld      r0, Z
         ldd     r21, Z+1
         mov     r20, r0
-        lds     r24, T_LX               /* it = ld = lx + 27 (rd + 47) */
-        lds     r25, T_LX+1
-        adiw    r24, 27
-        sbrc    r5, 0
-        adiw    r24, 20
         lds     r18, T_Y                /* y */
         lds     r19, T_Y+1
         call    afirst_d
