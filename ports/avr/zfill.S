@@ -422,6 +422,18 @@ zbody:
         cpc     r25, r27
         brlt    .Lseg
 9:      rjmp    .Lmove
+.Lstept:                                /* (the row's branches' far */
+        rjmp    .Lstep                  /* targets, in their reach) */
+.Lstopt:
+        rjmp    .Lstop
+.Lclip:                                 /* w < xr: xb = w, unless */
+        cp      LXVL, r18               /* xl >= w: nothing drawn */
+        cpc     LXVH, r19
+        brge    .Lstept
+        movw    r20, r18
+        rjmp    .Lclipped
+.Lonet:
+        rjmp    .Lone
 .Lseg:                                  /* end = min(lim, yends) */
         cp      r20, r18
         cpc     r21, r19
@@ -451,28 +463,22 @@ zbody:
 .Lrow:
         cp      LXVL, RXVL              /* xl >= xr: no span */
         cpc     LXVH, RXVH
-        brlt    1f
-        rjmp    .Lstep
-1:      movw    r24, RXVL               /* n = xr - xl */
+        brge    .Lstept
+        movw    r24, RXVL               /* n = xr - xl */
         sub     r24, LXVL
         sbc     r25, LXVH
         sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
         rjmp    .Lstop
         tst     r25                     /* n > 255: r8_zfill's */
-        breq    2f
-        rjmp    .Lstop
-2:      lds     r20, T_W                /* xb = xr when xr <= w */
-        lds     r21, T_W+1
-        cp      r20, RXVL
-        cpc     r21, RXVH
-        brlt    3f
+        brne    .Lstopt
+        lds     r18, T_W                /* xb = xr when xr <= w */
+        lds     r19, T_W+1
         movw    r20, RXVL
-        rjmp    4f
-3:      cp      LXVL, r20               /* xl >= w: nothing drawn */
-        cpc     LXVH, r21
-        brlt    4f                      /* (else xb = w) */
-        rjmp    .Lstep
-4:      lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
+        cp      r18, r20
+        cpc     r19, r21
+        brlt    .Lclip
+.Lclipped:
+        lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
         cp      r18, r20                /* r8_zcols[1] = max(it, xb), */
         brsh    5f
         sts     r8_zcols+1, r20
@@ -482,8 +488,7 @@ zbody:
         sts     r8_zcols, LXVL
 6:      sub     r20, LXVL               /* columns (1..255) */
         cpi     r20, 1                  /* one: its depth is ld's, no */
-        brne    7f                      /* step, no division */
-        rjmp    .Lone
+        breq    .Lonet                  /* step, no division */
 7:      mov     CNT, r20
         lds     r20, T_END              /* pattern: pat[y & 3] (flash), */
         sub     r20, ROWS               /* y = end - ROWS */
@@ -666,13 +671,14 @@ zbody:
         dec     CNT
         breq    .Lstep
         rjmp    .Lpa
+.Lslowt:
+        rjmp    .Lslow
 
 .Lstep:
         lds     r30, T_LX               /* Z = lx: rx, ld, rd at 13, 27, 47 */
         lds     r31, T_LX+1
-        brtc    4f                      /* all dens < 256: 8-bit errors */
-        rjmp    .Lslow
-4:      STEPB   0, LXVL, LXVH, LXE
+        brts    .Lslowt                 /* a den >= 256: 16-bit errors */
+        STEPB   0, LXVL, LXVH, LXE
         STEPB   13, RXVL, RXVH, RXE
         STEPB   27, LDVL, LDVH, LDE
         STEPB   47, RDVL, RDVH, RDE
