@@ -434,6 +434,10 @@ zbody:
         rjmp    .Lclipped
 .Lonet:
         rjmp    .Lone
+.Lzc1:  sts     r8_zcols+1, r20
+        rjmp    .Lzc1b
+.Lzc0:  sts     r8_zcols, LXVL
+        rjmp    .Lzc0b
 .Lseg:                                  /* end = min(lim, yends) */
         cp      r20, r18
         cpc     r21, r19
@@ -480,13 +484,11 @@ zbody:
 .Lclipped:
         lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
         cp      r18, r20                /* r8_zcols[1] = max(it, xb), */
-        brsh    5f
-        sts     r8_zcols+1, r20
-5:      lds     r18, r8_zcols           /* r8_zcols[0] = min(it, xl) */
+        brlo    .Lzc1                   /* (the stores out of line) */
+.Lzc1b: lds     r18, r8_zcols           /* r8_zcols[0] = min(it, xl) */
         cp      LXVL, r18
-        brsh    6f
-        sts     r8_zcols, LXVL
-6:      sub     r20, LXVL               /* columns (1..255) */
+        brlo    .Lzc0
+.Lzc0b: sub     r20, LXVL               /* columns (1..255) */
         cpi     r20, 1                  /* one: its depth is ld's, no */
         breq    .Lonet                  /* step, no division */
 7:      mov     CNT, r20
@@ -569,16 +571,13 @@ zbody:
 22:     sbrs    r27, 7
         rjmp    23f
         com     r30                     /* q = -q' - 1, r = n - 1 - rr */
-        com     r31
-        mov     r0, r24
-        dec     r0
-        sub     r0, r18
-        mov     r18, r0
+        com     r31                     /* (= n + ~rr, 8 bits) */
+        com     r18
+        add     r18, r24
 23:     movw    r20, r30                /* DQ */
         mov     r25, r18                /* DR */
-        mov     NDEN, r24               /* 256 - n */
-        neg     NDEN
-        mov     r24, NDEN               /* DE + 256 - n (DE = 0) */
+        neg     r24                     /* DE + 256 - n (DE = 0), */
+        mov     NDEN, r24               /* NDEN = 256 - n */
         movw    r18, LDVL               /* DV */
         lds     r26, T_PAGE             /* X = page + xl */
         lds     r27, T_PAGE+1
@@ -598,13 +597,10 @@ zbody:
         rjmp    .Lpb
 .Lpa:                                   /* depth >= the stored one: */
         ldd     r0, Z+1                 /* the high bytes decide, but */
-        cp      r19, r0                 /* when equal */
+        cp      r19, r0                 /* when equal (.Leqa) */
         brlo    .Lska
-        brne    1f
-        ld      r0, Z
-        cp      r18, r0
-        brlo    .Lska
-1:      st      Z+, r18                 /* nearer or equal: depth, pixel */
+        breq    .Leqa
+.Ldra:  st      Z+, r18                 /* nearer or equal: depth, pixel */
         st      Z+, r19
         ld      r0, X
         and     r0, NM
@@ -623,11 +619,8 @@ zbody:
         ldd     r0, Z+1
         cp      r19, r0
         brlo    .Lskb
-        brne    4f
-        ld      r0, Z
-        cp      r18, r0
-        brlo    .Lskb
-4:      st      Z+, r18
+        breq    .Leqb
+.Ldrb:  st      Z+, r18
         st      Z+, r19
         ld      r0, X
         and     r0, NM
@@ -645,6 +638,16 @@ zbody:
         dec     CNT
         brne    .Lpa
         rjmp    .Lstep
+.Leqa:                                  /* high bytes equal: the low */
+        ld      r0, Z
+        cp      r18, r0
+        brlo    .Lska
+        rjmp    .Ldra
+.Leqb:
+        ld      r0, Z
+        cp      r18, r0
+        brlo    .Lskb
+        rjmp    .Ldrb
 .Lska:                                  /* farther: not drawn (each its */
         lsl     PAT                     /* own copy of the step) */
         adc     PAT, r1
