@@ -1,28 +1,37 @@
 /* zfill.S - r8k_zrows (src/r8zrows.h) for AVR: r8_zfill's rows of the
- * 16-bit z-buffer, edges moved on as they end, in one call; and
- * r8_interp_init_sub (include/r8raster.h) / r8_attr_first
- * (src/r8zrows.h), the edges' depth set-up (below).
+ * 16-bit z-buffer, edges moved on as they end, in one call; r8k_zband,
+ * the same from a face's r8_act; and r8_interp_init_sub
+ * (include/r8raster.h) / r8_attr_first (src/r8zrows.h), the edges'
+ * depth set-up (below).
  *
  *   int r8k_zrows(r8_zrows *t);
+ *   int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit);
  *
- * Same memory results as the C reference src/zrows.c.  The value and
- * error of the four interpolators (lx, rx, ld, rd) stay in r2..r17 for
- * the whole call and are written back at the end; their q, r, den are
+ * Same memory results as the C references in src/zrows.c.  Both work
+ * on one static state, zband_t (the r8_zrows layout; not reentrant, as
+ * r8_zcols): r8k_zband builds it from the face and the band, r8k_zrows
+ * copies the caller's t in and its results (y, z, page, m, k) out.
+ *
+ * Registers for the whole of the rows (zbody): the value and the
+ * error's low byte of the four interpolators (lx, rx, ld, rd) in r2..r16
+ * (written back at the end; an error's high byte, nonzero only when its
+ * den is 256 or more, stays in memory); Y the depth row of the current
+ * row (stepped by 2w a row); M_ (r22) the row's bit in the page; ROWS
+ * (r23) the rows left in the segment (up to the next edge end or the
+ * limit, at most 255), this one too; T set when an interpolator's den
+ * is 256 or more (the 16-bit step).  The interpolators' q, r, den are
  * read through lx on each row's step (rx, ld, rd lie 13, 27, 47 bytes
- * on).  An edge that ends at row y is moved on here (emove: r8k_estart,
- * then r8_attr_first, or r8_scan_attr_edge in C), and only its two
- * interpolators re-read.  A span's depth step is floor((rd - ld) / n)
- * from r8_rcp256[n] (n = 1..255: q or q - 1, one correction), with an
- * 8-bit error (r < n <= 255) kept as e + 256 - n, so that the carry of
- * e + r says e + r >= n.  Per pixel: depth test, store, page bit set or
- * cleared by bit 7 of the pattern (rotated left per column), DDA step;
- * the drawn and the skipped pixel each with its own copy of the step (no
- * jump back into a shared tail).
- *
- * Everything of the polygon is found from t->lx (= &s->c.l.x: rx, ld,
- * rd, l.yend, r.yend 13, 27, 47, 10, 23 bytes on; t's rx, ld, rd,
- * lyend, ryend are not read), and the dither phase from y (t->k, y & 3,
- * only written at the end).  r8k_zband (below) builds t itself.
+ * on).  r5, r9, r13, r17 belong to the span's pixel loop (no saves per
+ * row).  An edge that ends at row y is moved on at the segment's start
+ * (emove: r8k_estart, then r8_attr_first, or r8_scan_attr_edge in C),
+ * and only its two interpolators re-read.  A span's depth step is
+ * floor((rd - ld) / n) from r8_rcp256[n] (n = 1..255: q or q - 1, one
+ * correction), with an 8-bit error (r < n <= 255) kept as e + 256 - n,
+ * so that the carry of e + r says e + r >= n.  Per pixel: depth test,
+ * store, page bit set or cleared by bit 7 of the pattern (rotated left
+ * per column), DDA step; the drawn and the skipped pixel each with its
+ * own copy of the step (no jump back into a shared tail).  The dither
+ * phase comes from y (t->k = y & 3 is written at the end, not read).
  *
  * Each span drawn widens the columns [r8_zcols[0], r8_zcols[1]) to hold
  * it (bytes; 10 cycles a span).
@@ -34,48 +43,62 @@
 
 #define LXVL r2
 #define LXVH r3
-#define LXEL r4
-#define LXEH r5
+#define LXE  r4
 #define RXVL r6
 #define RXVH r7
-#define RXEL r8
-#define RXEH r9
+#define RXE  r8
 #define LDVL r10
 #define LDVH r11
-#define LDEL r12
-#define LDEH r13
+#define LDE  r12
 #define RDVL r14
 #define RDVH r15
-#define RDEL r16
-#define RDEH r17
-#define YL_ r22
-#define YH_ r23
+#define RDE  r16
+#define PAT  r5                 /* the pixel loop's: the pattern, */
+#define NDEN r9                 /* 256 - n, */
+#define CNT  r13                /* the columns left, */
+#define NM   r17                /* ~M_ */
+#define M_   r22
+#define ROWS r23
+
+/* zband_t: the r8_zrows layout; the kernel's own fields in the ones it
+ * does not read (rx: 2w) */
+#define T_LX    zband_t+0
+#define T_W2    zband_t+2
+#define T_PAGE  zband_t+10
+#define T_W     zband_t+12
+#define T_PAT   zband_t+16
+#define T_S     zband_t+18
+#define T_Y     zband_t+24
+#define T_LIM   zband_t+26
+#define T_END   zband_t+28
 
 #include "saves.h"   /* SAVE18, RESTORE18 */
 
-/* one R8_INTERP_STEP: val (vl:vh), err (el:eh) in registers; q, r, den
- * of the interpolator at Z+off (the four lie in one r8_scan:
- * lx, then rx, ld, rd 13, 27 and 47 bytes on, asserted in src/zrows.c) */
-.macro STEPZ off, vl, vh, el, eh
+/* one R8_INTERP_STEP, den of 256 or more: val (vl:vh), the error's low
+ * byte el in registers, its high byte in memory; q, r, den of the
+ * interpolator at Z+off (the four lie in one r8_scan: lx, then rx, ld,
+ * rd 13, 27 and 47 bytes on, asserted in src/zrows.c) */
+.macro STEPZ off, vl, vh, el
         ldd     r18, Z+\off+2
         ldd     r19, Z+\off+3
         add     \vl, r18
         adc     \vh, r19
+        ldd     r20, Z+\off+5
         ldd     r18, Z+\off+6
         ldd     r19, Z+\off+7
         add     \el, r18
-        adc     \eh, r19
+        adc     r20, r19
         ldd     r18, Z+\off+8
         ldd     r19, Z+\off+9
         cp      \el, r18
-        cpc     \eh, r19
+        cpc     r20, r19
         brlo    1f
         sub     \el, r18
-        sbc     \eh, r19
+        sbc     r20, r19
         sec
         adc     \vl, r1
         adc     \vh, r1
-1:
+1:      std     Z+\off+5, r20
 .endm
 
 /* the same when its den < 256 (err, r < den: their high bytes 0):
@@ -83,27 +106,22 @@
 .macro STEPB off, vl, vh, el
         ldd     r18, Z+\off+6
         ldd     r19, Z+\off+8
+        ldd     r20, Z+\off+2
+        ldd     r21, Z+\off+3
         add     \el, r18
         brcs    1f
         cp      \el, r19
         brlo    2f
 1:      sub     \el, r19
-        ldd     r18, Z+\off+2
-        ldd     r19, Z+\off+3
-        sec
-        adc     \vl, r18
-        adc     \vh, r19
-        rjmp    3f
-2:      ldd     r18, Z+\off+2
-        ldd     r19, Z+\off+3
-        add     \vl, r18
-        adc     \vh, r19
-3:
+        subi    r20, 0xFF               /* q + 1 */
+        sbci    r21, 0xFF
+2:      add     \vl, r20
+        adc     \vh, r21
 .endm
 
-/* t->fast (Y+30) = 0 when the four dens are < 256, else not (Z = lx:
- * their high bytes at 9, 22, 36, 56) */
-.macro FASTF
+/* T = a den of the four is 256 or more (Z = lx: their high bytes at 9,
+ * 22, 36, 56) */
+.macro FASTT
         ldd     r18, Z+9
         ldd     r19, Z+22
         or      r18, r19
@@ -111,29 +129,26 @@
         or      r18, r19
         ldd     r19, Z+56
         or      r18, r19
-        std     Y+30, r18
+        clt
+        breq    1f
+        set
+1:
 .endm
 
-/* load / store val, err of the interpolator at Z+off (Z = lx: rx, ld,
- * rd, lyend, ryend at 13, 27, 47, 10, 23) */
-.macro LDI2 off, vl, vh, el, eh
+/* load / store val and the error's low byte of the interpolator at
+ * Z+off (Z = lx: rx, ld, rd, lyend, ryend at 13, 27, 47, 10, 23) */
+.macro LDI3 off, vl, vh, el
         ldd     \vl, Z+\off
         ldd     \vh, Z+\off+1
         ldd     \el, Z+\off+4
-        ldd     \eh, Z+\off+5
 .endm
-.macro STI2 off, vl, vh, el, eh
+.macro STI3 off, vl, vh, el
         std     Z+\off, \vl
         std     Z+\off+1, \vh
         std     Z+\off+4, \el
-        std     Z+\off+5, \eh
 .endm
 
-.macro PUSHALL
-        SAVE18
-.endm
-
-/* r8k_zband's r8_zrows (31 bytes) */
+/* the kernel's r8_zrows (31 bytes) */
         .section .bss.zband_t,"aw",@nobits
         .type   zband_t, @object
         .size   zband_t, 31
@@ -148,19 +163,79 @@ zband_t:
 r8_zcols:
         .zero   2
 
+/* int r8k_zrows(r8_zrows *t): t's lx, z, page, w, m, pat, s, y, lim
+ * in (zband_t, or the registers), its y, z, page, m, k out */
         .section .text.r8k_zrows,"ax",@progbits
         .global r8k_zrows
         .type   r8k_zrows, @function
 r8k_zrows:
-        PUSHALL
-        movw    r28, r24
+        SAVE18
+        push    r24
+        push    r25
+        movw    r26, r24                /* X = t */
+        ld      r18, X+                 /* 0: lx */
+        ld      r19, X+
+        sts     T_LX, r18
+        sts     T_LX+1, r19
+        adiw    r26, 6
+        ld      r28, X+                 /* 8: z, in Y */
+        ld      r29, X+
+        ld      r18, X+                 /* 10: page */
+        ld      r19, X+
+        sts     T_PAGE, r18
+        sts     T_PAGE+1, r19
+        ld      r18, X+                 /* 12: w, 2w */
+        ld      r19, X+
+        sts     T_W, r18
+        sts     T_W+1, r19
+        lsl     r18
+        rol     r19
+        sts     T_W2, r18
+        sts     T_W2+1, r19
+        ld      M_, X+                  /* 14: m */
+        adiw    r26, 1
+        ld      r18, X+                 /* 16: pat */
+        ld      r19, X+
+        sts     T_PAT, r18
+        sts     T_PAT+1, r19
+        ld      r18, X+                 /* 18: s */
+        ld      r19, X+
+        sts     T_S, r18
+        sts     T_S+1, r19
+        adiw    r26, 4
+        ld      r24, X+                 /* 24: y, in r25:r24 */
+        ld      r25, X+
+        ld      r18, X+                 /* 26: lim */
+        ld      r19, X+
+        sts     T_LIM, r18
+        sts     T_LIM+1, r19
+        lds     r30, T_LX               /* Z = lx */
+        lds     r31, T_LX+1
         rcall   zbody
+        pop     r27
+        pop     r26
+        adiw    r26, 8
+        st      X+, r28                 /* 8: z */
+        st      X+, r29
+        lds     r18, T_PAGE             /* 10: page */
+        st      X+, r18
+        lds     r18, T_PAGE+1
+        st      X+, r18
+        adiw    r26, 2
+        st      X+, M_                  /* 14: m */
+        lds     r18, T_Y                /* 15: k = y & 3 */
+        andi    r18, 3
+        st      X+, r18
+        adiw    r26, 8
+        lds     r18, T_Y                /* 24: y */
+        st      X+, r18
+        lds     r18, T_Y+1
+        st      X+, r18
         rjmp    zrestore
 
 /* int r8k_zband(r8_act *a, const r8_fb *fb, r8_u16 *depth, r8_s16 ylimit)
  * (src/r8zrows.h): the r8_zrows of the reference (src/zrows.c) built in
- * a static 31 bytes (zband_t; no stack frame to make), then zbody;
- * a->s.c.y = t.y on 1 and 2.
+ * zband_t and the registers, then zbody; a->s.c.y = t.y on 1 and 2.
  * In: r25:24 a, r23:22 fb, r21:20 depth, r19:18 ylimit.  Offsets
  * (asserted in src/zrows.c): r8_act {level 0, s 2}; r8_scanx {y 21,
  * ybot 23, l.x 25, l.yend 35, r.x 38, r.yend 48}; r8_scan {ld 52,
@@ -168,33 +243,29 @@ r8k_zrows:
         .global r8k_zband
         .type   r8k_zband, @function
 r8k_zband:
-        PUSHALL
-        ldi     r28, lo8(zband_t)       /* Y = its r8_zrows (static: */
-        ldi     r29, hi8(zband_t)       /* not reentrant, as r8_zcols) */
+        SAVE18
         movw    r30, r24                /* Z = a */
         ld      r17, Z+                 /* level, min 16: pat */
         cpi     r17, 17
         brlo    1f
         ldi     r17, 16
-1:      ldi     r26, 4
-        mul     r17, r26
-        movw    r26, r0
-        clr     r1
-        subi    r26, lo8(-(r8_fb_dither_tab))
-        sbci    r27, hi8(-(r8_fb_dither_tab))
-        std     Y+16, r26
-        std     Y+17, r27
+1:      lsl     r17
+        lsl     r17
+        ldi     r26, lo8(r8_fb_dither_tab)
+        ldi     r27, hi8(r8_fb_dither_tab)
+        add     r26, r17
+        adc     r27, r1
+        sts     T_PAT, r26
+        sts     T_PAT+1, r27
         adiw    r30, 1                  /* Z = s */
-        std     Y+18, r30
-        std     Y+19, r31
+        sts     T_S, r30
+        sts     T_S+1, r31
         movw    r26, r30                /* lx (the kernel finds rx, ld, */
         adiw    r26, 25                 /* rd, the yends from it) */
-        std     Y+0, r26
-        std     Y+1, r27
-        ldd     r16, Z+21               /* y */
-        ldd     r17, Z+22
-        std     Y+24, r16
-        std     Y+25, r17
+        sts     T_LX, r26
+        sts     T_LX+1, r27
+        ldd     r24, Z+21               /* y, in r25:r24 */
+        ldd     r25, Z+22
         ldd     r14, Z+23               /* lim = min(ybot, ylimit, y0 + rows) */
         ldd     r15, Z+24
         cp      r18, r14
@@ -212,61 +283,71 @@ r8k_zband:
         cpc     r19, r15
         brge    3f
         movw    r14, r18
-3:      std     Y+26, r14
-        std     Y+27, r15
-        ldd     r10, Z+2                /* w */
-        ldd     r11, Z+3
-        std     Y+12, r10
-        std     Y+13, r11
-        sub     r16, r12                /* by = y - y0 */
-        sbc     r17, r13
-        mul     r16, r10                /* r15:r14 = by * w */
-        movw    r14, r0
-        mul     r16, r11
-        add     r15, r0
-        mul     r17, r10
-        add     r15, r0
-        clr     r1
-        add     r20, r14                /* z = depth + by * w */
-        adc     r21, r15
-        add     r20, r14
-        adc     r21, r15
-        std     Y+8, r20
-        std     Y+9, r21
-        ldi     r18, 1                  /* m = 1 << (by & 7) */
-        sbrc    r16, 1
-        ldi     r18, 4
-        sbrc    r16, 0
+3:      sts     T_LIM, r14
+        sts     T_LIM+1, r15
+        ldd     r10, Z+2                /* w, 2w (stored when not the */
+        ldd     r11, Z+3                /* last call's) */
+        lds     r18, T_W2
+        lds     r19, T_W2+1
+        lds     r16, T_W
+        lds     r17, T_W+1
+        cp      r16, r10
+        cpc     r17, r11
+        breq    5f
+        sts     T_W, r10
+        sts     T_W+1, r11
+        movw    r18, r10
         lsl     r18
+        rol     r19
+        sts     T_W2, r18
+        sts     T_W2+1, r19
+5:
+        movw    r16, r24                /* by = y - y0 (>= 0) */
+        sub     r16, r12
+        sbc     r17, r13
+        mul     r16, r18                /* Y = depth + by * 2w */
+        movw    r28, r0
+        mul     r16, r19
+        add     r29, r0
+        mul     r17, r18
+        add     r29, r0
+        clr     r1
+        add     r28, r20
+        adc     r29, r21
+        ldi     M_, 1                   /* m = 1 << (by & 7) */
+        sbrc    r16, 1
+        ldi     M_, 4
+        sbrc    r16, 0
+        lsl     M_
         sbrc    r16, 2
-        swap    r18
-        std     Y+14, r18
-        lsr     r17                     /* page = buf + (by >> 3) * w */
+        swap    M_
+        ld      r18, Z                  /* page = buf + (by >> 3) * w */
+        ldd     r19, Z+1
+        cpi     r16, 8                  /* (by < 8: buf) */
+        cpc     r17, r1
+        brlo    6f
+        lsr     r17
         ror     r16
         lsr     r17
         ror     r16
         lsr     r17
         ror     r16
         mul     r16, r10
-        movw    r14, r0
+        add     r18, r0
+        adc     r19, r1
         mul     r16, r11
-        add     r15, r0
+        add     r19, r0
         mul     r17, r10
-        add     r15, r0
+        add     r19, r0
         clr     r1
-        ld      r18, Z
-        ldd     r19, Z+1
-        add     r18, r14
-        adc     r19, r15
-        std     Y+10, r18
-        std     Y+11, r19
+6:      sts     T_PAGE, r18
+        sts     T_PAGE+1, r19
+        movw    r30, r26                /* Z = lx */
         rcall   zbody
-        tst     r24                     /* 1, 2: c.y = t.y */
+        tst     r24                     /* 1, 2: c.y = t.y (r19:r18) */
         breq    4f
-        ldd     r30, Y+18
-        ldd     r31, Y+19
-        ldd     r18, Y+24
-        ldd     r19, Y+25
+        lds     r30, T_S
+        lds     r31, T_S+1
         std     Z+21, r18
         std     Z+22, r19
 4:      rjmp    zrestore
@@ -277,67 +358,87 @@ zrestore:
         RESTORE18
         ret
 
-/* the rows: Y = t, the registers saved; r24 the value */
+/* the rows: zband_t's lx, page, w, 2w, pat, s, lim set, Z = lx, Y =
+ * the depth row of row y, M_ its bit, r25:r24 = y; the registers saved.
+ * Returns r24 (1: y reached lim, 2: row y is the caller's), y in T_Y
+ * and r19:r18. */
 zbody:
-        ldd     r30, Y+0                /* Z = lx */
-        ldd     r31, Y+1
-        LDI2    0, LXVL, LXVH, LXEL, LXEH
-        LDI2    13, RXVL, RXVH, RXEL, RXEH
-        LDI2    27, LDVL, LDVH, LDEL, LDEH
-        LDI2    47, RDVL, RDVH, RDEL, RDEH
-        FASTF
-        ldd     YL_, Y+24               /* y */
-        ldd     YH_, Y+25
+        LDI3    0, LXVL, LXVH, LXE
+        LDI3    13, RXVL, RXVH, RXE
+        LDI3    27, LDVL, LDVH, LDE
+        LDI3    47, RDVL, RDVH, RDE
+        FASTT
+        rjmp    .Lcheck
 
-.Lcheck:                                /* y < lim, else done */
-        ldd     r18, Y+26
-        ldd     r19, Y+27
-        cp      YL_, r18
-        cpc     YH_, r19
-        brlt    1f
-        ldi     r24, 1
-        rjmp    .Lout
-1:      ldd     r30, Y+0                /* Z = lx */
-        ldd     r31, Y+1
-        ldd     r20, Z+10               /* the left edge ends at y: on */
-        ldd     r21, Z+11
-        cp      YL_, r20
-        cpc     YH_, r21
+.Lmove:                                 /* y in T_Y for emove */
+        sts     T_Y, r24
+        sts     T_Y+1, r25
+        cp      r24, r20
+        cpc     r25, r21
         brlt    2f
-        std     Y+24, YL_
-        std     Y+25, YH_
         ldi     r19, 0
         rcall   emove
-        ldd     r30, Y+0
-        ldd     r31, Y+1
-        LDI2    0, LXVL, LXVH, LXEL, LXEH
-        LDI2    27, LDVL, LDVH, LDEL, LDEH
-        FASTF
-        ldd     YL_, Y+24
-        ldd     YH_, Y+25
-2:      ldd     r26, Z+23               /* the right one */
-        ldd     r27, Z+24
-        cp      YL_, r26
-        cpc     YH_, r27
+        LDI3    0, LXVL, LXVH, LXE
+        LDI3    27, LDVL, LDVH, LDE
+        FASTT
+2:      ldd     r20, Z+23               /* the right one */
+        ldd     r21, Z+24
+        cp      r24, r20
+        cpc     r25, r21
         brlt    3f
-        std     Y+24, YL_
-        std     Y+25, YH_
         ldi     r19, 1
         rcall   emove
-        ldd     r30, Y+0
-        ldd     r31, Y+1
-        LDI2    13, RXVL, RXVH, RXEL, RXEH
-        LDI2    47, RDVL, RDVH, RDEL, RDEH
-        FASTF
-        ldd     YL_, Y+24
-        ldd     YH_, Y+25
-3:      ldd     r18, Y+26
-        ldd     r19, Y+27
+        LDI3    13, RXVL, RXVH, RXE
+        LDI3    47, RDVL, RDVH, RDE
+        FASTT
+3:      lds     r18, T_LIM
+        lds     r19, T_LIM+1
         ldd     r20, Z+10
         ldd     r21, Z+11
         ldd     r26, Z+23
         ldd     r27, Z+24
-.Lend:                                  /* end = min(lim, yends), > y */
+        rjmp    .Lseg
+.Ldone:                                 /* y reached lim */
+        sts     T_Y, r24
+        sts     T_Y+1, r25
+        movw    r18, r24
+        ldi     r24, 1
+        rjmp    .Lout
+
+.Lcheck:                                /* a segment from y: r25:r24, Z = lx */
+        lds     r18, T_LIM              /* y < lim, else done */
+        lds     r19, T_LIM+1
+        cp      r24, r18
+        cpc     r25, r19
+        brge    .Ldone
+        ldd     r20, Z+10               /* an edge ends at y: on */
+        ldd     r21, Z+11
+        ldd     r26, Z+23
+        ldd     r27, Z+24
+        cp      r24, r20
+        cpc     r25, r21
+        brge    9f
+        cp      r24, r26
+        cpc     r25, r27
+        brlt    .Lseg
+9:      rjmp    .Lmove
+.Lstept:                                /* (the row's branches' far */
+        rjmp    .Lstep                  /* targets, in their reach) */
+.Lstopt:
+        rjmp    .Lstop
+.Lclip:                                 /* w < xr: xb = w, unless */
+        cp      LXVL, r18               /* xl >= w: nothing drawn */
+        cpc     LXVH, r19
+        brge    .Lstept
+        movw    r20, r18
+        rjmp    .Lclipped
+.Lonet:
+        rjmp    .Lone
+.Lzc1:  sts     r8_zcols+1, r20
+        rjmp    .Lzc1b
+.Lzc0:  sts     r8_zcols, LXVL
+        rjmp    .Lzc0b
+.Lseg:                                  /* end = min(lim, yends) */
         cp      r20, r18
         cpc     r21, r19
         brge    4f
@@ -346,80 +447,80 @@ zbody:
         cpc     r27, r19
         brge    5f
         movw    r18, r26
-5:      cp      YL_, r18
-        cpc     YH_, r19
+5:      movw    r20, r18                /* ROWS = end - y: 1..255 */
+        sub     r20, r24
+        sbc     r21, r25
+        breq    6f
         brlt    6f
-        movw    r18, YL_
-        subi    r18, 0xFF
-        sbci    r19, 0xFF
-6:      std     Y+28, r18
-        std     Y+29, r19
+        tst     r21
+        breq    8f
+        ldi     r20, 255                /* 256 or more: 255, then again */
+        rjmp    7f
+6:      ldi     r20, 1                  /* end <= y (an edge that did not */
+7:      movw    r18, r24                /* move on): one row */
+        add     r18, r20
+        adc     r19, r1
+8:      mov     ROWS, r20
+        sts     T_END, r18
+        sts     T_END+1, r19
 
 .Lrow:
         cp      LXVL, RXVL              /* xl >= xr: no span */
         cpc     LXVH, RXVH
-        brlt    2f
-        rjmp    .Lstep
-2:      sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
-        rjmp    .Lstop
+        brge    .Lstept
         movw    r24, RXVL               /* n = xr - xl */
         sub     r24, LXVL
         sbc     r25, LXVH
-        tst     r25                     /* n > 255: r8_zfill's */
-        breq    3f
+        sbrc    LXVH, 7                 /* xl < 0: r8_zfill's */
         rjmp    .Lstop
-3:      ldd     r20, Y+12               /* w */
-        ldd     r21, Y+13
-        cp      LXVL, r20               /* xl >= w: nothing drawn */
-        cpc     LXVH, r21
-        brlt    4f
-        rjmp    .Lstep
-4:      cp      r20, RXVL               /* xb = min(w, xr) */
-        cpc     r21, RXVH
-        brlt    5f
+        tst     r25                     /* n > 255: r8_zfill's */
+        brne    .Lstopt
+        lds     r18, T_W                /* xb = xr when xr <= w */
+        lds     r19, T_W+1
         movw    r20, RXVL
-5:      lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
+        cp      r18, r20
+        cpc     r19, r21
+        brlt    .Lclip
+.Lclipped:
+        lds     r18, r8_zcols+1         /* the columns drawn (bytes): */
         cp      r18, r20                /* r8_zcols[1] = max(it, xb), */
-        brsh    30f
-        sts     r8_zcols+1, r20
-30:     lds     r18, r8_zcols           /* r8_zcols[0] = min(it, xl) */
+        brlo    .Lzc1                   /* (the stores out of line) */
+.Lzc1b: lds     r18, r8_zcols           /* r8_zcols[0] = min(it, xl) */
         cp      LXVL, r18
-        brsh    31f
-        sts     r8_zcols, LXVL
-31:     sub     r20, LXVL               /* columns (1..255) */
+        brlo    .Lzc0
+.Lzc0b: sub     r20, LXVL               /* columns (1..255) */
         cpi     r20, 1                  /* one: its depth is ld's, no */
-        brne    6f                      /* step, no division */
-        rjmp    .Lone
-6:
-        push    r4
-        push    r5
-        push    r6
-        push    r7
-        mov     r4, r20                 /* r4: columns */
-        mov     r20, YL_                /* r5: pat[y & 3] (flash) */
+        breq    .Lonet                  /* step, no division */
+7:      mov     CNT, r20
+        lds     r20, T_END              /* pattern: pat[y & 3] (flash), */
+        sub     r20, ROWS               /* y = end - ROWS */
         andi    r20, 3
-        ldd     r30, Y+16
-        ldd     r31, Y+17
+        lds     r30, T_PAT
+        lds     r31, T_PAT+1
         add     r30, r20
         adc     r31, r1
-        lpm     r5, Z
-        mov     r20, LXVL               /* rotated left by xl & 7: */
-        sbrc    r20, 2                  /* 4 (swap), then xl & 3 */
-        swap    r5
-        andi    r20, 3
-        breq    7f
-6:      lsl     r5
-        adc     r5, r1
-        dec     r20
-        brne    6b
-7:      movw    r18, RDVL               /* diff = rd - ld; T: diff < 0 */
+        lpm     PAT, Z
+        sbrc    LXVL, 2                 /* rotated left by xl & 7: 4 */
+        swap    PAT                     /* (swap), 2, 1 */
+        sbrs    LXVL, 1
+        rjmp    8f
+        lsl     PAT
+        adc     PAT, r1
+        lsl     PAT
+        adc     PAT, r1
+8:      sbrs    LXVL, 0
+        rjmp    9f
+        lsl     PAT
+        adc     PAT, r1
+9:      movw    r18, RDVL               /* diff = rd - ld; r27: its sign */
         sub     r18, LDVL
         sbc     r19, LDVH
-        bst     r19, 7
-        brtc    8f
+        mov     r27, r19
+        sbrs    r27, 7
+        rjmp    10f
         com     r18                     /* un = -diff - 1 */
         com     r19
-8:      ldi     r30, lo8(r8_rcp256)
+10:     ldi     r30, lo8(r8_rcp256)
         ldi     r31, hi8(r8_rcp256)
         add     r30, r24
         adc     r31, r25                /* r25 = 0 */
@@ -464,125 +565,156 @@ zbody:
         sbc     r19, r21
 21:     cp      r18, r24
         cpc     r19, r25
-        brlo    9f
+        brlo    22f
         sub     r18, r24
         adiw    r30, 1
-9:      brtc    10f
+22:     sbrs    r27, 7
+        rjmp    23f
         com     r30                     /* q = -q' - 1, r = n - 1 - rr */
-        com     r31
-        mov     r0, r24
-        dec     r0
-        sub     r0, r18
-        mov     r18, r0
-10:     movw    r20, r30                /* DQ */
+        com     r31                     /* (= n + ~rr, 8 bits) */
+        com     r18
+        add     r18, r24
+23:     movw    r20, r30                /* DQ */
         mov     r25, r18                /* DR */
-        mov     r6, r24                 /* -DN: 256 - n */
-        neg     r6
-        mov     r24, r6                 /* DE + 256 - n (DE = 0) */
+        neg     r24                     /* DE + 256 - n (DE = 0), */
+        mov     NDEN, r24               /* NDEN = 256 - n */
         movw    r18, LDVL               /* DV */
-        ldd     r26, Y+10               /* X = page + xl */
-        ldd     r27, Y+11
+        lds     r26, T_PAGE             /* X = page + xl */
+        lds     r27, T_PAGE+1
         add     r26, LXVL
         adc     r27, LXVH
-        ldd     r30, Y+8                /* Z = z + xl */
-        ldd     r31, Y+9
+        movw    r30, r28                /* Z = z + 2 xl */
         add     r30, LXVL
         adc     r31, LXVH
         add     r30, LXVL
         adc     r31, LXVH
-        ldd     r7, Y+14                /* M */
-        mov     r1, r4                  /* r1: columns (0 again at the end) */
-        mov     r4, r7                  /* NM */
-        com     r4
-.Lpx:
-        ld      r0, Z
-        cp      r18, r0
-        ldd     r0, Z+1
-        cpc     r19, r0
-        brlo    .Lskip
-        st      Z+, r18                 /* nearer or equal: depth, pixel */
+        mov     NM, M_
+        com     NM
+.Lpx:                                   /* two pixels a turn (A, B): */
+        lsr     CNT                     /* CNT = pairs; odd: from B */
+        brcc    .Lpa
+        inc     CNT
+        rjmp    .Lpb
+.Lpa:                                   /* depth >= the stored one: */
+        ldd     r0, Z+1                 /* the high bytes decide, but */
+        cp      r19, r0                 /* when equal (.Leqa) */
+        brlo    .Lska
+        breq    .Leqa
+.Ldra:  st      Z+, r18                 /* nearer or equal: depth, pixel */
         st      Z+, r19
         ld      r0, X
-        and     r0, r4
-        lsl     r5
-        brcc    11f
-        inc     r5
-        or      r0, r7
-11:     st      X+, r0
-        add     r24, r25                /* the DDA (twice: no jump); the */
-        brcc    13f                     /* error kept as e + 256 - n: */
-        add     r24, r6                 /* carry when e + r >= n, then */
-        sec                             /* dv += q + 1 */
-13:     adc     r18, r20
+        and     r0, NM
+        lsl     PAT
+        brcc    2f
+        inc     PAT
+        or      r0, M_
+2:      st      X+, r0
+        add     r24, r25                /* the DDA; the error kept as */
+        brcc    3f                      /* e + 256 - n: carry when */
+        add     r24, NDEN               /* e + r >= n, then dv += q + 1 */
+        sec
+3:      adc     r18, r20
         adc     r19, r21
-        dec     r1
-        brne    .Lpx
-        rjmp    .Lpxend
-.Lskip:
-        lsl     r5
-        brcc    16f
-        inc     r5
-16:     adiw    r26, 1
+.Lpb:
+        ldd     r0, Z+1
+        cp      r19, r0
+        brlo    .Lskb
+        breq    .Leqb
+.Ldrb:  st      Z+, r18
+        st      Z+, r19
+        ld      r0, X
+        and     r0, NM
+        lsl     PAT
+        brcc    5f
+        inc     PAT
+        or      r0, M_
+5:      st      X+, r0
+        add     r24, r25
+        brcc    6f
+        add     r24, NDEN
+        sec
+6:      adc     r18, r20
+        adc     r19, r21
+        dec     CNT
+        brne    .Lpa
+        rjmp    .Lstep
+.Leqa:                                  /* high bytes equal: the low */
+        ld      r0, Z
+        cp      r18, r0
+        brlo    .Lska
+        rjmp    .Ldra
+.Leqb:
+        ld      r0, Z
+        cp      r18, r0
+        brlo    .Lskb
+        rjmp    .Ldrb
+.Lska:                                  /* farther: not drawn (each its */
+        lsl     PAT                     /* own copy of the step) */
+        adc     PAT, r1
+        adiw    r26, 1
         adiw    r30, 2
         add     r24, r25
-        brcc    18f
-        add     r24, r6
+        brcc    7f
+        add     r24, NDEN
         sec
-18:     adc     r18, r20
+7:      adc     r18, r20
         adc     r19, r21
-        dec     r1
-        brne    .Lpx
-.Lpxend:
-        pop     r7
-        pop     r6
-        pop     r5
-        pop     r4
+        rjmp    .Lpb
+.Lskb:
+        lsl     PAT
+        adc     PAT, r1
+        adiw    r26, 1
+        adiw    r30, 2
+        add     r24, r25
+        brcc    8f
+        add     r24, NDEN
+        sec
+8:      adc     r18, r20
+        adc     r19, r21
+        dec     CNT
+        breq    .Lstep
+        rjmp    .Lpa
+.Lslowt:
+        rjmp    .Lslow
 
 .Lstep:
-        ldd     r30, Y+0                /* Z = lx: rx, ld, rd at 13, 27, 47 */
-        ldd     r31, Y+1
-        ldd     r18, Y+30               /* all dens < 256: 8-bit errors */
-        tst     r18
-        breq    4f
-        rjmp    .Lslow
-4:      STEPB   0, LXVL, LXVH, LXEL
-        STEPB   13, RXVL, RXVH, RXEL
-        STEPB   27, LDVL, LDVH, LDEL
-        STEPB   47, RDVL, RDVH, RDEL
+        lds     r30, T_LX               /* Z = lx: rx, ld, rd at 13, 27, 47 */
+        lds     r31, T_LX+1
+        brts    .Lslowt                 /* a den >= 256: 16-bit errors */
+        STEPB   0, LXVL, LXVH, LXE
+        STEPB   13, RXVL, RXVH, RXE
+        STEPB   27, LDVL, LDVH, LDE
+        STEPB   47, RDVL, RDVH, RDE
 .Lbook:
-        ldd     r18, Y+12               /* w */
-        ldd     r19, Y+13
-        ldd     r30, Y+8                /* z += w */
-        ldd     r31, Y+9
-        add     r30, r18
-        adc     r31, r19
-        add     r30, r18
-        adc     r31, r19
-        std     Y+8, r30
-        std     Y+9, r31
-        ldd     r20, Y+14               /* m <<= 1; past bit 7: page += w */
-        lsl     r20
-        brne    14f
-        ldi     r20, 1
-        ldd     r30, Y+10
-        ldd     r31, Y+11
-        add     r30, r18
-        adc     r31, r19
-        std     Y+10, r30
-        std     Y+11, r31
-14:     std     Y+14, r20
-        subi    YL_, 0xFF               /* y++; on below end */
-        sbci    YH_, 0xFF
-        ldd     r18, Y+28
-        ldd     r19, Y+29
-        cp      YL_, r18
-        cpc     YH_, r19
-        brge    15f
+        lds     r18, T_W2               /* the next depth row */
+        lds     r19, T_W2+1
+        add     r28, r18
+        adc     r29, r19
+        lsl     M_                      /* past bit 7: page += w */
+        breq    .Lpage
+.Lnext:
+        dec     ROWS
+        breq    14f
         rjmp    .Lrow
-15:     rjmp    .Lcheck
+14:     lds     r24, T_END              /* the segment's end: y = end */
+        lds     r25, T_END+1
+        lds     r30, T_LX
+        lds     r31, T_LX+1
+        rjmp    .Lcheck
+.Lpage:
+        ldi     M_, 1
+        lds     r30, T_PAGE
+        lds     r31, T_PAGE+1
+        lds     r18, T_W
+        lds     r19, T_W+1
+        add     r30, r18
+        adc     r31, r19
+        sts     T_PAGE, r30
+        sts     T_PAGE+1, r31
+        rjmp    .Lnext
+
 .Lone:                                  /* one column, depth ld */
-        ldd     r30, Y+8                /* Z = z + xl */
-        ldd     r31, Y+9
+        movw    r30, r28                /* Z = z + 2 xl */
         add     r30, LXVL
         adc     r31, LXVH
         add     r30, LXVL
@@ -593,13 +725,13 @@ zbody:
         cpc     LDVH, r0
         brsh    3f                      /* farther: not drawn */
         rjmp    .Lstep
-3:
-        st      Z, LDVL
+3:      st      Z, LDVL
         std     Z+1, LDVH
-        mov     r20, YL_                /* pat[y & 3] (flash) */
+        lds     r20, T_END              /* pat[y & 3] (flash) */
+        sub     r20, ROWS
         andi    r20, 3
-        ldd     r30, Y+16
-        ldd     r31, Y+17
+        lds     r30, T_PAT
+        lds     r31, T_PAT+1
         add     r30, r20
         adc     r31, r1
         lpm     r21, Z
@@ -611,81 +743,88 @@ zbody:
 1:      lsl     r21
         dec     r20
         brne    1b
-2:      ldd     r26, Y+10               /* X = page + xl */
-        ldd     r27, Y+11
+2:      lds     r26, T_PAGE             /* X = page + xl */
+        lds     r27, T_PAGE+1
         add     r26, LXVL
         adc     r27, LXVH
-        ldd     r20, Y+14               /* m: set, then cleared where */
-        ld      r0, X                   /* the pattern's bit is 0 */
-        or      r0, r20
+        ld      r0, X                   /* m: set, then cleared where */
+        or      r0, M_                  /* the pattern's bit is 0 */
         sbrs    r21, 7
-        eor     r0, r20
+        eor     r0, M_
         st      X, r0
         rjmp    .Lstep
 
 .Lslow:                                 /* a den of 256 or more */
-        STEPZ   0, LXVL, LXVH, LXEL, LXEH
-        STEPZ   13, RXVL, RXVH, RXEL, RXEH
-        STEPZ   27, LDVL, LDVH, LDEL, LDEH
-        STEPZ   47, RDVL, RDVH, RDEL, RDEH
+        STEPZ   0, LXVL, LXVH, LXE
+        STEPZ   13, RXVL, RXVH, RXE
+        STEPZ   27, LDVL, LDVH, LDE
+        STEPZ   47, RDVL, RDVH, RDE
         rjmp    .Lbook
 
-.Lstop:
-        ldi     r24, 2                  /* row y: the caller's */
+.Lstop:                                 /* row y = end - ROWS: the caller's */
+        lds     r18, T_END
+        lds     r19, T_END+1
+        sub     r18, ROWS
+        sbc     r19, r1
+        sts     T_Y, r18
+        sts     T_Y+1, r19
+        ldi     r24, 2
 .Lout:
-        std     Y+24, YL_
-        std     Y+25, YH_
-        mov     r20, YL_                /* k = y & 3 */
-        andi    r20, 3
-        std     Y+15, r20
-        ldd     r30, Y+0
-        ldd     r31, Y+1
-        STI2    0, LXVL, LXVH, LXEL, LXEH
-        STI2    13, RXVL, RXVH, RXEL, RXEH
-        STI2    27, LDVL, LDVH, LDEL, LDEH
-        STI2    47, RDVL, RDVH, RDEL, RDEH
+        lds     r30, T_LX
+        lds     r31, T_LX+1
+        STI3    0, LXVL, LXVH, LXE
+        STI3    13, RXVL, RXVH, RXE
+        STI3    27, LDVL, LDVH, LDE
+        STI3    47, RDVL, RDVH, RDE
         ret
+
 /* emove: r8_scan_row_attrs(s, y, 0)'s work for one edge (r19: 0 the
- * left, 1 the right; y in t->y): r8k_estart moves it on; when its vi
- * changed, the depth interpolator (t->ld or t->rd) is set up again by
+ * left, 1 the right; y in T_Y): r8k_estart moves it on; when its vi
+ * changed, the depth interpolator (ld or rd) is set up again by
  * r8_attr_first(it, vp[back(vi)], vp[vi], y, 2) (depth alone), or by
  * r8_scan_attr_edge (src/r8zrows.h: attr_start, the general one).
  * Offsets (asserted in src/zrows.c, scankern.c): r8_scanx {vp 0, n 18,
  * l 25, r 38}, r8_edge {yend 10, vi 12}, r8_scan {c 0, attrs 51}.
- * Keeps r2..r17, Y; the interpolators in memory are the truth after. */
+ * Keeps r2..r4, r6..r8, r10..r12, r14..r16, Y, M_; holds its own in r5
+ * (side), r9 (the old vi), r13 (M_) (call-saved).  Returns Z = lx,
+ * r25:r24 = y; the interpolators in memory are the truth after. */
 emove:
-        push    r19
-        ldd     r22, Y+0                /* e = lx - 0 (left), rx - 13 */
-        ldd     r23, Y+1
+        mov     r13, M_
+        mov     r5, r19
+        lds     r22, T_LX               /* e = lx (left), lx + 13 */
+        lds     r23, T_LX+1
         sbrs    r19, 0
         rjmp    1f
-        subi    r22, 0xF3               /* + 13 */
+        subi    r22, 0xF3
         sbci    r23, 0xFF
 1:      movw    r30, r22
         ldd     r18, Z+12               /* from = e->vi */
-        push    r18
-        push    r22
-        push    r23
-        ldd     r24, Y+18               /* r8k_estart(&s->c, e, y, from) */
-        ldd     r25, Y+19
-        ldd     r20, Y+24
-        ldd     r21, Y+25
+        mov     r9, r18
+        lds     r24, T_S                /* r8k_estart(&s->c, e, y, from) */
+        lds     r25, T_S+1
+        lds     r20, T_Y
+        lds     r21, T_Y+1
         call    r8k_estart
-        pop     r31                     /* Z = e */
-        pop     r30
-        pop     r18                     /* from */
-        pop     r19                     /* side */
-        ldd     r20, Z+12               /* vi */
-        cp      r20, r18
+        lds     r30, T_LX               /* Z = e (a jump, not a skip: */
+        lds     r31, T_LX+1             /* simavr takes adiw r30, 13, */
+        sbrs    r5, 0                   /* 0x963D, for a 2-word JMP and */
+        rjmp    5f                      /* would skip the ldd too) */
+        adiw    r30, 13
+5:      ldd     r20, Z+12               /* vi */
+        cp      r20, r9
         breq    .Lemret                 /* vi unchanged: no attributes */
-        ldd     r30, Y+18               /* Z = s */
-        ldd     r31, Y+19
+        movw    r24, r30                /* it = e + 27 (ld), e + 34 (rd) */
+        adiw    r24, 27
+        sbrc    r5, 0
+        adiw    r24, 7
+        lds     r30, T_S                /* Z = s */
+        lds     r31, T_S+1
         ldd     r0, Z+51                /* attrs: depth alone, else C */
         dec     r0
         brne    .Lemgen
         ldd     r21, Z+18               /* n */
         mov     r18, r20                /* back(vi): left i + 1 (0 past */
-        sbrc    r19, 0                  /* n - 1), right i - 1 (n - 1 */
+        sbrc    r5, 0                   /* n - 1), right i - 1 (n - 1 */
         rjmp    2f                      /* before 0) */
         inc     r18
         cp      r18, r21
@@ -696,8 +835,7 @@ emove:
         brne    4f
         mov     r18, r21
 4:      dec     r18
-3:      push    r19
-        movw    r26, r30                /* a = vp[back], b = vp[vi] */
+3:      movw    r26, r30                /* a = vp[back], b = vp[vi] */
         add     r26, r18
         adc     r27, r1
         add     r26, r18
@@ -711,29 +849,25 @@ emove:
         ld      r0, Z
         ldd     r21, Z+1
         mov     r20, r0
-        ldd     r24, Y+0                /* it = ld = lx + 27 (rd + 47) */
-        ldd     r25, Y+1
-        adiw    r24, 27
-        sbrc    r19, 0
-        adiw    r24, 20
-        ldd     r18, Y+24               /* y */
-        ldd     r19, Y+25
-        push    r16
-        ldi     r16, 2
-        call    r8_attr_first
-        pop     r16
-        pop     r19
+        lds     r18, T_Y                /* y */
+        lds     r19, T_Y+1
+        call    afirst_d
         or      r24, r25
         brne    .Lemret
 .Lemgen:
-        ldd     r24, Y+18               /* r8_scan_attr_edge(s, side, y) */
-        ldd     r25, Y+19
-        mov     r22, r19
+        lds     r24, T_S                /* r8_scan_attr_edge(s, side, y) */
+        lds     r25, T_S+1
+        mov     r22, r5
         ldi     r23, 0
-        ldd     r20, Y+24
-        ldd     r21, Y+25
+        lds     r20, T_Y
+        lds     r21, T_Y+1
         call    r8_scan_attr_edge
 .Lemret:
+        mov     M_, r13
+        lds     r30, T_LX
+        lds     r31, T_LX+1
+        lds     r24, T_Y
+        lds     r25, T_Y+1
         ret
         .size   r8k_zrows, .-r8k_zrows
 
@@ -983,14 +1117,110 @@ r8_attr_first:
         rjmp    isub
         .size   r8_attr_first, .-r8_attr_first
 
+/* afirst_d: r8_attr_first(it, a, b, y, 2) for this file's callers
+ * (depth alone: k fixed, not in r16), the same registers otherwise */
+afirst_d:
+        cpi     r19, 8                  /* y < 2048 (unsigned) */
+        brsh    .Ldfail
+        movw    r30, r22                /* X = ay */
+        ldd     r26, Z+2
+        ldd     r27, Z+3
+        ldd     r22, Z+4                /* r23:r22 = a[2] */
+        ldd     r23, Z+5
+        lsl     r18                     /* s0 = 16 y + 8 - ay */
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        lsl     r18
+        rol     r19
+        subi    r18, 0xF8
+        sbci    r19, 0xFF
+        sub     r18, r26
+        sbc     r19, r27
+        tst     r19                     /* s0 < 16 */
+        brne    .Ldfail
+        cpi     r18, 16
+        brsh    .Ldfail
+        movw    r30, r20                /* n = by - ay, or 1 */
+        ldd     r20, Z+2
+        ldd     r21, Z+3
+        cp      r26, r20
+        cpc     r27, r21
+        brlt    1f
+        ldi     r20, 1
+        ldi     r21, 0
+        rjmp    2f
+.Ldfail:                                /* (here: in reach of every branch) */
+        ldi     r24, 0
+        ldi     r25, 0
+        ret
+1:      sub     r20, r26
+        sbc     r21, r27
+2:      cpi     r21, 1                  /* n <= 256 */
+        brlo    3f
+        brne    .Ldfail
+        cpi     r20, 0
+        brne    .Ldfail
+3:      ldd     r26, Z+4                /* dv = b[2] - a[2] */
+        ldd     r27, Z+5
+        sub     r26, r22
+        sbc     r27, r23
+        brvs    .Ldfail                 /* |dv| >= 32768 */
+        cpi     r26, 0x00               /* dv < 4096 */
+        ldi     r30, 0x10
+        cpc     r27, r30
+        brge    .Ldfail
+        cpi     r26, 0x01               /* dv >= -4095 */
+        ldi     r30, 0xF0
+        cpc     r27, r30
+        brlt    .Ldfail
+        movw    r30, r26                /* on to isub: X = it, r25:24 = dv, */
+        movw    r26, r24                /* r18 = s0 (r19 = 0), r21:20 = n, */
+        movw    r24, r30                /* r23:22 = a[2] */
+        rjmp    isub
+        .size   afirst_d, .-afirst_d
+
 /* void r8_scan_attrs(r8_scan *s)                       (include/r8raster.h)
  * The C reference is src/zrows.c's: nothing without attributes; depth
  * alone: each edge's from r8_attr_first(&s->ld (rd), vp[from], vp[vi],
  * c.y, 2), from = the left edge's vi + 1 (0 past n - 1), the right's
  * vi - 1 (n - 1 before 0); else, or on its 0, r8_scan_attr_edge(s, side,
  * c.y).  Offsets (asserted in src/zrows.c): r8_scan {vp 0, n 18, y 21,
- * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  r17 = the side, Y = s
- * (r8_attr_first, r8_scan_attr_edge keep both). */
+ * l.vi 37, r.vi 50, attrs 51, ld 52, rd 72}.  The two sides written
+ * out; Y = s (afirst_d, r8_scan_attr_edge keep it). */
+/* a = vp[r18], b = vp[r20], y = c.y (Y = s), then afirst_d (it in
+ * r25:r24); Z flag set when it returned 0 */
+.macro SAAB
+        movw    r30, r28
+        add     r30, r18
+        adc     r31, r1
+        add     r30, r18
+        adc     r31, r1
+        ld      r22, Z
+        ldd     r23, Z+1
+        movw    r30, r28
+        add     r30, r20
+        adc     r31, r1
+        add     r30, r20
+        adc     r31, r1
+        ld      r20, Z
+        ldd     r21, Z+1
+        ldd     r18, Y+21
+        ldd     r19, Y+22
+        call    afirst_d
+        or      r24, r25
+.endm
+/* r8_scan_attr_edge(s, side, c.y) (Y = s) */
+.macro SAGEN side
+        movw    r24, r28
+        ldi     r22, \side
+        ldi     r23, 0
+        ldd     r20, Y+21
+        ldd     r21, Y+22
+        call    r8_scan_attr_edge
+.endm
         .section .text.r8_scan_attrs,"ax",@progbits
         .global r8_scan_attrs
         .type   r8_scan_attrs, @function
@@ -1000,16 +1230,11 @@ r8_scan_attrs:
         tst     r0
         brne    1f
         ret
-1:      push    r16
-        push    r17
-        push    r28
+1:      push    r28
         push    r29
         movw    r28, r24
-        ldi     r17, 0
-.Lsaside:
-        ldd     r0, Y+51                /* depth alone? */
-        dec     r0
-        brne    .Lsagen
+        dec     r0                      /* depth alone? */
+        brne    5f
         ldd     r21, Y+18               /* n */
         ldd     r20, Y+37               /* the left: vi, from = vi + 1 */
         mov     r18, r20
@@ -1017,53 +1242,28 @@ r8_scan_attrs:
         cp      r18, r21
         brne    2f
         clr     r18
-2:      ldi     r24, 52                 /* it = s + 52 */
-        sbrs    r17, 0
-        rjmp    3f
+2:      movw    r24, r28                /* it = s + 52 */
+        adiw    r24, 52
+        SAAB
+        brne    6f
+5:      SAGEN   0
+6:      ldd     r0, Y+51
+        dec     r0
+        brne    8f
+        ldd     r21, Y+18
         ldd     r20, Y+50               /* the right: from = vi - 1 */
         mov     r18, r20
         tst     r18
-        brne    4f
+        brne    7f
         mov     r18, r21
-4:      dec     r18
-        ldi     r24, 72                 /* it = s + 72 */
-3:      movw    r30, r28                /* a = vp[from] */
-        add     r30, r18
-        adc     r31, r1
-        add     r30, r18
-        adc     r31, r1
-        ld      r22, Z
-        ldd     r23, Z+1
-        movw    r30, r28                /* b = vp[vi] */
-        add     r30, r20
-        adc     r31, r1
-        add     r30, r20
-        adc     r31, r1
-        ld      r20, Z
-        ldd     r21, Z+1
-        ldi     r25, 0
-        add     r24, r28
-        adc     r25, r29
-        ldd     r18, Y+21               /* y */
-        ldd     r19, Y+22
-        ldi     r16, 2
-        call    r8_attr_first
-        or      r24, r25
-        brne    .Lsanext
-.Lsagen:
-        movw    r24, r28                /* r8_scan_attr_edge(s, side, y) */
-        mov     r22, r17
-        ldi     r23, 0
-        ldd     r20, Y+21
-        ldd     r21, Y+22
-        call    r8_scan_attr_edge
-.Lsanext:
-        inc     r17
-        cpi     r17, 2
-        brne    .Lsaside
-        pop     r29
+7:      dec     r18
+        movw    r24, r28                /* it = s + 72 */
+        subi    r24, lo8(-72)
+        sbci    r25, hi8(-72)
+        SAAB
+        brne    9f
+8:      SAGEN   1
+9:      pop     r29
         pop     r28
-        pop     r17
-        pop     r16
         ret
         .size   r8_scan_attrs, .-r8_scan_attrs

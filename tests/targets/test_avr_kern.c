@@ -1179,6 +1179,86 @@ static void test_zrows_random(void)
         unity_fail_int(__LINE__, "r8k_zrows: too few stops, moves or drawn bands", (long)stops, (long)drawn);
 }
 
+/* ---- r8k_zrows over tall bands: triangles over 260..300 rows of 1..4
+ * columns, so that a run of rows without an edge move passes 255 (the
+ * kernel's 8-bit row count: 255 rows, then on) and the edges' dens pass
+ * 255 (the 16-bit steps); the same checks as test_zrows_random; its
+ * summary line: calls, then the runs past 255 rows ---- */
+static void test_zrows_tall(void)
+{
+    unsigned long i, calls = 0, tall = 0;
+    for (i = 0; i < 40; i++) {
+        r8_zrows ta, tr;
+        r8_u16 w = (r8_u16)(1u + rndn(4)), rows = (r8_u16)(260u + rndn(41));
+        r8_s16 y0 = (r8_s16)rndn(8), lim, y;
+        unsigned j, zoff = (2u * GUARD + ((rows + 7u) >> 3) * w + 1u) & ~1u;
+        unsigned len = zoff + 2u * rows * w + GUARD;
+        int rr, ra;
+        for (j = 0; j < len; j++)
+            band_ref[j] = (r8_u8)rnd();
+        memcpy(band_asm, band_ref, len);
+        zverts[0].x = rnds(0, (r8_s16)(w * 16));
+        zverts[0].y = rnds((r8_s16)(y0 * 16 - 20), (r8_s16)(y0 * 16 + 8));
+        zverts[1].x = rnds(0, (r8_s16)(w * 8));
+        zverts[1].y = rnds((r8_s16)((y0 + rows) * 16 - 8), (r8_s16)((y0 + rows) * 16 + 20));
+        zverts[2].x = rnds((r8_s16)(w * 8), (r8_s16)(w * 16));
+        zverts[2].y = rnds((r8_s16)((y0 + rows) * 16 - 8), (r8_s16)((y0 + rows) * 16 + 20));
+        for (j = 0; j < 3; j++) {
+            zverts[j].d = rnds(16000, 16900);
+            zverts[j].s = 0;
+        }
+        memset(&zscan_ref, 0, sizeof zscan_ref);
+        if (!r8_scan_begin(&zscan_ref, zverts, zidx, 3, R8_ATTR_D, y0))
+            continue;
+        lim = zscan_ref.c.ybot < (r8_s16)(y0 + rows) ? zscan_ref.c.ybot : (r8_s16)(y0 + rows);
+        y = zscan_ref.c.y;
+        if (y < y0 || y >= lim)
+            continue;
+        memcpy(&zscan_asm, &zscan_ref, sizeof zscan_ref);
+        zrows_bind(&tr, &zscan_ref);
+        zrows_bind(&ta, &zscan_asm);
+        tr.w = ta.w = w;
+        tr.lim = ta.lim = lim;
+        tr.pat = ta.pat = &r8_fb_dither_tab[4u * rndn(17)];
+        r8_zcols_ref[0] = r8_zcols[0] = 255;
+        r8_zcols_ref[1] = r8_zcols[1] = 0;
+        tall += zscan_ref.c.l.yend - y > 255 && zscan_ref.c.r.yend - y > 255 && lim - y > 255;
+        for (;;) {
+            zrows_at(&tr, band_ref, zoff, w, y0, y);
+            zrows_at(&ta, band_asm, zoff, w, y0, y);
+            rr = r8k_zrows_ref(&tr);
+            ra = r8k_zrows(&ta);
+            calls++;
+            if (ra != rr || ta.y != tr.y || memcmp(band_ref, band_asm, len) != 0 ||
+                memcmp(&zscan_ref, &zscan_asm, sizeof zscan_ref) != 0 ||
+                (r8_u8 *)ta.z - band_asm != (r8_u8 *)tr.z - band_ref ||
+                ta.page - band_asm != tr.page - band_ref || ta.m != tr.m || ta.k != tr.k ||
+                r8_zcols[0] != r8_zcols_ref[0] || r8_zcols[1] != r8_zcols_ref[1]) {
+                print_case("r8k_zrows", i);
+                unity_fail_int(__LINE__, "r8k_zrows differs from the reference", (long)ra, (long)rr);
+                return;
+            }
+            if (rr != 2)
+                break;
+            R8_INTERP_STEP(&zscan_ref.c.l.x);
+            R8_INTERP_STEP(&zscan_ref.c.r.x);
+            R8_INTERP_STEP(&zscan_ref.ld);
+            R8_INTERP_STEP(&zscan_ref.rd);
+            memcpy(&zscan_asm, &zscan_ref, sizeof zscan_ref);
+            y = (r8_s16)(tr.y + 1);
+            if (y >= lim)
+                break;
+        }
+    }
+    unity_print("r8k_zrows: ");        /* (the strings of the test above: */
+    unity_print_long((long)calls);      /* RAM is short) */
+    unity_print(", edges moved on in ");
+    unity_print_long((long)tall);
+    unity_print("\n");
+    if (tall < 20)
+        unity_fail_int(__LINE__, "r8k_zrows: too few stops, moves or drawn bands", 20, (long)tall);
+}
+
 /* ---- r8k_zband (zfill.S) against its reference (src/zrows.c, renamed
  * r8k_zband_ref, which calls r8k_zrows_ref): the scans of
  * test_zrows_random's kind in an r8_act of random level (0..20: past 16
@@ -1449,6 +1529,7 @@ int main(void)
     RUN_TEST(test_estart_random);
     RUN_TEST(test_scanband_random);
     RUN_TEST(test_zrows_random);
+    RUN_TEST(test_zrows_tall);
     RUN_TEST(test_zband_random);
     RUN_TEST(test_scan_attrs_random);
     RUN_TEST(test_init_sub_random);
