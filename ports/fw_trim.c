@@ -176,7 +176,7 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
-#if (defined(__AVR__) || defined(__CC65__)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+#if (defined(__AVR__) || defined(__CC65__) || defined(__SDCC)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
 /* the wire encoder with this firmware's codec switches (fwdefs.sh: it
  * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
  * compile time, and its stream fixed: R8_TXCFG_* in fw_app.c): the
