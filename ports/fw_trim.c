@@ -180,10 +180,10 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 /* the wire encoder with this firmware's codec switches (fwdefs.sh: it
  * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
  * compile time, and its stream fixed: R8_TXCFG_* in fw_app.c): the
- * archive's wire.o, built with LZ77, is not linked.  On the 6502 too
- * (txband_6502.s then hands its other bands to this unit's
- * r8_tx_band_c).  (The Z80 keeps the archive's; the maze's firmware
- * too: raycast.c has a cfg_ok of its own.) */
+ * archive's wire.o, built with LZ77, is not linked.  On the 6502 and
+ * the Z80 too (txband_6502.s / txband_z80.s then hand their other bands
+ * to this unit's r8_tx_band_c; Z80 cube image -961 B).  (The maze's
+ * firmware keeps the archive's: raycast.c has a cfg_ok of its own.) */
 #include "wire.c"
 #endif
 #ifndef R8_NO_RAY
