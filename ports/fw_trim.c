@@ -52,15 +52,17 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
                        * flash normals): no r8_cull_front (6502: 795 B) */
 #endif
-/* 6502 (R8_ASM_PROJECT): ports/6502/proj_6502.s hands r8_project_recip
- * a point only when its shift sh <= 0, its guard band is 1024 px or
- * more, or x or y is outside +-32767.  Here r8_proj_init sets the guard
+/* 6502 and Z80 (R8_ASM_PROJECT): ports/6502/proj_6502.s and
+ * ports/z80/project_z80.s hand r8_project_recip a point only when its
+ * shift sh <= 0, its guard band is 1024 px or more, or x or y is
+ * outside +-32767 (the Z80 firmware unit learns of its kernel from
+ * mk/targets.mk's FWK_z80).  Here r8_proj_init sets the guard
  * (900 px) and fw_spin_bad proves x and y within 16 (|d| + radius) + 4
  * <= 32644: only sh <= 0 is left, where the C version projects the axis
  * alone (to cx, cy) and refuses any other point.  So that is all the
  * r8_project_recip below does; proj.c's, under another name, is
  * linked only if something else calls it (r8_project). */
-#if defined(__CC65__) && defined(R8_ASM_PROJECT)
+#if (defined(__CC65__) || defined(__SDCC)) && defined(R8_ASM_PROJECT)
 #define FW_PROJ_AXIS 1
 #include "r8fixed.h"
 #define r8_project_recip fw_project_recip_full
@@ -135,17 +137,18 @@ static int fw_spin_bad(const app_cfg *c)
  * normals, the reads of normals from RAM. */
 #include "render.c"
 #define R8_SCAN_GUARDED  /* only the renderer scans: inside its guard band */
-/* 6502 (R8_ASM_SCANX): ports/6502/scanx_6502.s hands r8_scanx_fill_c,
+/* 6502 and Z80 (R8_ASM_SCANX): ports/6502/scanx_6502.s (and
+ * ports/z80/scanx_z80.s, the same test) hands r8_scanx_fill_c,
  * scan.c's C version, only a call with a Judd test pending, a band not
  * PAGE1, or a polygon whose next row lies above the band.  This
  * firmware's configuration has none of them: the normal cull (judd 0),
  * PAGE1 bands, and with no clipper and the fused fill alone every face
  * draw_face meets is a mesh face started at the band's first row
  * (r8_scanx_begin) or going on where the band above stopped (as the
- * AVR's R8_BANDK_ONLY).  So the C version is left out (1,328 B): it is
+ * AVR's R8_BANDK_ONLY).  So the C version is left out (6502 1,328 B, Z80 1,312 B): it is
  * compiled under another name nothing calls, and r8_scanx_fill_c below
  * stops the firmware if it were ever reached. */
-#if defined(__CC65__) && defined(R8_ASM_SCANX) && defined(R8_CFG_CULL) && defined(R8_NO_CLIP) && \
+#if (defined(__CC65__) || defined(__SDCC)) && defined(R8_ASM_SCANX) && defined(R8_CFG_CULL) && defined(R8_NO_CLIP) && \
     defined(R8_FAST_ONLY)
 #if R8_CFG_CULL == R8_CULL_NORMAL && R8_CFG_FORMAT == R8_FMT_PAGE1
 #define FW_NO_SCANX_C 1
@@ -173,14 +176,14 @@ void r8_scanx_fill_c(r8_scanx *s, r8_s16 ylimit, int judd, r8_fb *fb, r8_u8 leve
 #include "vis_bsp.c"  /* BSP firmware: its walk with this firmware's switches */
 #endif
 #include "app.c"     /* its demo run sized for this scene (R8_DEMO_MAXOBJ) */
-#if (defined(__AVR__) || defined(__CC65__)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
+#if (defined(__AVR__) || defined(__CC65__) || defined(__SDCC)) && !defined(R8_PLAN_ONLY) && defined(R8_NO_RAY)
 /* the wire encoder with this firmware's codec switches (fwdefs.sh: it
  * streams RLE; R8_NO_LZ77, R8_NO_HUFF, R8_NO_LZW leave the others out at
  * compile time, and its stream fixed: R8_TXCFG_* in fw_app.c): the
- * archive's wire.o, built with LZ77, is not linked.  On the 6502 too
- * (txband_6502.s then hands its other bands to this unit's
- * r8_tx_band_c).  (The Z80 keeps the archive's; the maze's firmware
- * too: raycast.c has a cfg_ok of its own.) */
+ * archive's wire.o, built with LZ77, is not linked.  On the 6502 and
+ * the Z80 too (txband_6502.s / txband_z80.s then hand their other bands
+ * to this unit's r8_tx_band_c; Z80 cube image -961 B).  (The maze's
+ * firmware keeps the archive's: raycast.c has a cfg_ok of its own.) */
 #include "wire.c"
 #endif
 #ifndef R8_NO_RAY

@@ -218,10 +218,107 @@ static int method_built(r8_u8 m)
 
 #define ALIGN_TO (sizeof(r8_s32) > sizeof(void *) ? sizeof(r8_s32) : sizeof(void *))
 
+/* R8_FIXED_PLAN: the demo firmware's plan on cc65 and sdcc, which fold a
+ * constant expression but not a value that passes through the plan
+ * struct.  With the scene's sizes (R8_CFG_NVERTS, _NFACES, _NOBJ) and
+ * the whole configuration fixed, the fused fill alone (cull or painter's,
+ * flat or Lambert), no texture and no clipper, every field make_plan
+ * computes is a constant: FP_<field> below is make_plan's arithmetic for
+ * that case step by step (vsh 1, no run-time normals, no depth memory,
+ * no S-buffer), and r8_render_init and r8_render_ram read those instead
+ * of calling make_plan (6502 ~1 KB, Z80 ~0.6 KB).  The firmware's arena
+ * (FW_RAM) is measured by the sizer (tests/targets/fw_sizes.c), which
+ * runs make_plan itself: a constant plan that differed would stop the
+ * firmware with APP_E_RAM (identity tests). */
+#if defined(R8_CFG_NVERTS) && defined(R8_FAST_ONLY) && !R8_W_TEXTURE && !defined(R8_PLAN_ONLY) && \
+    (defined(__CC65__) || defined(__SDCC))
+#if R8_CFG_CLIP == 0
+#define R8_FIXED_PLAN 1
+#endif
+#endif
+
+#ifdef R8_FIXED_PLAN
+/* 16-bit pointers: ALIGN_TO is sizeof(r8_s32) */
+R8_CASSERT(fixed_plan_align, sizeof(void *) <= sizeof(r8_s32));
+#define FP_AL ((unsigned)sizeof(r8_s32))
+#define FP_A(n) ((unsigned)(((unsigned)(n) + (FP_AL - 1u)) & ~(FP_AL - 1u)))
+#define FP_nverts ((r8_u16)R8_CFG_NVERTS)
+#define FP_nfaces ((r8_u16)R8_CFG_NFACES)
+#define FP_vsh 1                      /* no depth, Gouraud or texture */
+#define FP_fast 1
+#define FP_nbands ((r8_u16)((R8_CFG_HEIGHT + R8_CFG_BAND - 1u) / R8_CFG_BAND))
+#if R8_W_PAINTER && R8_CFG_METHOD == R8_VIS_PAINTER
+#define FP_PAINTER 1
+#define FP_nheads R8_JEFF_BUCKETS
+#else
+#define FP_PAINTER 0
+#define FP_nheads FP_nbands
+#endif
+#define FP_sv_cap FP_nverts           /* (no clipper: + 5 * 0) */
+#define FP_NID ((unsigned)R8_CFG_NFACES)
+#ifdef R8_NO_POOL
+#define FP_NP0 0
+#else
+#define FP_NP0 R8_CFG_POOL
+#endif
+#if FP_NP0 > (R8_CFG_NFACES + 1) / 2
+#define FP_NP1 ((R8_CFG_NFACES + 1) / 2)
+#else
+#define FP_NP1 FP_NP0
+#endif
+#if FP_NP1 > R8_POOL_MAX
+#define FP_npool ((r8_u8)R8_POOL_MAX)
+#else
+#define FP_npool ((r8_u8)FP_NP1)
+#endif
+#define FP_esize FP_A(sizeof(r8_actx))
+#define FP_obj 0u
+#define FP_sv FP_A(sizeof(r8_objx) * R8_CFG_NOBJ)
+#define FP_vnorm (FP_sv + FP_A(((unsigned)FP_sv_cap << FP_vsh) * 2u))
+#define FP_norms FP_vnorm            /* (no run-time normals: 6 * 0) */
+#define FP_next FP_norms
+#define FP_HEADS0 (FP_next + FP_A(sizeof(r8_fid) * FP_NID))
+#if R8_CFG_METHOD != R8_VIS_PAINTER
+#define FP_slot (FP_HEADS0 + FP_A(sizeof(r8_fid) * FP_nbands))
+#else
+#define FP_slot FP_HEADS0
+#endif
+#if FP_NP1 > 0
+#define FP_ftop (FP_slot + FP_A(FP_NID))
+#else
+#define FP_ftop FP_slot
+#endif
+#if FP_NP1 > 0 && FP_PAINTER
+#define FP_cpoly (FP_ftop + FP_A(FP_NID))
+#else
+#define FP_cpoly FP_ftop
+#endif
+#define FP_REGION FP_cpoly           /* (no clipper: the clip polygons 0) */
+#if FP_PAINTER                       /* the depth buckets, set-up only */
+#define FP_heads FP_REGION
+#define FP_clipbuf (FP_REGION + FP_A(sizeof(r8_fid) * FP_nheads))
+#define FP_FRAMET FP_A(sizeof(r8_fid) * FP_nheads)
+#else
+#define FP_heads FP_HEADS0
+#define FP_clipbuf FP_REGION
+#define FP_FRAMET 0u
+#endif
+#define FP_tmp FP_REGION
+#define FP_pool (FP_REGION + FP_esize)
+#define FP_depth (FP_pool + FP_esize * FP_npool)
+#define FP_snode FP_depth
+#define FP_shead FP_snode
+#define FP_BANDT (FP_shead - FP_REGION)
+#define FP_total (FP_REGION + (FP_FRAMET > FP_BANDT ? FP_FRAMET : FP_BANDT) + \
+                  FP_A(sizeof(r8_state)) + FP_AL)
+#define PLV(f) FP_##f
+#else
+#define PLV(f) (pl.f)
 static unsigned align_up(unsigned n)
 {
     return (unsigned)((n + (ALIGN_TO - 1)) & ~(unsigned)(ALIGN_TO - 1));
 }
+#endif
 
 typedef struct plan {
     unsigned obj, sv, ftop, cuv, vnorm, norms, next, slot, cpoly, region, heads, clipbuf,
@@ -354,6 +451,7 @@ static int mesh_seen(const r8_scene *sc, r8_u8 i)
 }
 #endif
 
+#ifndef R8_FIXED_PLAN
 static void make_plan(const r8_render_cfg *cfg, plan *pl)
 {
     const r8_scene *sc = cfg->scene;
@@ -466,10 +564,13 @@ static void make_plan(const r8_render_cfg *cfg, plan *pl)
     o += frame_t > band_t ? frame_t : band_t;
     pl->total = o + align_up(sizeof(r8_state)) + ALIGN_TO; /* + alignment slack */
 }
+#endif
 
 unsigned r8_render_ram(const r8_render_cfg *cfg)
 {
+#ifndef R8_FIXED_PLAN
     plan pl;
+#endif
 #ifndef R8_NO_BSP
     if (cfg->method == R8_VIS_BSP)
         return r8_bsp_ram(cfg);
@@ -482,8 +583,12 @@ unsigned r8_render_ram(const r8_render_cfg *cfg)
 #endif
     if (!cfg_valid(cfg))
         return 0;
+#ifdef R8_FIXED_PLAN
+    return FP_total;
+#else
     make_plan(cfg, &pl);
     return pl.total;
+#endif
 }
 
 #ifndef R8_PLAN_ONLY   /* a sizing build (R8_PLAN_ONLY) stops here */
@@ -544,7 +649,9 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
                    unsigned work_size)
 {
+#ifndef R8_FIXED_PLAN
     plan pl;
+#endif
     r8_state *st;
     r8_u8 *base;
     const r8_scene *sc;
@@ -565,13 +672,19 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
     if (!cfg_valid(cfg))
         return -1;
+#ifndef R8_FIXED_PLAN
     make_plan(cfg, &pl);
-    if (work_size < pl.total)
+#endif
+    if (work_size < PLV(total))
         return -2;
     /* state first, aligned; the rest follows */
     base = work + ((ALIGN_TO - ((unsigned)((size_t)(void *)work & (ALIGN_TO - 1)))) & (ALIGN_TO - 1));
     st = (r8_state *)(void *)base;
+#ifdef R8_FIXED_PLAN
+    base += FP_A(sizeof(r8_state));
+#else
     base += align_up(sizeof(r8_state));
+#endif
     r->cfg = *cfg;
     r->work = work;
     r->work_size = work_size;
@@ -580,15 +693,15 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->scene = sc;
     st->width = CFG_WIDTH(cfg);
     st->height = CFG_HEIGHT(cfg);
-    st->nverts = pl.nverts;
-    st->nfaces = pl.nfaces;
-    st->vsh = pl.vsh;
-    st->fast = pl.fast;
+    st->nverts = PLV(nverts);
+    st->nfaces = PLV(nfaces);
+    st->vsh = PLV(vsh);
+    st->fast = PLV(fast);
     st->judd = (r8_u8)(CFG_CULL(cfg) == R8_CULL_JUDD);
     st->method = CFG_METHOD(cfg);
     st->shading = CFG_SHADING(cfg);
-    st->nbands = pl.nbands;
-    st->nheads = pl.nheads;
+    st->nbands = PLV(nbands);
+    st->nheads = PLV(nheads);
     st->bsh = -1;
 #if defined(R8_CFG_BAND) && R8_CFG_BAND == 8
     st->bsh = 3;                /* (the demo's band) */
@@ -597,26 +710,26 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
         if (CFG_BAND(cfg) == (1 << k))
             st->bsh = (r8_s16)k;
 #endif
-    st->obj = (r8_objx *)(void *)(base + pl.obj);
-    st->sv = (r8_s16 *)(void *)(base + pl.sv);
-    st->sv_cap = pl.sv_cap;
-    st->vnorm = (r8_s16 *)(void *)(base + pl.vnorm);
-    st->next = (r8_fid *)(void *)(base + pl.next);
-    st->slot = pl.npool ? base + pl.slot : 0;
-    st->ftop = pl.npool && R8_PAINTER(CFG_METHOD(cfg)) ? base + pl.ftop : 0;
-    st->cpoly = (r8_cpoly *)(void *)(base + pl.cpoly);
+    st->obj = (r8_objx *)(void *)(base + PLV(obj));
+    st->sv = (r8_s16 *)(void *)(base + PLV(sv));
+    st->sv_cap = PLV(sv_cap);
+    st->vnorm = (r8_s16 *)(void *)(base + PLV(vnorm));
+    st->next = (r8_fid *)(void *)(base + PLV(next));
+    st->slot = PLV(npool) ? base + PLV(slot) : 0;
+    st->ftop = PLV(npool) && R8_PAINTER(CFG_METHOD(cfg)) ? base + PLV(ftop) : 0;
+    st->cpoly = (r8_cpoly *)(void *)(base + PLV(cpoly));
     st->nclip = CFG_CLIP(cfg);
-    st->heads = (r8_fid *)(void *)(base + pl.heads);
-    st->clipbuf = base + pl.clipbuf;
-    st->tmp = base + pl.tmp;
-    st->pool = base + pl.pool;
-    st->esize = pl.esize;
-    st->npool = pl.npool;
-    st->depth = base + pl.depth;
+    st->heads = (r8_fid *)(void *)(base + PLV(heads));
+    st->clipbuf = base + PLV(clipbuf);
+    st->tmp = base + PLV(tmp);
+    st->pool = base + PLV(pool);
+    st->esize = PLV(esize);
+    st->npool = PLV(npool);
+    st->depth = base + PLV(depth);
     st->depth_bytes = R8_DEPTH(CFG_METHOD(cfg)) ? r8_vis_depth_bytes(cfg) : 0;
-    st->snode = (r8_snode *)(void *)(base + pl.snode);
+    st->snode = (r8_snode *)(void *)(base + PLV(snode));
     st->nsnode = R8_SBUF(CFG_METHOD(cfg)) ? r8_vis_sbuf_nodes(cfg) : 0;
-    st->shead = (r8_u16 *)(void *)(base + pl.shead);
+    st->shead = (r8_u16 *)(void *)(base + PLV(shead));
     st->attrs = 0;
 #if R8_W_DEPTH
     if (CFG_METHOD(cfg) >= R8_VIS_Z8)
@@ -629,7 +742,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #if R8_W_TEXTURE
     if (R8_TEXTURED(CFG_SHADING(cfg)))
         st->attrs |= R8_ATTR_D;      /* vertex 1/z for perspective */
-    st->cuv = (r8_s16 *)(void *)(base + pl.cuv);
+    st->cuv = (r8_s16 *)(void *)(base + PLV(cuv));
     st->texfilter = cfg->texfilter;
     st->persp = cfg->persp;
 #endif
@@ -644,7 +757,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->cam.cx = (r8_s16)(CFG_WIDTH(cfg) * 8);
     st->cam.cy = (r8_s16)(CFG_HEIGHT(cfg) * 8);
 #ifndef R8_NO_RT_NORMALS
-    norms = (r8_s16 *)(void *)(base + pl.norms);
+    norms = (r8_s16 *)(void *)(base + PLV(norms));
 #endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
