@@ -41,7 +41,11 @@
  * mesh face starts with its vertex pointers, rows and top vertex found
  * in one pass (face_begin), without r8_scanx_fill and r8_scanx_begin
  * in between (the same rows: scan.c). */
-#if defined(__AVR__) && defined(R8_FAST_ONLY) && defined(R8_PAGE1_ONLY) && !R8_W_TEXTURE
+/* The Z80 too with its r8k_scanband (R8_ASM_SCANFILL: ports/z80/
+ * scanband_z80.s; the C reference, src/scanband.c, is slower than
+ * r8_scanx_fill there). */
+#if (defined(__AVR__) || (defined(__SDCC) && defined(R8_ASM_SCANFILL))) && defined(R8_FAST_ONLY) && \
+    defined(R8_PAGE1_ONLY) && !R8_W_TEXTURE
 #define R8_BANDK 1
 #include "r8scan.h"
 #endif
