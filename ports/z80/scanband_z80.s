@@ -130,17 +130,27 @@ _r8k_scanband:
         jr      4$
 5$:     ld      (tf+T_PAGE), hl
 
-;; the trapezoids: restart the edges that ended, fill to the first end
+;; the trapezoids: restart the edges that ended, fill to the first end.
+;; Rows are within +-2048 (R8_ROW_OF of a 12.4 coordinate; y >= 0), so a
+;; 16-bit difference never overflows and its sign orders two rows.
 loop:   ld      de, #SX_L       ; y >= l->yend: restart l
         call    edge
         ld      (stp), hl       ; stop = l->yend (for now)
         ld      de, #SX_R       ; y >= r->yend: restart r
         call    edge
         ld      de, (stp)       ; stop = min(l->yend, r->yend, lim)
-        call    smin
-        ld      de, (lim)
-        call    smin
-        ld      (stp), hl
+        or      a, a
+        sbc     hl, de
+        add     hl, de          ; (S kept)
+        jp      m, 1$
+        ex      de, hl
+1$:     ld      de, (lim)
+        or      a, a
+        sbc     hl, de
+        add     hl, de
+        jp      m, 2$
+        ex      de, hl
+2$:     ld      (stp), hl
         ld      de, (yy)        ; r8k_trap(&t, &l->x, &r->x, stop - y)
         or      a, a
         sbc     hl, de
@@ -158,8 +168,9 @@ loop:   ld      de, #SX_L       ; y >= l->yend: restart l
         ld      hl, (stp)       ; y = stop
         ld      (yy), hl
         ld      de, (lim)
-        call    slt
-        jr      c, loop
+        or      a, a
+        sbc     hl, de
+        jp      m, loop         ; y < lim: on
         ld      hl, (sx)        ; s->y = y
         ld      bc, #SX_Y
         add     hl, bc
@@ -182,8 +193,9 @@ edge:   ld      hl, (sx)
         inc     hl
         ld      c, (hl)         ; C = vi
         ld      hl, (yy)
-        call    slt             ; y < yend: C
-        jr      nc, 1$
+        or      a, a
+        sbc     hl, de
+        jp      p, 1$           ; y >= yend: restart
         pop     hl              ; (e)
         ex      de, hl          ; HL = yend
         ret
@@ -192,7 +204,8 @@ edge:   ld      hl, (sx)
         ld      a, c
         push    af              ; from
         inc     sp
-        push    hl              ; y
+        ld      hl, (yy)        ; y
+        push    hl
         ld      hl, (sx)
         call    _r8k_estart     ; (pops y, from)
         pop     hl              ; e
@@ -202,23 +215,4 @@ edge:   ld      hl, (sx)
         inc     hl
         ld      h, (hl)
         ld      l, a
-        ret
-
-;; carry set when HL < DE (signed); HL, DE kept, A changed
-slt:    ld      a, h
-        xor     a, d
-        jp      m, 1$
-        ld      a, l            ; the same signs: unsigned
-        sub     a, e
-        ld      a, h
-        sbc     a, d
-        ret
-1$:     ld      a, h            ; different signs: HL < DE if HL < 0
-        rla
-        ret
-
-;; HL = min(HL, DE) (signed); DE the other
-smin:   call    slt
-        ret     c
-        ex      de, hl
         ret
