@@ -355,9 +355,10 @@ $(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/
 
 # the Z80 kernels against their references (src/kern.c, compiled into the
 # test under other names), whatever Z80_ASM says: every kernel's object
-# is linked in (r8_mul16 is the library's)
+# is linked in (r8_mul16 is the library's; band calls render.c's
+# draw_face: tests/c/test_bandz80.c checks it)
 XKERNZ := $(XB)/z80/tests/z80_kern.ihx
-XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16 txband scanx,$(Z80_KALL))) \
+XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16 txband scanx band,$(Z80_KALL))) \
                $(XB)/z80/obj/unity_target.rel
 $(XKERNZ): tests/targets/test_z80_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)
