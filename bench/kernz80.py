@@ -24,7 +24,7 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 FW = "build/x/z80/fw/fw-0-0-4.ihx"
 SIM = "build/emu/z80sim"
-ALL = "mul16 mullong mulint wire trap fill xform project edge txband scanx tframe"   # Z80_KALL in mk/targets.mk
+ALL = "mul16 mullong mulint wire trap fill xform project edge txband scanx tframe scanband band"   # Z80_KALL in mk/targets.mk
 # the build, each kernel left out in turn, and none
 DEFAULT = [ALL] + [" ".join(k for k in ALL.split() if k != x) for x in ALL.split()] + ["0"]
 

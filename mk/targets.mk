@@ -99,6 +99,12 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #   tframe   r8_tf_frame's arithmetic: r8k_rotoff (its rot_offset) and
 #            r8_mat_apply_t14 (-DR8_ASM_TFRAME, in Z80_CFLAGS: the
 #            firmware compiles transform.c itself; references src/r8tfref.h)
+#   scanband r8k_scanband, a face's page-1 band (-DR8_ASM_SCANFILL, in
+#            Z80_CFLAGS: render.c's draw_face calls it, R8_BANDK;
+#            reference src/scanband.c)
+#   band     r8_render_band in the cull firmware's configuration
+#            (-DR8_ASM_BAND, in Z80_CFLAGS; reference: render.c's
+#            r8_render_band_c)
 # build/x/z80-kernels.txt records the choice (a change rebuilds the Z80
 # library); tests/targets/test_z80_kern.c (step xkern-z80) checks trap,
 # fill, xform, project, edge, tframe and the multiplies against their references
@@ -110,7 +116,7 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 # each object (sdld links whole modules); Z80_GC=0 (environment or make
 # command line) links the objects and rast8.lib whole, as before.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx tframe
+Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx tframe scanband band
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
 # txband (txband_z80.s, R8_ASM_TXBAND: r8_tx_band) calls wire's kernels
 Z80_KERN   := $(if $(filter wire,$(Z80_KERN0)),$(Z80_KERN0),$(filter-out txband,$(Z80_KERN0)))
@@ -121,7 +127,8 @@ Z80_KDEFS  := $(if $(filter mul16,$(Z80_KERN)),-DR8_ASM_MUL16) $(if $(filter tra
 Z80_KSTAMP := $(XB)/z80-kernels.txt
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE) \
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX) \
-              $(if $(filter tframe,$(Z80_KERN)),-DR8_ASM_TFRAME)
+              $(if $(filter tframe,$(Z80_KERN)),-DR8_ASM_TFRAME) $(if $(filter scanband,$(Z80_KERN)),-DR8_ASM_SCANFILL) \
+              $(if $(filter band,$(Z80_KERN)),-DR8_ASM_BAND)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)" $(if $(Z80_GC),Z80_GC="$(Z80_GC)")
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk vertex
@@ -353,9 +360,10 @@ $(XKERN): tests/targets/test_avr_kern.c tests/targets/kern_trap.h tests/targets/
 
 # the Z80 kernels against their references (src/kern.c, compiled into the
 # test under other names), whatever Z80_ASM says: every kernel's object
-# is linked in (r8_mul16 is the library's)
+# is linked in (r8_mul16 is the library's; band calls render.c's
+# draw_face: tests/c/test_bandz80.c checks it)
 XKERNZ := $(XB)/z80/tests/z80_kern.ihx
-XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16 txband scanx,$(Z80_KALL))) \
+XKERNZ_OBJS := $(XB)/z80/obj/mulz_z80.rel $(patsubst %,$(XB)/z80/obj/%_z80.rel,$(filter-out mul16 txband scanx band,$(Z80_KALL))) \
                $(XB)/z80/obj/unity_target.rel
 $(XKERNZ): tests/targets/test_z80_kern.c tests/targets/kern_trap.h tests/targets/kern_cases.h src/kern.c $(XKERNZ_OBJS) $(XDEPS_z80) $(XHDRS) tests/targets/wrap.sh
 	@mkdir -p $(dir $@)

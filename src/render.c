@@ -41,7 +41,11 @@
  * mesh face starts with its vertex pointers, rows and top vertex found
  * in one pass (face_begin), without r8_scanx_fill and r8_scanx_begin
  * in between (the same rows: scan.c). */
-#if defined(__AVR__) && defined(R8_FAST_ONLY) && defined(R8_PAGE1_ONLY) && !R8_W_TEXTURE
+/* The Z80 too with its r8k_scanband (R8_ASM_SCANFILL: ports/z80/
+ * scanband_z80.s; the C reference, src/scanband.c, is slower than
+ * r8_scanx_fill there). */
+#if (defined(__AVR__) || (defined(__SDCC) && defined(R8_ASM_SCANFILL))) && defined(R8_FAST_ONLY) && \
+    defined(R8_PAGE1_ONLY) && !R8_W_TEXTURE
 #define R8_BANDK 1
 #include "r8scan.h"
 #endif
@@ -1596,6 +1600,36 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
     return done;
 }
 
+/* Z80, the cull method's firmware (page-1 bands of 8 rows, the fused
+ * fill alone, no painter's, depth, S-buffer, wireframe, ray or portal):
+ * r8_render_band is r8k_band, ports/z80/band_z80.s (R8_ASM_BAND), which calls
+ * draw_face through r8_band_face; this C89 version stays, the
+ * reference, as r8_render_band_c. */
+#if defined(R8_ASM_BAND) && defined(__SDCC) && defined(R8_BANDK_ONLY) && defined(R8_CFG_BAND) && \
+    defined(R8_NO_WIRE) && defined(R8_NO_RAY) && defined(R8_NO_PORTAL) && !defined(R8_SMALL_SCENE)
+#if R8_CFG_BAND == 8 && !R8_W_PAINTER && !R8_W_DEPTH && !R8_W_SBUF
+#define R8_BAND_Z80 1
+#endif
+#endif
+#ifdef R8_BAND_Z80
+R8_CASSERT(bandz80_r_state_at_21, offsetof(r8_render, state) == 21);
+R8_CASSERT(bandz80_st_nbands_at_33, offsetof(r8_state, nbands) == 33);
+R8_CASSERT(bandz80_st_next_at_41, offsetof(r8_state, next) == 41);
+R8_CASSERT(bandz80_st_heads_at_43, offsetof(r8_state, heads) == 43);
+R8_CASSERT(bandz80_st_first_at_47, offsetof(r8_state, first) == 47);
+int r8_band_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb);
+int r8_band_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
+{
+    return draw_face(st, g, y0, y1, fb);
+}
+void r8k_band(r8_render *r, r8_fb *fb);
+void r8_render_band(r8_render *r, r8_fb *fb)
+{
+    r8k_band(r, fb);
+}
+#define r8_render_band r8_render_band_c
+void r8_render_band_c(r8_render *r, r8_fb *fb);
+#endif
 void r8_render_band(r8_render *r, r8_fb *fb)
 {
     r8_state *st = (r8_state *)r->state;
@@ -1728,5 +1762,9 @@ void r8_render_band(r8_render *r, r8_fb *fb)
 #endif
 #endif
 }
+
+#ifdef R8_BAND_Z80
+#undef r8_render_band   /* (the firmware unit calls it below: app.c) */
+#endif
 
 #endif /* R8_PLAN_ONLY */

@@ -3,11 +3,22 @@
  * r8_scanx_fill calls on AVR.  A port that links its own (assembly)
  * versions defines R8_ASM_SCANFILL, and these are left out (AVR:
  * ports/avr/trap.S, which reads the struct offsets asserted here).
- * Other targets keep the loop in scan.c and never link this file. */
+ * Other targets keep the loop in scan.c and never link this file; the
+ * Z80's firmware calls its kernel (ports/z80/scanband_z80.s) from
+ * render.c's draw_face as the AVR's does (R8_BANDK). */
 #include <stddef.h>
 #include "r8scan.h"
 #include "r8flash.h"
-#ifndef R8_ASM_SCANFILL
+#if defined(R8_ASM_SCANFILL) && defined(__SDCC)
+/* the Z80's kernel (ports/z80/scanband_z80.s): the C89 reference stays,
+ * under other names, for tests/c/test_scanband.c (a firmware drops it) */
+#define r8k_scanfill r8k_scanfill_c
+#define r8k_scanband r8k_scanband_c
+#define R8_SCANBAND_REF 1
+void r8k_scanfill_c(r8_scanx *s, r8_trapfill *t, r8_s16 lim);
+void r8k_scanband_c(r8_scanx *s, const r8_fb *fb, r8_s16 lim, r8_u8 level);
+#endif
+#if !defined(R8_ASM_SCANFILL) || defined(R8_SCANBAND_REF)
 /* scan.c's trapezoid loop (r8_scanx_fill, the edges decided): from row
  * s->y to lim, restart an edge that ended, fill the rows to the first
  * end of either edge (or lim) with r8k_trap, and on; s->y = lim. */
@@ -51,8 +62,10 @@ void r8k_scanband(r8_scanx *s, const r8_fb *fb, r8_s16 lim, r8_u8 level)
     t.pat[3] = R8_RDU8(dp + 3);
     r8k_scanfill(s, &t, lim);
 }
-#else
-/* AVR: ports/avr/trap.S reads these offsets */
+#endif
+#ifdef R8_ASM_SCANFILL
+/* AVR: ports/avr/trap.S reads these offsets (the Z80's
+ * ports/z80/scanband_z80.s too) */
 R8_CASSERT(scanband_fb_width_at_2, offsetof(r8_fb, width) == 2);
 R8_CASSERT(scanband_fb_y0_at_6, offsetof(r8_fb, y0) == 6);
 R8_CASSERT(scanband_t_w_at_8, offsetof(r8_trapfill, w) == 8);
