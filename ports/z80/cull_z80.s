@@ -15,6 +15,12 @@
 ;; +-16384) is a single 8 x 16 multiply, its product shifted 8 left.
 ;; The firmware of a spinning mesh with flash normals (ports/fw_trim.c,
 ;; R8_CULL16) calls it from render.c in place of r8_cull_front.
+;; Round 10 (k-z80g): cube / cull frames 2-3 (emu/z80sim -P -F 2, Zilog
+;; T): the back-face tests 26,286 T a frame (r8_cull_front in C, with its
+;; r8_mul16 and normal_of calls) -> 11,702 (r8k_cull with its multiplies);
+;; the frames with trap_z80.s's round-10 changes 584,856 -> 560,101 T
+;; (emu/sz80run.py, the mean of frames 2-3), the image 33,971 -> 33,667 B;
+;; with mulz_z80.s's short r8z_mul8 557,541 T, 33,709 B.
         .module cull_z80
         .area   _CODE
         .globl  _r8k_cull

@@ -24,6 +24,12 @@
 ;; static memory, a dither span (0xFF and 0x00 are the nibbles 1111 and
 ;; 0000) in the same dspan loop, the DDAs stepped with the carry of the
 ;; err compare (ccf; adc), and copied back.
+;; Round 10 (k-z80g): the pattern cache has 4 slots (the cube's faces
+;; each keep theirs: newpat 9,738 -> 1,082 T a frame) and the group rows'
+;; left and right parts skip the per-row min/max when the rows share
+;; columns (gfast): r8k_trap 96,203 -> 84,186 T a frame (cube / cull
+;; frames 2-3, emu/z80sim -P -F 2, Zilog T); +133 B code, +96 B in the
+;; image (the slots' zero initialiser), +97 B RAM.
 ;; Round 7 (k-z80c): cube / cull frames 2-3 (emu/z80sim -P -F 2, Zilog
 ;; T) r8k_trap 266,571 -> ~196,000 T; the frames 591,075 + 741,200 ->
 ;; 546,273 + 714,315 (ucsim: see docs/benchmarks.md); the image +566 B.
