@@ -96,6 +96,9 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 #            with wire; tests/c/test_txband.c in step xunit-z80)
 #   scanx    r8_scanx_fill, a polygon's trapezoids in a band
 #            (-DR8_ASM_SCANX; tests/c/test_scanx.c in step xunit-z80)
+#   cull     r8k_cull, a face's 16-bit back-face test (-DR8_ASM_CULL, in
+#            Z80_CFLAGS: the spin firmware's render.c calls it in place of
+#            r8_cull_front, ports/fw_trim.c R8_CULL16; reference src/kern.c)
 #   tframe   r8_tf_frame's arithmetic: r8k_rotoff (its rot_offset) and
 #            r8_mat_apply_t14 (-DR8_ASM_TFRAME, in Z80_CFLAGS: the
 #            firmware compiles transform.c itself; references src/r8tfref.h)
@@ -116,7 +119,7 @@ C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $
 # each object (sdld links whole modules); Z80_GC=0 (environment or make
 # command line) links the objects and rast8.lib whole, as before.
 Z80_ASM    ?= 1
-Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx tframe scanband band
+Z80_KALL   := mul16 mullong mulint wire trap fill xform project edge txband scanx tframe scanband band cull
 Z80_KERN0  := $(if $(filter 1,$(Z80_ASM)),$(Z80_KALL),$(filter $(Z80_KALL),$(Z80_ASM)))
 # txband (txband_z80.s, R8_ASM_TXBAND: r8_tx_band) calls wire's kernels
 Z80_KERN   := $(if $(filter wire,$(Z80_KERN0)),$(Z80_KERN0),$(filter-out txband,$(Z80_KERN0)))
@@ -128,7 +131,7 @@ Z80_KSTAMP := $(XB)/z80-kernels.txt
 Z80_CFLAGS := -mz80 --std-c89 --opt-code-speed $(INC) $(XINC) $(if $(filter wire,$(Z80_KERN)),-DR8_ASM_WIRE) \
               $(if $(filter txband,$(Z80_KERN)),-DR8_ASM_TXBAND) $(if $(filter scanx,$(Z80_KERN)),-DR8_ASM_SCANX) \
               $(if $(filter tframe,$(Z80_KERN)),-DR8_ASM_TFRAME) $(if $(filter scanband,$(Z80_KERN)),-DR8_ASM_SCANFILL) \
-              $(if $(filter band,$(Z80_KERN)),-DR8_ASM_BAND)
+              $(if $(filter band,$(Z80_KERN)),-DR8_ASM_BAND) $(if $(filter cull,$(Z80_KERN)),-DR8_ASM_CULL)
 XENV := AVR_CFLAGS="$(AVR_CFLAGS)" C65_CFLAGS="$(C65_CFLAGS)" Z80_CFLAGS="$(Z80_CFLAGS)" $(if $(Z80_GC),Z80_GC="$(Z80_GC)")
 AVR_ASM    ?= 1
 AVR_KALL   := trap xform edge project fill facecull facelevel facez zfill fwalk vertex

@@ -18,7 +18,8 @@
  *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
- *                 On AVR and the 6502 also R8_CULL16: render.c's back-face test is
+ *                 On AVR, the 6502 and the Z80 (with cull_z80.s, R8_ASM_CULL) also
+ *                 R8_CULL16: render.c's back-face test is
  *                 r8k_cull alone (16 bits, flash normals), without the
  *                 32-bit r8_cull_front (564 B); fw_spin_bad proves the
  *                 eye within |d| <= 1000 units of each object and its
@@ -48,7 +49,8 @@ int r8_lz77_decode(const r8_u8 *src, unsigned n, r8_u8 *dst, unsigned cap,
 #endif
 #define R8_PROJ16
 #define R8_CAM_FIXED
-#if (defined(__AVR__) || defined(__CC65__)) && defined(R8_NO_RT_NORMALS)
+#if (defined(__AVR__) || defined(__CC65__) || (defined(__SDCC) && defined(R8_ASM_CULL))) && \
+    defined(R8_NO_RT_NORMALS)
 #define R8_CULL16     /* the back-face test in 16 bits alone (r8k_cull:
                        * flash normals): no r8_cull_front (6502: 795 B) */
 #endif

@@ -1131,7 +1131,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
             int c;
 #ifdef R8_CULL16               /* (ports/fw_trim.c: always in 16 bits) */
             c = r8k_cull(o->normals + 3u * f, v0, &o->eye);
+#ifndef __SDCC                 /* (sdcc's build has no kcull) */
             (void)kcull;
+#endif
 #else
 #ifndef __SDCC                 /* (R8_SDCC_FACE_KERN in r8kern.h) */
             c = -1;

@@ -24,6 +24,12 @@
 ;; static memory, a dither span (0xFF and 0x00 are the nibbles 1111 and
 ;; 0000) in the same dspan loop, the DDAs stepped with the carry of the
 ;; err compare (ccf; adc), and copied back.
+;; Round 10 (k-z80g): the pattern cache has 4 slots (the cube's faces
+;; each keep theirs: newpat 9,738 -> 1,082 T a frame) and the group rows'
+;; left and right parts skip the per-row min/max when the rows share
+;; columns (gfast): r8k_trap 96,203 -> 84,186 T a frame (cube / cull
+;; frames 2-3, emu/z80sim -P -F 2, Zilog T); +133 B code, +96 B in the
+;; image (the slots' zero initialiser), +97 B RAM.
 ;; Round 7 (k-z80c): cube / cull frames 2-3 (emu/z80sim -P -F 2, Zilog
 ;; T) r8k_trap 266,571 -> ~196,000 T; the frames 591,075 + 741,200 ->
 ;; 546,273 + 714,315 (ucsim: see docs/benchmarks.md); the image +566 B.
@@ -69,6 +75,8 @@
         .endm
         .globl  _r8k_trap
 
+NSLOT   = 4                     ; the pattern cache's slots (a power of 2)
+
         .area   _DATA
 ts:                             ; a copy of *t (r8_trapfill: 10 bytes)
 ts_page: .ds    2
@@ -98,11 +106,15 @@ pq16:   .ds     2
         ;; low nibbles, each twice in its byte (bit 7: phase 0), three
         ;; times over; q16 (16): q16[4 j + ph] the column byte of phase ph
         ;; for rows from phase j: bit i = bit 3 - ph of pat[(j + i) & 3]
+        ;; NSLOT such slots of 32 bytes, rebuilt in turn (cvic: the next
+        ;; one's offset): the cube's three faces keep theirs
+cvic:   .ds     1
         .area   _INITIALIZED
-cache:  .ds     32
+cache:  .ds     32 * NSLOT
         .area   _INITIALIZER
+        .rept   2 * NSLOT
         .db     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
-        .db     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+        .endm
 
         .area   _CODE
 
@@ -119,19 +131,49 @@ _r8k_trap:
         ld      (ts_pr), hl
         ld      (ts_rows), de
         push    ix
-        ld      hl, #cache + 4  ; the pattern cache
+        ld      de, (ts_pat)    ; the pattern cache: a slot of these
+        ld      bc, (ts_pat + 2) ; patterns? (E, D, C, B: pat[0..3])
+        ld      ix, #cache
+        ld      h, #NSLOT
+2$:     ld      a, 0 (ix)
+        cp      a, e
+        jr      nz, 3$
+        ld      a, 1 (ix)
+        cp      a, d
+        jr      nz, 3$
+        ld      a, 2 (ix)
+        cp      a, c
+        jr      nz, 3$
+        ld      a, 3 (ix)
+        cp      a, b
+        jr      z, 4$
+3$:     push    de
+        ld      de, #32
+        add     ix, de
+        pop     de
+        dec     h
+        jr      nz, 2$
+        ld      a, (cvic)       ; none: rebuild the slot cvic (the
+        and     a, #(NSLOT - 1) * 32 ; slots in turn)
+        ld      l, a
+        add     a, #32
+        ld      (cvic), a
+        ld      h, #0
+        ld      de, #cache + 4
+        add     hl, de
         ld      (pr12), hl
-        ld      hl, #cache + 16
+        ld      de, #12
+        add     hl, de
         ld      (pq16), hl
-        ld      hl, #cache
-        ld      de, #ts_pat     ; the slot's patterns the same?
-        ld      b, #4
-2$:     ld      a, (de)
-        cp      a, (hl)
-        jr      nz, newpat
-        inc     hl
-        inc     de
-        djnz    2$
+        jp      newpat
+4$:     push    ix              ; found: its r12 and q16
+        pop     hl
+        ld      de, #4
+        add     hl, de
+        ld      (pr12), hl
+        ld      de, #12
+        add     hl, de
+        ld      (pq16), hl
         jp      next
 
 newpat: ld      hl, (pr12)      ; the slot: patterns, r12, q16
@@ -605,6 +647,9 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
         ld      a, (gg)
         ld      b, a
         exx                     ; to C' and B'
+        ld      a, (gA)
+        cp      a, #255
+        jr      nz, gfast
         ld      ix, #ga
 1$:     ld      a, (gA)         ; left: [ga, min(gb, gA))
         ld      b, 8 (ix)
@@ -636,7 +681,7 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
         dec     b
         exx
         jr      nz, 1$
-        ld      a, (gg)         ; k, m and the page: g rows on
+gend:   ld      a, (gg)         ; k, m and the page: g rows on
         ld      b, a
         ld      a, (ts_k)
         add     a, b
@@ -654,6 +699,51 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
         inc     a
 7$:     ld      (ts_m), a
         jp      next
+
+;; gfast: grag when the rows have columns in common (gA < gB): then
+;; min(gb, gA) = gA and max(ga, gB) = gB, so each row's left part is
+;; [ga, gA) and its right part [gB, gb).  A = gA here; IY, C', B' as
+;; grag sets them.
+gfast:  ld      b, a            ; B = gA
+        ld      a, (gB)
+        ld      c, a            ; C = gB
+        ld      hl, #ga
+        ld      de, #gb
+1$:     ld      a, b            ; left: gA - ga columns from ga
+        sub     a, (hl)
+        jr      nz, 5$
+2$:     ld      a, (de)         ; right: gb - gB columns from gB
+        sub     a, c
+        jr      nz, 6$
+3$:     inc     hl
+        inc     de
+        inc     iy
+        exx
+        sla     c
+        dec     b
+        exx
+        jr      nz, 1$
+        jp      gend
+5$:     push    bc
+        push    de
+        push    hl
+        ld      b, a
+        ld      a, (hl)
+        call    ragf
+        pop     hl
+        pop     de
+        pop     bc
+        jr      2$
+6$:     push    bc
+        push    de
+        push    hl
+        ld      b, a
+        ld      a, c
+        call    ragf
+        pop     hl
+        pop     de
+        pop     bc
+        jr      3$
 
 ;; ragf: columns [x, x + n) of one row, one by one: A = x, B = n >= 1,
 ;; C' = the row's bit, (IY) = its pattern nibble twice (bit 7: phase 0).

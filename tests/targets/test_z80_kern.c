@@ -32,6 +32,11 @@
  *     and saturation side counted; r8_mat_rotate on every angle of each
  *     axis (the others random) and random triples, the words around m
  *     kept.
+ *   r8k_trap's pattern cache: patterns from a pool of 6 in random order.
+ *   r8k_cull (cull_z80.s): against the reference on random normals (zero
+ *     components, +-16384 and other low bytes of 0, any Q1.14), vertices
+ *     around the range's edges +-1023 and eyes (low words within +-16383,
+ *     any high word); each answer -1, 0, 1 counted.
  *   r8_mul16 (the library's: assembly unless Z80_ASM leaves it out),
  *     r8z_mul16s (mulz_z80.s, what the kernels use) and __mullong (any
  *     r8_s32 product; mullong_z80.s is linked here): against a C89
@@ -47,6 +52,8 @@ void r8k_xform_ref(const r8_mat3 *m, const r8_vec3l *t, const r8_s16 *v, r8_vec3
 int r8k_project_ref(const r8_proj *p, const r8_vec3l *c, r8_s16 *out, r8_u16 *m, r8_s8 *e);
 r8_s16 r8k_edge_ref(r8_interp *it, const r8_s16 *a, const r8_s16 *b);
 void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
+int r8k_cull_ref(const r8_s16 *n, const r8_s16 *v, const r8_vec3l *eye);
+#define r8k_cull r8k_cull_ref
 #define r8k_trap r8k_trap_ref
 #define r8k_xform r8k_xform_ref
 #define r8k_project r8k_project_ref
@@ -57,7 +64,9 @@ void r8k_fill_ref(r8_u8 *p, r8_u8 v, unsigned n);
 #undef R8_ASM_XFORM
 #undef R8_ASM_PROJECT
 #undef R8_ASM_EDGE
+#undef R8_ASM_CULL
 #include "kern.c"
+#undef r8k_cull
 #undef r8k_trap
 #undef r8k_xform
 #undef r8k_project
@@ -463,6 +472,130 @@ static void test_rotate(void)
     TEST_ASSERT_EQUAL_INT16(-16384, r.m[6]);
 }
 
+/* ---- r8k_cull (cull_z80.s) ---- */
+#ifndef CULL_CASES
+#define CULL_CASES 4000
+#endif
+static r8_s16 rnd_normal(void)
+{
+    switch (rndn(5)) {
+    case 0: return 0;
+    case 1: return (r8_s16)(rndn(2) ? 16384 : -16384);
+    case 2: return (r8_s16)((r8_s16)rnds(-64, 64) * 256);
+    default: return rnds(-16384, 16384);
+    }
+}
+static r8_s16 rnd_vert(void)
+{
+    switch (rndn(4)) {
+    case 0: return rnds(-1030, -1016);
+    case 1: return rnds(1016, 1030);
+    case 2: return rnds(-4, 4);
+    default: return (r8_s16)(rndn(16) ? rnds(-1023, 1023) : (r8_s16)rnd());
+    }
+}
+static void test_cull_random(void)
+{
+    unsigned long i;
+    unsigned j, seen[3];
+    r8_s16 n[3], v[3];
+    r8_vec3l eye;
+    int want, got;
+    seen[0] = seen[1] = seen[2] = 0;
+    for (i = 0; i < CULL_CASES; i++) {
+        for (j = 0; j < 3; j++) {
+            n[j] = rnd_normal();
+            v[j] = rnd_vert();
+        }
+        eye.x = (r8_s32)((r8_u32)rnd() << 16) + (r8_s32)rnds(-16383, 16383);
+        eye.y = (r8_s32)((r8_u32)rnd() << 16) + (r8_s32)rnds(-16383, 16383);
+        eye.z = (r8_s32)((r8_u32)rnd() << 16) + (r8_s32)rnds(-16383, 16383);
+        if (i & 1) {      /* (the sign of the low words is what the test reads) */
+            eye.x = (r8_s16)eye.x;
+            eye.y = (r8_s16)eye.y;
+            eye.z = (r8_s16)eye.z;
+        }
+        want = r8k_cull_ref(n, v, &eye);
+        got = r8k_cull(n, v, &eye);
+        if (want != got) {
+            print_case("r8k_cull", i);
+            for (j = 0; j < 3; j++) {
+                unity_print_long((long)n[j]);
+                unity_print(" ");
+                unity_print_long((long)v[j]);
+                unity_print(" ");
+            }
+            unity_print_long((long)(r8_s16)eye.x);
+            unity_print(" ");
+            unity_print_long((long)(r8_s16)eye.y);
+            unity_print(" ");
+            unity_print_long((long)(r8_s16)eye.z);
+            unity_print("\n");
+            TEST_ASSERT_EQUAL_INT(want, got);
+        }
+        seen[want + 1]++;
+    }
+    unity_print("cull: -1/0/1 ");
+    unity_print_long((long)seen[0]);
+    unity_print(" / ");
+    unity_print_long((long)seen[1]);
+    unity_print(" / ");
+    unity_print_long((long)seen[2]);
+    unity_print("\n");
+    if (seen[0] < CULL_CASES / 10 || seen[1] < CULL_CASES / 10 || seen[2] < CULL_CASES / 10)
+        TEST_FAIL_MESSAGE("cull: an answer too rare");
+}
+
+/* ---- r8k_trap's pattern cache (trap_z80.s: 4 slots, rebuilt in turn):
+ * the patterns of a pool of 6 come back in random order, so every slot
+ * is hit, missed and rebuilt; as trap_case, on rows of a page (groups) */
+#ifndef TRAPC_CASES
+#define TRAPC_CASES 1500
+#endif
+static void test_trap_cache(void)
+{
+    static r8_u8 pool[6][4];
+    unsigned long i;
+    unsigned j;
+    r8_trapfill ta, tr;
+    r8_interp la, lr_, ra, rr_;
+    r8_s16 w;
+    for (i = 0; i < 6; i++)
+        for (j = 0; j < 4; j++)
+            pool[i][j] = (r8_u8)(j == 0 ? i : rnd());    /* all different */
+    for (i = 0; i < TRAPC_CASES; i++) {
+        unsigned off = rndn(64), len;
+        r8_u16 rows = (r8_u16)(1u + rndn(20));
+        w = (r8_s16)(1 + rndn(160));
+        len = GUARD + 4u * (unsigned)w + GUARD;
+        for (j = 0; j < len; j++)
+            band_asm[off + j] = band_ref[off + j] = (r8_u8)(j * 151u + i);
+        ta.page = band_asm + off + GUARD;
+        ta.m = (r8_u8)(1u << rndn(8));
+        ta.k = (r8_u8)rndn(4);
+        memcpy(ta.pat, pool[rndn(6)], 4);
+        ta.w = w;
+        rnd_interp(&la, w);
+        rnd_interp(&ra, w);
+        la.val = rnds(-4, (r8_s16)(w + 4));
+        ra.val = (r8_s16)(la.val + rnds(-2, (r8_s16)(w + 4)));
+        la.q = rnds(-2, 2);
+        ra.q = rnds(-2, 2);
+        tr = ta;
+        tr.page = band_ref + off + GUARD;
+        lr_ = la;
+        rr_ = ra;
+        r8k_trap_ref(&tr, &lr_, &rr_, rows);
+        r8k_trap(&ta, &la, &ra, rows);
+        if (memcmp(band_asm + off, band_ref + off, len) != 0 || ta.m != tr.m || ta.k != tr.k ||
+            (unsigned)(ta.page - band_asm) != (unsigned)(tr.page - band_ref) ||
+            memcmp(&la, &lr_, sizeof la) != 0 || memcmp(&ra, &rr_, sizeof ra) != 0) {
+            print_case("r8k_trap cache", i);
+            TEST_FAIL_MESSAGE("r8k_trap differs from the reference (pattern cache)");
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -476,5 +609,7 @@ int main(void)
     RUN_TEST(test_rotate);
     RUN_TEST(test_project_random);
     RUN_TEST(test_edge_random);
+    RUN_TEST(test_cull_random);
+    RUN_TEST(test_trap_cache);
     return UNITY_END();
 }
