@@ -376,7 +376,9 @@ int r8_tx_rx(r8_tx *tx, r8_u8 c)
 int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
 {
     r8_u8 *p = tx->pkt + 1;
+#if !defined(R8_TXCFG_NPAL) || R8_TXCFG_NPAL > 0
     unsigned k;
+#endif
     tx_st s;
     if (tx->in_frame)
         return R8_E_ARG;
@@ -419,8 +421,6 @@ int r8_tx_frame_begin(r8_tx *tx, r8_u16 frame)
 #if !defined(R8_TXCFG_NPAL) || R8_TXCFG_NPAL > 0
     for (k = 0; k < 3u * TXC_NPAL(&tx->cfg); k++)
         p[R8_WIRE_START_BYTES + k] = tx->cfg.palette[k];
-#else
-    (void)k;
 #endif
     tx_send(tx, &s, R8_WIRE_START_BYTES + 3u * TXC_NPAL(&tx->cfg), 1);
     return R8_OK;
