@@ -1605,8 +1605,10 @@ static int draw_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 /* Z80, the cull method's firmware (page-1 bands of 8 rows, the fused
  * fill alone, no painter's, depth, S-buffer, wireframe, ray or portal):
  * r8_render_band is r8k_band, ports/z80/band_z80.s (R8_ASM_BAND), which calls
- * draw_face through r8_band_face; this C89 version stays, the
- * reference, as r8_render_band_c. */
+ * draw_face through r8_band_face, except for a face with a pool slot
+ * (one going on from the band above): draw_face's path for it (the
+ * entry, r8k_scanband, the release) is in the kernel; this C89 version
+ * stays, the reference, as r8_render_band_c. */
 #if defined(R8_ASM_BAND) && defined(__SDCC) && defined(R8_BANDK_ONLY) && defined(R8_CFG_BAND) && \
     defined(R8_NO_WIRE) && defined(R8_NO_RAY) && defined(R8_NO_PORTAL) && !defined(R8_SMALL_SCENE)
 #if R8_CFG_BAND == 8 && !R8_W_PAINTER && !R8_W_DEPTH && !R8_W_SBUF
@@ -1619,6 +1621,15 @@ R8_CASSERT(bandz80_st_nbands_at_33, offsetof(r8_state, nbands) == 33);
 R8_CASSERT(bandz80_st_next_at_41, offsetof(r8_state, next) == 41);
 R8_CASSERT(bandz80_st_heads_at_43, offsetof(r8_state, heads) == 43);
 R8_CASSERT(bandz80_st_first_at_47, offsetof(r8_state, first) == 47);
+R8_CASSERT(bandz80_st_slot_at_49, offsetof(r8_state, slot) == 49);
+R8_CASSERT(bandz80_st_pool_at_53, offsetof(r8_state, pool) == 53);
+R8_CASSERT(bandz80_st_esize_at_57, offsetof(r8_state, esize) == 57);
+R8_CASSERT(bandz80_st_pool_used_at_60, offsetof(r8_state, pool_used) == 60);
+R8_CASSERT(bandz80_st_pool_free_at_61, offsetof(r8_state, pool_free) == 61);
+R8_CASSERT(bandz80_e_c_at_2, offsetof(r8_acthead, c) == 2);
+R8_CASSERT(bandz80_c_backface_at_19, offsetof(r8_scanx, backface) == 19);
+R8_CASSERT(bandz80_c_y_at_21, offsetof(r8_scanx, y) == 21);
+R8_CASSERT(bandz80_c_ybot_at_23, offsetof(r8_scanx, ybot) == 23);
 int r8_band_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb);
 int r8_band_face(r8_state *st, r8_fid g, r8_s16 y0, r8_s16 y1, r8_fb *fb)
 {

@@ -17,6 +17,7 @@
         .globl  _r8k_band
         .globl  _r8_band_face
         .globl  _r8k_fill
+        .globl  _r8k_scanband
 
 ;; r8_render (r8.h), r8_state (src/r8int.h), r8_fb (r8fb.h) on sdcc
 R_STATE   = 21
@@ -24,6 +25,18 @@ ST_NBANDS = 33
 ST_NEXT   = 41
 ST_HEADS  = 43
 ST_FIRST  = 47
+ST_SLOT   = 49
+ST_POOL   = 53
+ST_ESIZE  = 57
+ST_PUSED  = 60
+ST_PFREE  = 61
+NO_SLOT   = 0xFF
+;; r8_acthead (src/r8int.h): level, used, then its r8_scanx
+E_LEVEL   = 0
+E_USED    = 1
+E_BACK    = 2 + 0x13
+E_Y       = 2 + 0x15
+E_YBOT    = 2 + 0x17
 FB_BUF    = 0
 
         .area   _DATA
@@ -36,6 +49,9 @@ nv:     .ds     2               ; the band's bucket
 gv:     .ds     2               ; the face being drawn
 head:   .ds     2               ; the next band's list
 link:   .ds     2               ; where its next face goes
+ev:     .ds     2               ; its pool entry (a face with a slot)
+kp:     .ds     2               ; &st->slot[g]
+kv:     .ds     1               ; its slot
 
         .area   _CODE
 ;; void r8k_band(r8_render *r, r8_fb *fb): r HL, fb DE
@@ -178,7 +194,7 @@ loop:   ld      hl, (av)
         jr      3$
 1$:     ld      a, b            ; both END: done
         inc     a
-        jr      z, done
+        jp      z, done
 3$:     ld      (gv), hl        ; g = a; a = st->next[a]
         call    nextof
         ld      (av), de
@@ -187,8 +203,124 @@ loop:   ld      hl, (av)
         ld      (gv), hl
         call    nextof
         ld      (nv), de
+;; a face with a pool slot (one going on from the band above): draw_face's
+;; going-on path here: its entry, lim = min(ybot, y1), r8k_scanband when
+;; y < lim, done = y >= ybot || backface, and the release when done
+4$:     ld      hl, (stp)
+        ld      bc, #ST_SLOT
+        add     hl, bc
+        ld      a, (hl)
+        inc     hl
+        ld      h, (hl)
+        ld      l, a            ; HL = st->slot
+        or      a, h            ; (no pool: draw_face)
+        jp      z, slow
+        ld      de, (gv)
+        add     hl, de
+        ld      a, (hl)         ; A = k = st->slot[g]
+        cp      a, #NO_SLOT
+        jp      z, slow
+        ld      (kp), hl
+        ld      (kv), a
+        ld      hl, (stp)       ; e = st->pool + k * st->esize
+        ld      bc, #ST_POOL
+        add     hl, bc
+        ld      e, (hl)
+        inc     hl
+        ld      d, (hl)
+        inc     hl
+        inc     hl
+        inc     hl
+        ld      c, (hl)
+        inc     hl
+        ld      b, (hl)         ; BC = esize
+        ex      de, hl          ; HL = pool
+        or      a, a
+        jr      z, 6$
+5$:     add     hl, bc
+        dec     a
+        jr      nz, 5$
+6$:     ld      (ev), hl
+        ld      bc, #E_YBOT
+        add     hl, bc
+        ld      e, (hl)
+        inc     hl
+        ld      d, (hl)         ; DE = ybot
+        ld      hl, (y1v)       ; lim = ybot < y1 ? ybot : y1
+        ld      a, e
+        sub     a, l
+        ld      a, d
+        sbc     a, h
+        jp      po, 7$
+        xor     a, #0x80
+7$:     jp      p, 8$
+        ex      de, hl
+8$:     ex      de, hl          ; DE = lim
+        ld      hl, (ev)
+        ld      bc, #E_Y
+        add     hl, bc
+        ld      a, (hl)         ; y < lim (signed): r8k_scanband
+        sub     a, e
+        inc     hl
+        ld      a, (hl)
+        sbc     a, d
+        jp      po, 9$
+        xor     a, #0x80
+9$:     jp      p, 10$
+        ld      hl, (ev)        ; r8k_scanband(&e->c, fb, lim, e->level)
+        ld      a, (hl)
+        push    af
+        inc     sp
+        push    de
+        inc     hl
+        inc     hl
+        ld      de, (fbp)
+        call    _r8k_scanband   ; (pops lim, level)
+10$:    ld      hl, (ev)        ; done = y >= ybot || backface
+        ld      bc, #E_BACK
+        add     hl, bc
+        ld      a, (hl)
+        or      a, a
+        jr      nz, 12$
+        inc     hl
+        inc     hl
+        ld      e, (hl)
+        inc     hl
+        ld      d, (hl)         ; DE = y
+        inc     hl
+        ld      a, e            ; y - ybot
+        sub     a, (hl)
+        inc     hl
+        ld      a, d
+        sbc     a, (hl)
+        jp      po, 11$
+        xor     a, #0x80
+11$:    jp      m, golink       ; y < ybot: goes on
+12$:    ld      hl, (ev)        ; release: e->used = 0
+        ld      a, (kv)
+        ld      c, a            ; C = k
+        ld      de, (stp)
+        ld      a, e
+        add     a, #ST_PFREE
+        ld      e, a
+        ld      a, d
+        adc     a, #0
+        ld      d, a            ; DE = &st->pool_free
+        ld      a, (de)
+        ld      (hl), a         ; e->level = st->pool_free
+        inc     hl
+        ld      (hl), #0        ; e->used = 0
+        ld      a, c
+        ld      (de), a         ; st->pool_free = k
+        dec     de
+        ex      de, hl
+        dec     (hl)            ; st->pool_used--
+        ld      hl, (kp)
+        ld      (hl), #NO_SLOT  ; st->slot[g] = R8_NO_SLOT
+        jp      loop
+
 ;; d = r8_band_face(st, g, y0, y1, fb)
-4$:     ld      hl, (fbp)
+slow:   ld      hl, (fbp)
         push    hl
         ld      hl, (y1v)
         push    hl
@@ -200,8 +332,8 @@ loop:   ld      hl, (av)
         ld      a, e            ; d == 1: finished, out of the list
         dec     a
         or      a, d
-        jr      z, loop
-        ld      hl, (link)      ; *link = g; link = &st->next[g]
+        jp      z, loop
+golink: ld      hl, (link)      ; *link = g; link = &st->next[g]
         ld      de, (gv)
         ld      (hl), e
         inc     hl
@@ -209,7 +341,7 @@ loop:   ld      hl, (av)
         ex      de, hl
         call    nextp
         ld      (link), hl
-        jr      loop
+        jp      loop
 
 done:   ld      hl, (link)      ; *link = END
         ld      (hl), #0xFF

@@ -41,6 +41,7 @@ static r8_s16 rndr(r8_s16 lo, r8_s16 hi) /* lo .. hi */
 #define ST_NEXT 41
 #define ST_HEADS 43
 #define ST_FIRST 47
+#define ST_SLOT 49
 #define END 0xFFFFu
 #define NF 40
 #define NB 12
@@ -191,6 +192,7 @@ static void test_band(void)
             memcpy(stb + ST_HEADS, &p, sizeof p);
         }
         put16(stb + ST_FIRST, first);
+        put16(stb + ST_SLOT, 0);   /* no pool: every face through r8_band_face */
         r.state = stb;
         fb.buf = band_k + GUARD;
         ncall = 0;
