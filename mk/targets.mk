@@ -385,13 +385,15 @@ XREADY := $(AVRSIM) $(FWHOST) $(XB)/avr328/sizes.txt $(XB)/avr1284/sizes.txt $(X
 .PHONY: xtargets fw xtest-avr xtest-6502 xtest-z80 xprof-6502
 xtargets: $(XREADY) $(XT_avr1284) $(XKERN) $(XT_6502) $(XT_z80) $(XKERNZ)
 
-# Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).
+# Unit tests in the simulators (AVR on the 1284P: 16 KB SRAM).  Every
+# test program fits every target today, so one that stops fitting fails
+# its step (UNIT_SKIP_FAILS) rather than vanishing from the count.
 xtest-avr:
-	@bash scripts/run-step.sh xunit-avr1284 bash tests/targets/unit.sh avr1284 $(XT_avr1284)
+	@UNIT_SKIP_FAILS=1 bash scripts/run-step.sh xunit-avr1284 bash tests/targets/unit.sh avr1284 $(XT_avr1284)
 xtest-6502:
-	@bash scripts/run-step.sh xunit-6502 bash tests/targets/unit.sh 6502 $(XT_6502)
+	@UNIT_SKIP_FAILS=1 bash scripts/run-step.sh xunit-6502 bash tests/targets/unit.sh 6502 $(XT_6502)
 xtest-z80:
-	@XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
+	@UNIT_SKIP_FAILS=1 XTEST_TIMEOUT=$(XTEST_TIMEOUT) bash scripts/run-step.sh xunit-z80 bash tests/targets/unit.sh z80 $(XT_z80)
 XTEST_TIMEOUT ?= 300
 
 # emu/prof65 against sim65: same cycles, exit code and stream.

@@ -5,7 +5,8 @@
 # that crashes, times out or prints no result line adds "0 passed, 1
 # failed".  Binaries that did not fit the target hold "SKIP: reason" and
 # are listed and counted as skipped (not as passed); with UNIT_SKIP_FAILS
-# set (the AVR kernel step) such a binary is a failure.
+# set (every xtest-* and kernel step in mk/targets.mk) such a binary is a
+# failure.
 # AVR programs stop after 5 G cycles or 300 s (the kernel test, with
 # every kernel, runs about 2.2 G cycles: ~25 s).
 # ucsim runs the Z80 at ~50 M ticks/s; the whole Z80 set takes about 75 s
