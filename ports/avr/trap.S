@@ -298,6 +298,126 @@ r8k_trap:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
+    call  grp               /* the rows (the body below returns at fin) */
+    pop   r31               /* r */
+    pop   r30
+    std   Z+0, RVL
+    std   Z+1, RVH
+    std   Z+4, REL
+    std   Z+5, REH
+    pop   r31               /* l */
+    pop   r30
+    std   Z+0, LVL
+    std   Z+1, LVH
+    std   Z+4, LEL
+    std   Z+5, LEH
+    RESTORE18
+    clr   r1
+    ret
+/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
+ * rows and one of the rest; the state is all in memory between calls */
+big:
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r16, r18          /* rows */
+    movw  r28, r24          /* t */
+    movw  r14, r22          /* l */
+    movw  r12, r20          /* r */
+7:  movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    ldi   r18, 255
+    ldi   r19, 0
+    rcall r8k_trap
+    subi  r16, 255
+    sbci  r17, 0
+    tst   r17
+    brne  7b                /* still 256 or more */
+    movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    movw  r18, r16
+    rcall r8k_trap
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    ret
+
+/* rows == 1 (the commonest call): no state in registers but what the
+ * span needs; both DDAs step in memory. */
+one:
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = t */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  oneg
+1:  movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  2f
+    movw  r30, r24
+2:  cp    r26, r30
+    cpc   r27, r31
+    ldd   M, Y+2            /* (flags kept) m and k: the span's and */
+    ldd   K, Y+3            /* the step's */
+    brge  ostep
+    set                     /* T set: the span returns */
+    call  span
+ostep:
+    inc   K                 /* k = (k + 1) & 3 */
+    andi  K, 3
+    std   Y+3, K
+    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
+    brne  3f
+    inc   M
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, M
+    movw  r30, r22          /* l */
+    MSTEP
+    movw  r30, r20          /* r */
+    MSTEP
+    pop   r29
+    pop   r28
+    clr   r1
+    ret
+oneg:
+    clr   r26
+    clr   r27
+    rjmp  1b
+
+    .size r8k_trap, .-r8k_trap
+
+/* The rows' body, shared by r8k_trap (above) and r8k_scanfill (below),
+ * both of which call it at grp with the DDA state in registers; it
+ * returns at fin.  Its own section with r8k_scanband and r8k_scanfill,
+ * so a firmware that only calls r8k_scanband (the cube's) links neither
+ * r8k_trap's entry nor its one-row and 256-row paths. */
+    .section .text.r8k_trapbody,"ax",@progbits
 /* a call's first page, or a new page (from wrap): a group (grp2) when
  * GMIN rows or more are left, else (T clear) the rows as they are */
 grp:
@@ -880,122 +1000,8 @@ fin:
     andi  K, 3
     std   Y+2, M
     std   Y+3, K
-    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
-    sbrc  r0, 0
-    rjmp  .Lsf_fin
-    pop   r31               /* r */
-    pop   r30
-    std   Z+0, RVL
-    std   Z+1, RVH
-    std   Z+4, REL
-    std   Z+5, REH
-    pop   r31               /* l */
-    pop   r30
-    std   Z+0, LVL
-    std   Z+1, LVH
-    std   Z+4, LEL
-    std   Z+5, LEH
-    RESTORE18
-    clr   r1
     ret
 
-/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
- * rows and one of the rest; the state is all in memory between calls */
-big:
-    push  r12
-    push  r13
-    push  r14
-    push  r15
-    push  r16
-    push  r17
-    push  r28
-    push  r29
-    movw  r16, r18          /* rows */
-    movw  r28, r24          /* t */
-    movw  r14, r22          /* l */
-    movw  r12, r20          /* r */
-7:  movw  r24, r28
-    movw  r22, r14
-    movw  r20, r12
-    ldi   r18, 255
-    ldi   r19, 0
-    rcall r8k_trap
-    subi  r16, 255
-    sbci  r17, 0
-    tst   r17
-    brne  7b                /* still 256 or more */
-    movw  r24, r28
-    movw  r22, r14
-    movw  r20, r12
-    movw  r18, r16
-    rcall r8k_trap
-    pop   r29
-    pop   r28
-    pop   r17
-    pop   r16
-    pop   r15
-    pop   r14
-    pop   r13
-    pop   r12
-    ret
-
-/* rows == 1 (the commonest call): no state in registers but what the
- * span needs; both DDAs step in memory. */
-one:
-    push  r28
-    push  r29
-    movw  r28, r24          /* Y = t */
-    movw  r30, r22          /* X = max(l->val, 0) */
-    ld    r26, Z
-    ldd   r27, Z+1
-    sbrc  r27, 7
-    rjmp  oneg
-1:  movw  r30, r20          /* Z = min(r->val, w) */
-    ld    r24, Z
-    ldd   r25, Z+1
-    ldd   r30, Y+8
-    ldd   r31, Y+9
-    cp    r24, r30
-    cpc   r25, r31
-    brge  2f
-    movw  r30, r24
-2:  cp    r26, r30
-    cpc   r27, r31
-    ldd   M, Y+2            /* (flags kept) m and k: the span's and */
-    ldd   K, Y+3            /* the step's */
-    brge  ostep
-    set                     /* T set: the span returns */
-    rcall span
-ostep:
-    inc   K                 /* k = (k + 1) & 3 */
-    andi  K, 3
-    std   Y+3, K
-    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
-    brne  3f
-    inc   M
-    ldd   r26, Y+0
-    ldd   r27, Y+1
-    ldd   r18, Y+8
-    ldd   r19, Y+9
-    add   r26, r18
-    adc   r27, r19
-    std   Y+0, r26
-    std   Y+1, r27
-3:  std   Y+2, M
-    movw  r30, r22          /* l */
-    MSTEP
-    movw  r30, r20          /* r */
-    MSTEP
-    pop   r29
-    pop   r28
-    clr   r1
-    ret
-oneg:
-    clr   r26
-    clr   r27
-    rjmp  1b
-
-    .size r8k_trap, .-r8k_trap
 
 /* r8k_scanband (src/r8scan.h): r8_scanx_fill's page-1 set-up, then
  * r8k_scanfill; its C reference in src/kern.c.
@@ -1269,7 +1275,8 @@ r8k_scanfill:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+    rcall grp
+    rjmp  .Lsf_fin
 /* after a one-row trapezoid: y = s->y; each edge's pending DDA step,
  * unless the edge ends here and a trapezoid follows (r8k_estart
  * rewrites it: the step would be lost) */
@@ -1411,7 +1418,8 @@ r8k_scanfill:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+    rcall grp
+    rjmp  .Lsf_fin
 .Lsf_rowsB:
     movw  r30, r22
     ld    LVL, Z+
@@ -1433,7 +1441,8 @@ r8k_scanfill:
     ldd   RDH, Z+9
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+    rcall grp
+    rjmp  .Lsf_fin
 .Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0
