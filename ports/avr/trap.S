@@ -468,8 +468,6 @@ wrap:                       /* m = 1, page += w */
     dec   ROWS
     brne  grp               /* the next page: a new group */
     rjmp  fin
-sclrt:
-    rjmp  sclr
 
 span:                       /* X = xl < Z = xr */
     sbrc  K, 1              /* Q = pat[k] */
@@ -481,10 +479,7 @@ span:                       /* X = xl < Z = xr */
 3:  ldd   Q, Y+6
     sbrc  K, 0
     ldd   Q, Y+7
-4:  andi  Q, 0x0F          /* nibble 0: clear, F: set, else dither */
-    breq  sclrt
-    cpi   Q, 0x0F
-    breq  sset
+4:  andi  Q, 0x0F          /* the nibble (0: clear, F: set, as the rest) */
     mov   NM, Q             /* dither: nibble in both halves, */
     swap  NM
     or    Q, NM
@@ -505,36 +500,6 @@ d3: CDIT  4
     cp    r26, r30
     cpc   r27, r31
     brne  d0
-    brts  1f
-    rjmp  step
-1:  ret
-
-sset:
-    SETUP
-    ENTER s0, s1, s2, s3
-s0: CSET
-s1: CSET
-s2: CSET
-s3: CSET
-    cp    r26, r30
-    cpc   r27, r31
-    brne  s0
-    brts  1f
-    rjmp  step
-1:  ret
-
-sclr:
-    SETUP
-    mov   NM, M
-    com   NM
-    ENTER c0, c1, c2, c3
-c0: CCLR
-c1: CCLR
-c2: CCLR
-c3: CCLR
-    cp    r26, r30
-    cpc   r27, r31
-    brne  c0
     brts  1f
     rjmp  step
 1:  ret
@@ -923,7 +888,7 @@ idone:
     sbrs  r0, 0
     rjmp  4f
     sbrs  r0, 1
-    rjmp  growR             /* only right ends */
+    rjmp  growr             /* only right ends: growr's left piece is empty */
     lds   LVL, r8k_trap_ab+4  /* no row but the last can have a */
     lds   LVH, r8k_trap_ab+5  /* ragged end: on to row g - 1 */
     lds   LEL, r8k_trap_ab+6
@@ -939,62 +904,7 @@ idone:
     dec   r0
     brne  1b
     rjmp  growr
-4:  sbrc  r0, 1
-    rjmp  growL             /* only left ends */
-    rjmp  growr
-
-/* the rows of a group whose left (growR) or right (growL) end is the
- * same on every row: only the other end's piece */
-growR:
-    lds   r26, r8k_trap_ab+2  /* right piece [B, min(r->val, w)): */
-    lds   r27, r8k_trap_ab+3  /* none when r->val <= B */
-    cp    r26, RVL
-    cpc   r27, RVH
-    brge  8f
-    ldd   r30, Y+8
-    ldd   r31, Y+9
-    cp    RVL, r30
-    cpc   RVH, r31
-    brge  1f
-    movw  r30, RVL
-1:  cp    r26, r30
-    cpc   r27, r31
-    brge  8f
-    rcall span
-8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
-    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
-    inc   K
-    lsl   M
-    breq  9f
-    dec   ROWS
-    brne  growR
-    rjmp  fin
-9:  rjmp  wrap
-
-growL:
-    lds   r30, r8k_trap_ab  /* left piece [max(l->val, 0), A): */
-    lds   r31, r8k_trap_ab+1  /* none when l->val >= A */
-    cp    LVL, r30
-    cpc   LVH, r31
-    brge  8f
-    movw  r26, LVL
-    sbrc  LVH, 7
-    clr   r26
-    sbrc  LVH, 7
-    clr   r27
-    cp    r26, r30
-    cpc   r27, r31
-    brge  8f
-    rcall span
-8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
-    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
-    inc   K
-    lsl   M
-    breq  9f
-    dec   ROWS
-    brne  growL
-    rjmp  fin
-9:  rjmp  wrap
+4:  rjmp  growr             /* (only left ends: its right piece is empty) */
 
 fin:
     andi  K, 3
