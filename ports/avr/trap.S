@@ -164,75 +164,6 @@
     std   Z+1, r25
 .endm
 
-/* the same for the r8_interp at Z + o (Z = an r8_scanx, o = 25 or 38) */
-.macro MSTEPO o
-    ldd   r24, Z+\o+4      /* err += r */
-    ldd   r25, Z+\o+5
-    ldd   r26, Z+\o+6
-    ldd   r27, Z+\o+7
-    add   r24, r26
-    adc   r25, r27
-    ldd   r26, Z+\o+8      /* err -= den; on borrow back (C = 1) */
-    ldd   r27, Z+\o+9
-    sub   r24, r26
-    sbc   r25, r27
-    brcc  .+4
-    add   r24, r26
-    adc   r25, r27
-    std   Z+\o+4, r24
-    std   Z+\o+5, r25
-    ldd   r24, Z+\o        /* val += q + !C */
-    ldd   r25, Z+\o+1
-    ldd   r26, Z+\o+2
-    ldd   r27, Z+\o+3
-    brcs  .+2
-    adiw  r24, 1
-    add   r24, r26
-    adc   r25, r27
-    std   Z+\o, r24
-    std   Z+\o+1, r25
-.endm
-
-/* r8k_scanfill's stop = min(lim, r->yend (in r25:r24), l->yend), s->y
- * = stop, rows = stop - y (y in r21:r20, Z = s; at most 255), r23:r22
- * = l, r21:r20 = r; one row on to .Lsf_one, more (ROWS) to \rows */
-.macro STOPCALC rows
-    lds   r26, r8k_sf+2
-    lds   r27, r8k_sf+3
-    cp    r24, r26
-    cpc   r25, r27
-    brlt  63f
-    movw  r24, r26
-63: ldd   r26, Z+35
-    ldd   r27, Z+36
-    cp    r26, r24
-    cpc   r27, r25
-    brge  64f
-    movw  r24, r26
-64: movw  r26, r24
-    sub   r26, r20
-    sbc   r27, r21
-    tst   r27
-    breq  65f
-    ldi   r26, 255
-    movw  r24, r20
-    subi  r24, lo8(-255)
-    sbci  r25, hi8(-255)
-65: std   Z+21, r24
-    std   Z+22, r25
-    movw  r22, r30
-    subi  r22, lo8(-25)
-    sbci  r23, hi8(-25)
-    movw  r20, r30
-    subi  r20, lo8(-38)
-    sbci  r21, hi8(-38)
-    cpi   r26, 1
-    breq  66f
-    mov   ROWS, r26
-    rjmp  \rows
-66: rjmp  .Lsf_one
-.endm
-
     .section .text.r8k_trap,"ax",@progbits
     .global r8k_trap
     .type   r8k_trap, @function
@@ -398,9 +329,9 @@ ostep:
     std   Y+1, r27
 3:  std   Y+2, M
     movw  r30, r22          /* l */
-    MSTEP
+    call  mstz
     movw  r30, r20          /* r */
-    MSTEP
+    call  mstz
     pop   r29
     pop   r28
     clr   r1
@@ -913,6 +844,12 @@ fin:
     ret
 
 
+/* one DDA step of the r8_interp at Z (Z kept; r24-r27 changed): for
+ * `one` and r8k_scanfill's one-row trapezoids */
+mstz:
+    MSTEP
+    ret
+
 /* r8k_scanband (src/r8scan.h): r8_scanx_fill's page-1 set-up, then
  * r8k_scanfill; its C reference in src/kern.c.
  *
@@ -1057,6 +994,8 @@ r8k_scanfill:
     ldd   r24, Z+48
     ldd   r25, Z+49
 .Lsf_stop:
+    clr   r19               /* both edges to load (r19: 1 l kept, 2 r kept) */
+.Lsf_stopK:
     lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
     lds   r27, r8k_sf+3
     cp    r24, r26
@@ -1134,8 +1073,14 @@ r8k_scanfill:
     clr   r26
     clr   r27
     rjmp  .Lsf_o1
+.Lsf_kept:
+    cpi   r19, 1
+    breq  .Lsf_rowsA
+    rjmp  .Lsf_rowsB
 .Lsf_rows:
     mov   ROWS, r26
+    tst   r19               /* an edge kept in registers (after .Lsf_fin) */
+    brne  .Lsf_kept
     lds   r30, r8k_sf+4     /* the first of these rows in this call: */
     tst   r30               /* save r2..r17 now */
     brne  6f
@@ -1170,6 +1115,7 @@ r8k_scanfill:
     ld    LDH, Z
     com   LNQL
     com   LNQH
+.Lsf_rowsA:                 /* (l in r2..r11 already) */
     movw  r30, r20
     ld    RVL, Z+
     ld    RVH, Z+
@@ -1201,8 +1147,11 @@ r8k_scanfill:
     cp    r20, r24
     cpc   r21, r25
     brlt  1f
-    MSTEPO 25               /* y = lim: both steps, and out */
-    MSTEPO 38
+    adiw  r30, 25           /* y = lim: both steps, and out */
+    rcall mstz
+    adiw  r30, 13
+    rcall mstz
+    sbiw  r30, 38
     rjmp  .Lsf_out
 1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no step */
     ldd   r25, Z+36
@@ -1220,14 +1169,18 @@ r8k_scanfill:
     ldd   r20, Z+21
     ldd   r21, Z+22
     rjmp  3f
-2:  MSTEPO 25
+2:  adiw  r30, 25
+    rcall mstz
+    sbiw  r30, 25
 3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no step */
     ldd   r25, Z+49
     cp    r20, r24
     cpc   r21, r25
     brlt  4f
     rjmp  .Lsf_rre
-4:  MSTEPO 38
+4:  adiw  r30, 38
+    rcall mstz
+    sbiw  r30, 38
     ldd   r24, Z+48
     ldd   r25, Z+49
     rjmp  .Lsf_stop
@@ -1281,7 +1234,8 @@ r8k_scanfill:
     std   Z+39, RVH         /* r12..r17 (r25:r24 = r->yend) */
     std   Z+42, REL
     std   Z+43, REH
-    STOPCALC .Lsf_rowsB
+    ldi   r19, 2            /* on with l loaded (r kept) */
+    rjmp  .Lsf_stopK
 .Lsf_lgo:                   /* l goes on */
     std   Z+25, LVL
     std   Z+26, LVH
@@ -1309,27 +1263,10 @@ r8k_scanfill:
     ldd   r21, Z+22
     ldd   r24, Z+48
     ldd   r25, Z+49
-    STOPCALC .Lsf_rowsA
+    ldi   r19, 1            /* on with r loaded (l kept) */
+    rjmp  .Lsf_stopK
 /* the next trapezoid after .Lsf_fin restarted one edge only: l still
  * in r2..r11 (A), or r's val, err, ~q in r12..r17 (B) */
-.Lsf_rowsA:
-    movw  r30, r20
-    ld    RVL, Z+
-    ld    RVH, Z+
-    ld    RNQL, Z+
-    ld    RNQH, Z+
-    ld    REL, Z+
-    ld    REH, Z+
-    ld    RRL, Z+
-    ld    RRH, Z+
-    ld    RDL, Z+
-    ld    RDH, Z
-    com   RNQL
-    com   RNQH
-    ldd   M, Y+2
-    ldd   K, Y+3
-    rcall grp
-    rjmp  .Lsf_fin
 .Lsf_rowsB:
     movw  r30, r22
     ld    LVL, Z+
