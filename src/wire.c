@@ -74,6 +74,20 @@ static const r8_u8 delim = 0;
 #define TX_PARTIAL 1
 #endif
 
+/* 1: every packet of the fixed stream is under 250 bytes (COBS code
+ * byte, body, CRC), so no 0x00 is ever more than 254 bytes after the
+ * code before it: the COBS chain never stops (tx_link1's test, tx_send's
+ * r8_cobs_write and r8_tx_lit's too-long flag never happen) and those
+ * paths fold away (the demo firmware: 128 x 8 bands, 137-byte packets). */
+#define TX_SHORT 0
+#ifdef R8_TXCFG_FORMAT
+#if R8_TXCFG_FORMAT == R8_FMT_PAGE1 && R8_TXCFG_NPAL < 64 && \
+    (R8_TXCFG_BAND + 7) / 8 * R8_TXCFG_WIDTH + R8_WIRE_BAND_HDR + R8_WIRE_CRC_BYTES < 250
+#undef TX_SHORT
+#define TX_SHORT 1
+#endif
+#endif
+
 typedef r8_tx_st tx_st;
 
 /* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
@@ -135,7 +149,7 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
     do {                                                       \
         r8_u8 *c_ = (s)->code; /* once (cc65: one load) */     \
         if (c_) {                                              \
-            if ((unsigned)((q) - c_) > 254u) { /* q after c_ */ \
+            if (!TX_SHORT && (unsigned)((q) - c_) > 254u) {        \
                 tx_unlink(s);                                  \
             } else {                                           \
                 *c_ = (r8_u8)((q) - c_);                       \
@@ -179,9 +193,9 @@ static void tx_send(register r8_tx *tx, register tx_st *s, unsigned n, r8_u8 all
         TX_LINK(s, end - 2);
     if (!end[-1])
         TX_LINK(s, end - 1);
-    if (s->code && end - s->code > 255)
+    if (!TX_SHORT && s->code && end - s->code > 255)
         tx_unlink(s);
-    if (s->code) {
+    if (TX_SHORT || s->code) {
         *s->code = (r8_u8)(end - s->code);
         *end = 0;
         out(tx, p, n + 4);
