@@ -562,7 +562,7 @@ static unsigned tx_rle(register tx_st *s, register const r8_u8 *p, unsigned n, r
                 full = c;
             }
             c = r8_tx_lit(s, o, p, k, c);
-            if (c & 0x80u) {
+            if (!TX_SHORT && (c & 0x80u)) {   /* (TX_SHORT: never set) */
                 c &= 0x7Fu;
                 tx_unlink(s);
             }
