@@ -358,8 +358,8 @@ void r8_tx_request_full(r8_tx *tx)
 
 int r8_tx_rx(r8_tx *tx, r8_u8 c)
 {
-    r8_u8 body[6];
-    unsigned n;
+    r8_u8 *b = tx->rx;
+    unsigned n, i;
     if (c != 0) {
         if (tx->rx_len < sizeof tx->rx)
             tx->rx[tx->rx_len] = c;
@@ -369,18 +369,30 @@ int r8_tx_rx(r8_tx *tx, r8_u8 c)
     }
     n = tx->rx_len;
     tx->rx_len = 0;
-    if (n > sizeof tx->rx || r8_cobs_decode(tx->rx, n, body, sizeof body, &n) != R8_OK ||
-        n < 1u + R8_WIRE_CRC_BYTES ||
-        r8_crc16(body, n - R8_WIRE_CRC_BYTES) !=
-            (((unsigned)body[n - 2u] << 8) | body[n - 1u]))
+    if (n > sizeof tx->rx || n < 2u + R8_WIRE_CRC_BYTES)
+        return 0;
+    /* COBS, decoded in place (what r8_cobs_decode gives for packets this
+     * short: no 0xFF block fits in 8 bytes, and no stored byte is 0x00):
+     * each code byte after the first stands for a 0x00; the chain of
+     * codes must end at the packet's end.  The body is then b[1..n). */
+    for (i = 0; i < n; i += c) {
+        c = b[i];
+        b[i] = 0;
+    }
+    if (i != n)
+        return 0;
+    b++;
+    n--;
+    if (r8_crc16(b, n - R8_WIRE_CRC_BYTES) !=
+            (((unsigned)b[n - 2u] << 8) | b[n - 1u]))
         return 0;
     n -= R8_WIRE_CRC_BYTES;
-    if (body[0] == R8_PKT_REQUEST && n == 1u) {
+    if (b[0] == R8_PKT_REQUEST && n == 1u) {
         tx->want_full = 1;
         return R8_RX_REQUEST;
     }
-    if (body[0] == R8_PKT_INPUT && n == 3u) {
-        tx->keys = (r8_u16)(((unsigned)body[1] << 8) | body[2]);
+    if (b[0] == R8_PKT_INPUT && n == 3u) {
+        tx->keys = (r8_u16)(((unsigned)b[1] << 8) | b[2]);
         tx->inputs++;
         return R8_RX_INPUT;
     }
