@@ -20,8 +20,10 @@
  * at column (xl - xr) & 3 (Duff's device), so it ends with X == Z after a
  * whole pass.  Dithered spans test bit 7 - j of the nibble repeated in a
  * byte and shifted left by xr & 3, so loop column j has the bit of
- * column xr + j (mod 4).  Per column: 5 cycles (set, clear) or 7
- * (dither), and 4 per pass of 4 columns.
+ * column xr + j (mod 4).  Per column: 7 cycles, and 4 per pass of 4
+ * columns.  Set (nibble F) and clear (0) spans take the same loop (the
+ * nibble repeated is 0xFF or 0x00): two loops fewer in flash, for 2
+ * cycles a column.
  *
  * Page groups (issue 10): the rows of a call that share a page byte
  * (from bit m to bit 7, or to the last row) form a group; when it has
@@ -33,8 +35,8 @@
  * its last row and which ends are the same on every row sit in
  * r8k_trap_ab (14 bytes of .bss) while its rows run: with both ends the
  * same no row but the last has a ragged piece, and the call goes
- * straight to that row; with one the same, the rows test only the other
- * end (growL, growR).
+ * straight to that row; otherwise every row tests both ends (growr; an
+ * end that is the same on every row gives an empty piece).
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
@@ -932,9 +934,11 @@ r8k_scanband:
  * most 255 at a time) as r8k_trap does, and on; s->y = lim at the end.
  * A one-row trapezoid is `one`'s span and t step inline (its state in
  * memory), its edges' DDA steps left to .Lsf_next1; longer ones go
- * through the register body above, entered at grp: fin, seeing r8k_sf+4
- * set, comes back here (.Lsf_fin) instead of writing back and
- * returning.  Both skip the work on an edge that ends at y < lim, since
+ * through the register body above, called at grp (it returns at fin),
+ * then on to .Lsf_fin; r8k_trap's entry calls it the same way and
+ * writes back itself, so a firmware that only calls r8k_scanband links
+ * no r8k_trap entry (its own section).  One stop calculation for all
+ * (.Lsf_stop; r19 says which edge .Lsf_fin kept in registers).  Both skip the work on an edge that ends at y < lim, since
  * r8k_estart then rewrites all five of its r8_interp fields (the step
  * of a one-row trapezoid, the write-back of a longer one); at y = lim
  * both edges are stepped or written, so s ends as the C reference
@@ -1100,7 +1104,7 @@ r8k_scanfill:
     push  r15
     push  r16
     push  r17
-    ldi   r30, 1            /* saved, and fin comes back */
+    ldi   r30, 1            /* saved: restored at .Lsf_out */
     sts   r8k_sf+4, r30
 6:  movw  r30, r22
     ld    LVL, Z+
