@@ -74,6 +74,20 @@ static const r8_u8 delim = 0;
 #define TX_PARTIAL 1
 #endif
 
+/* 1: every packet of the fixed stream is under 250 bytes (COBS code
+ * byte, body, CRC), so no 0x00 is ever more than 254 bytes after the
+ * code before it: the COBS chain never stops (tx_link1's test, tx_send's
+ * r8_cobs_write and r8_tx_lit's too-long flag never happen) and those
+ * paths fold away (the demo firmware: 128 x 8 bands, 137-byte packets). */
+#define TX_SHORT 0
+#ifdef R8_TXCFG_FORMAT
+#if R8_TXCFG_FORMAT == R8_FMT_PAGE1 && R8_TXCFG_NPAL < 64 && \
+    (R8_TXCFG_BAND + 7) / 8 * R8_TXCFG_WIDTH + R8_WIRE_BAND_HDR + R8_WIRE_CRC_BYTES < 250
+#undef TX_SHORT
+#define TX_SHORT 1
+#endif
+#endif
+
 typedef r8_tx_st tx_st;
 
 /* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
@@ -135,7 +149,7 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
     do {                                                       \
         r8_u8 *c_ = (s)->code; /* once (cc65: one load) */     \
         if (c_) {                                              \
-            if ((unsigned)((q) - c_) > 254u) { /* q after c_ */ \
+            if (!TX_SHORT && (unsigned)((q) - c_) > 254u) {        \
                 tx_unlink(s);                                  \
             } else {                                           \
                 *c_ = (r8_u8)((q) - c_);                       \
@@ -179,9 +193,9 @@ static void tx_send(register r8_tx *tx, register tx_st *s, unsigned n, r8_u8 all
         TX_LINK(s, end - 2);
     if (!end[-1])
         TX_LINK(s, end - 1);
-    if (s->code && end - s->code > 255)
+    if (!TX_SHORT && s->code && end - s->code > 255)
         tx_unlink(s);
-    if (s->code) {
+    if (TX_SHORT || s->code) {
         *s->code = (r8_u8)(end - s->code);
         *end = 0;
         out(tx, p, n + 4);
@@ -344,8 +358,8 @@ void r8_tx_request_full(r8_tx *tx)
 
 int r8_tx_rx(r8_tx *tx, r8_u8 c)
 {
-    r8_u8 body[6];
-    unsigned n;
+    r8_u8 *b = tx->rx;
+    unsigned n, i;
     if (c != 0) {
         if (tx->rx_len < sizeof tx->rx)
             tx->rx[tx->rx_len] = c;
@@ -355,18 +369,30 @@ int r8_tx_rx(r8_tx *tx, r8_u8 c)
     }
     n = tx->rx_len;
     tx->rx_len = 0;
-    if (n > sizeof tx->rx || r8_cobs_decode(tx->rx, n, body, sizeof body, &n) != R8_OK ||
-        n < 1u + R8_WIRE_CRC_BYTES ||
-        r8_crc16(body, n - R8_WIRE_CRC_BYTES) !=
-            (((unsigned)body[n - 2u] << 8) | body[n - 1u]))
+    if (n > sizeof tx->rx || n < 2u + R8_WIRE_CRC_BYTES)
+        return 0;
+    /* COBS, decoded in place (what r8_cobs_decode gives for packets this
+     * short: no 0xFF block fits in 8 bytes, and no stored byte is 0x00):
+     * each code byte after the first stands for a 0x00; the chain of
+     * codes must end at the packet's end.  The body is then b[1..n). */
+    for (i = 0; i < n; i += c) {
+        c = b[i];
+        b[i] = 0;
+    }
+    if (i != n)
+        return 0;
+    b++;
+    n--;
+    if (r8_crc16(b, n - R8_WIRE_CRC_BYTES) !=
+            (((unsigned)b[n - 2u] << 8) | b[n - 1u]))
         return 0;
     n -= R8_WIRE_CRC_BYTES;
-    if (body[0] == R8_PKT_REQUEST && n == 1u) {
+    if (b[0] == R8_PKT_REQUEST && n == 1u) {
         tx->want_full = 1;
         return R8_RX_REQUEST;
     }
-    if (body[0] == R8_PKT_INPUT && n == 3u) {
-        tx->keys = (r8_u16)(((unsigned)body[1] << 8) | body[2]);
+    if (b[0] == R8_PKT_INPUT && n == 3u) {
+        tx->keys = (r8_u16)(((unsigned)b[1] << 8) | b[2]);
         tx->inputs++;
         return R8_RX_INPUT;
     }
@@ -548,7 +574,7 @@ static unsigned tx_rle(register tx_st *s, register const r8_u8 *p, unsigned n, r
                 full = c;
             }
             c = r8_tx_lit(s, o, p, k, c);
-            if (c & 0x80u) {
+            if (!TX_SHORT && (c & 0x80u)) {   /* (TX_SHORT: never set) */
                 c &= 0x7Fu;
                 tx_unlink(s);
             }

@@ -36,9 +36,17 @@ r8k_cull:
     push  r17
     movw  r26, r20          /* X = eye */
     movw  r30, r22          /* Z = v (flash) */
-    DIFF  r18, r19, out
-    DIFF  r20, r21, out
-    DIFF  r22, r23, out
+    rcall .Ldiff            /* d0, parked in r23:r22 */
+    brcc  out
+    movw  r22, r18
+    rcall .Ldiff            /* d1 */
+    brcc  out
+    movw  r20, r18
+    rcall .Ldiff            /* d2, and d0 back to r19:r18 */
+    brcc  out
+    movw  r16, r18
+    movw  r18, r22
+    movw  r22, r16
     rjmp  dot
 out:
     ldi   r24, 0xFF         /* -1: the caller's 32-bit path */
@@ -62,4 +70,11 @@ done:
     pop   r16
     pop   r15
     ret
+
+/* one component: facemac.h's DIFF into r19:r18, as a subroutine (one
+ * copy for the three); C clear when v is out of range */
+.Ldiff:
+    DIFF  r18, r19, 1f
+    sec
+1:  ret
     .size r8k_cull, .-r8k_cull

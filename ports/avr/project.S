@@ -148,15 +148,17 @@ r8k_project:
 
     /* qx, qy */
     movw  r18, r24
-    COORD r15, .Lreject
+    rcall .Lcoord
+    brcs  .Lreject
     movw  r18, r12
     mov   r12, r23
     mov   r13, r24
-    rjmp  20f
+    rcall .Lcoord
+    brcc  20f
 .Lreject:
     ldi   r24, 1
     rjmp  .Lret01
-20: COORD r15, .Lreject
+20:
     ldd   r0, Y+0           /* out = cx + qx, cy + qy */
     ldd   r1, Y+1
     add   r12, r0
@@ -215,6 +217,14 @@ r8k_project:
     clr   r1
     call  r8_project_recip
     rjmp  .Lretp
+
+/* qx, then qy: one copy of COORD (C set: out of range) */
+.Lcoord:
+    COORD r15, 21f
+    clc
+    ret
+21: sec
+    ret
     .size r8k_project, .-r8k_project
 
 /* round(2^31 / (32768 + 256 i)), i = 0..128 (the first clamped to 16

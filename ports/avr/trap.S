@@ -20,8 +20,10 @@
  * at column (xl - xr) & 3 (Duff's device), so it ends with X == Z after a
  * whole pass.  Dithered spans test bit 7 - j of the nibble repeated in a
  * byte and shifted left by xr & 3, so loop column j has the bit of
- * column xr + j (mod 4).  Per column: 5 cycles (set, clear) or 7
- * (dither), and 4 per pass of 4 columns.
+ * column xr + j (mod 4).  Per column: 7 cycles, and 4 per pass of 4
+ * columns.  Set (nibble F) and clear (0) spans take the same loop (the
+ * nibble repeated is 0xFF or 0x00): two loops fewer in flash, for 2
+ * cycles a column.
  *
  * Page groups (issue 10): the rows of a call that share a page byte
  * (from bit m to bit 7, or to the last row) form a group; when it has
@@ -33,8 +35,8 @@
  * its last row and which ends are the same on every row sit in
  * r8k_trap_ab (14 bytes of .bss) while its rows run: with both ends the
  * same no row but the last has a ragged piece, and the call goes
- * straight to that row; with one the same, the rows test only the other
- * end (growL, growR).
+ * straight to that row; otherwise every row tests both ends (growr; an
+ * end that is the same on every row gives an empty piece).
  *
  * Struct offsets (avr-gcc, no padding): r8_interp {val 0, q 2, err 4,
  * r 6, den 8}; r8_trapfill {page 0, m 2, k 3, pat 4..7, w 8}.
@@ -164,75 +166,6 @@
     std   Z+1, r25
 .endm
 
-/* the same for the r8_interp at Z + o (Z = an r8_scanx, o = 25 or 38) */
-.macro MSTEPO o
-    ldd   r24, Z+\o+4      /* err += r */
-    ldd   r25, Z+\o+5
-    ldd   r26, Z+\o+6
-    ldd   r27, Z+\o+7
-    add   r24, r26
-    adc   r25, r27
-    ldd   r26, Z+\o+8      /* err -= den; on borrow back (C = 1) */
-    ldd   r27, Z+\o+9
-    sub   r24, r26
-    sbc   r25, r27
-    brcc  .+4
-    add   r24, r26
-    adc   r25, r27
-    std   Z+\o+4, r24
-    std   Z+\o+5, r25
-    ldd   r24, Z+\o        /* val += q + !C */
-    ldd   r25, Z+\o+1
-    ldd   r26, Z+\o+2
-    ldd   r27, Z+\o+3
-    brcs  .+2
-    adiw  r24, 1
-    add   r24, r26
-    adc   r25, r27
-    std   Z+\o, r24
-    std   Z+\o+1, r25
-.endm
-
-/* r8k_scanfill's stop = min(lim, r->yend (in r25:r24), l->yend), s->y
- * = stop, rows = stop - y (y in r21:r20, Z = s; at most 255), r23:r22
- * = l, r21:r20 = r; one row on to .Lsf_one, more (ROWS) to \rows */
-.macro STOPCALC rows
-    lds   r26, r8k_sf+2
-    lds   r27, r8k_sf+3
-    cp    r24, r26
-    cpc   r25, r27
-    brlt  63f
-    movw  r24, r26
-63: ldd   r26, Z+35
-    ldd   r27, Z+36
-    cp    r26, r24
-    cpc   r27, r25
-    brge  64f
-    movw  r24, r26
-64: movw  r26, r24
-    sub   r26, r20
-    sbc   r27, r21
-    tst   r27
-    breq  65f
-    ldi   r26, 255
-    movw  r24, r20
-    subi  r24, lo8(-255)
-    sbci  r25, hi8(-255)
-65: std   Z+21, r24
-    std   Z+22, r25
-    movw  r22, r30
-    subi  r22, lo8(-25)
-    sbci  r23, hi8(-25)
-    movw  r20, r30
-    subi  r20, lo8(-38)
-    sbci  r21, hi8(-38)
-    cpi   r26, 1
-    breq  66f
-    mov   ROWS, r26
-    rjmp  \rows
-66: rjmp  .Lsf_one
-.endm
-
     .section .text.r8k_trap,"ax",@progbits
     .global r8k_trap
     .type   r8k_trap, @function
@@ -298,6 +231,126 @@ r8k_trap:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
+    call  grp               /* the rows (the body below returns at fin) */
+    pop   r31               /* r */
+    pop   r30
+    std   Z+0, RVL
+    std   Z+1, RVH
+    std   Z+4, REL
+    std   Z+5, REH
+    pop   r31               /* l */
+    pop   r30
+    std   Z+0, LVL
+    std   Z+1, LVH
+    std   Z+4, LEL
+    std   Z+5, LEH
+    RESTORE18
+    clr   r1
+    ret
+/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
+ * rows and one of the rest; the state is all in memory between calls */
+big:
+    push  r12
+    push  r13
+    push  r14
+    push  r15
+    push  r16
+    push  r17
+    push  r28
+    push  r29
+    movw  r16, r18          /* rows */
+    movw  r28, r24          /* t */
+    movw  r14, r22          /* l */
+    movw  r12, r20          /* r */
+7:  movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    ldi   r18, 255
+    ldi   r19, 0
+    rcall r8k_trap
+    subi  r16, 255
+    sbci  r17, 0
+    tst   r17
+    brne  7b                /* still 256 or more */
+    movw  r24, r28
+    movw  r22, r14
+    movw  r20, r12
+    movw  r18, r16
+    rcall r8k_trap
+    pop   r29
+    pop   r28
+    pop   r17
+    pop   r16
+    pop   r15
+    pop   r14
+    pop   r13
+    pop   r12
+    ret
+
+/* rows == 1 (the commonest call): no state in registers but what the
+ * span needs; both DDAs step in memory. */
+one:
+    push  r28
+    push  r29
+    movw  r28, r24          /* Y = t */
+    movw  r30, r22          /* X = max(l->val, 0) */
+    ld    r26, Z
+    ldd   r27, Z+1
+    sbrc  r27, 7
+    rjmp  oneg
+1:  movw  r30, r20          /* Z = min(r->val, w) */
+    ld    r24, Z
+    ldd   r25, Z+1
+    ldd   r30, Y+8
+    ldd   r31, Y+9
+    cp    r24, r30
+    cpc   r25, r31
+    brge  2f
+    movw  r30, r24
+2:  cp    r26, r30
+    cpc   r27, r31
+    ldd   M, Y+2            /* (flags kept) m and k: the span's and */
+    ldd   K, Y+3            /* the step's */
+    brge  ostep
+    set                     /* T set: the span returns */
+    call  span
+ostep:
+    inc   K                 /* k = (k + 1) & 3 */
+    andi  K, 3
+    std   Y+3, K
+    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
+    brne  3f
+    inc   M
+    ldd   r26, Y+0
+    ldd   r27, Y+1
+    ldd   r18, Y+8
+    ldd   r19, Y+9
+    add   r26, r18
+    adc   r27, r19
+    std   Y+0, r26
+    std   Y+1, r27
+3:  std   Y+2, M
+    movw  r30, r22          /* l */
+    call  mstz
+    movw  r30, r20          /* r */
+    call  mstz
+    pop   r29
+    pop   r28
+    clr   r1
+    ret
+oneg:
+    clr   r26
+    clr   r27
+    rjmp  1b
+
+    .size r8k_trap, .-r8k_trap
+
+/* The rows' body, shared by r8k_trap (above) and r8k_scanfill (below),
+ * both of which call it at grp with the DDA state in registers; it
+ * returns at fin.  Its own section with r8k_scanband and r8k_scanfill,
+ * so a firmware that only calls r8k_scanband (the cube's) links neither
+ * r8k_trap's entry nor its one-row and 256-row paths. */
+    .section .text.r8k_trapbody,"ax",@progbits
 /* a call's first page, or a new page (from wrap): a group (grp2) when
  * GMIN rows or more are left, else (T clear) the rows as they are */
 grp:
@@ -348,8 +401,6 @@ wrap:                       /* m = 1, page += w */
     dec   ROWS
     brne  grp               /* the next page: a new group */
     rjmp  fin
-sclrt:
-    rjmp  sclr
 
 span:                       /* X = xl < Z = xr */
     sbrc  K, 1              /* Q = pat[k] */
@@ -361,10 +412,7 @@ span:                       /* X = xl < Z = xr */
 3:  ldd   Q, Y+6
     sbrc  K, 0
     ldd   Q, Y+7
-4:  andi  Q, 0x0F          /* nibble 0: clear, F: set, else dither */
-    breq  sclrt
-    cpi   Q, 0x0F
-    breq  sset
+4:  andi  Q, 0x0F          /* the nibble (0: clear, F: set, as the rest) */
     mov   NM, Q             /* dither: nibble in both halves, */
     swap  NM
     or    Q, NM
@@ -385,36 +433,6 @@ d3: CDIT  4
     cp    r26, r30
     cpc   r27, r31
     brne  d0
-    brts  1f
-    rjmp  step
-1:  ret
-
-sset:
-    SETUP
-    ENTER s0, s1, s2, s3
-s0: CSET
-s1: CSET
-s2: CSET
-s3: CSET
-    cp    r26, r30
-    cpc   r27, r31
-    brne  s0
-    brts  1f
-    rjmp  step
-1:  ret
-
-sclr:
-    SETUP
-    mov   NM, M
-    com   NM
-    ENTER c0, c1, c2, c3
-c0: CCLR
-c1: CCLR
-c2: CCLR
-c3: CCLR
-    cp    r26, r30
-    cpc   r27, r31
-    brne  c0
     brts  1f
     rjmp  step
 1:  ret
@@ -803,7 +821,7 @@ idone:
     sbrs  r0, 0
     rjmp  4f
     sbrs  r0, 1
-    rjmp  growR             /* only right ends */
+    rjmp  growr             /* only right ends: growr's left piece is empty */
     lds   LVL, r8k_trap_ab+4  /* no row but the last can have a */
     lds   LVH, r8k_trap_ab+5  /* ragged end: on to row g - 1 */
     lds   LEL, r8k_trap_ab+6
@@ -819,183 +837,20 @@ idone:
     dec   r0
     brne  1b
     rjmp  growr
-4:  sbrc  r0, 1
-    rjmp  growL             /* only left ends */
-    rjmp  growr
-
-/* the rows of a group whose left (growR) or right (growL) end is the
- * same on every row: only the other end's piece */
-growR:
-    lds   r26, r8k_trap_ab+2  /* right piece [B, min(r->val, w)): */
-    lds   r27, r8k_trap_ab+3  /* none when r->val <= B */
-    cp    r26, RVL
-    cpc   r27, RVH
-    brge  8f
-    ldd   r30, Y+8
-    ldd   r31, Y+9
-    cp    RVL, r30
-    cpc   RVH, r31
-    brge  1f
-    movw  r30, RVL
-1:  cp    r26, r30
-    cpc   r27, r31
-    brge  8f
-    rcall span
-8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
-    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
-    inc   K
-    lsl   M
-    breq  9f
-    dec   ROWS
-    brne  growR
-    rjmp  fin
-9:  rjmp  wrap
-
-growL:
-    lds   r30, r8k_trap_ab  /* left piece [max(l->val, 0), A): */
-    lds   r31, r8k_trap_ab+1  /* none when l->val >= A */
-    cp    LVL, r30
-    cpc   LVH, r31
-    brge  8f
-    movw  r26, LVL
-    sbrc  LVH, 7
-    clr   r26
-    sbrc  LVH, 7
-    clr   r27
-    cp    r26, r30
-    cpc   r27, r31
-    brge  8f
-    rcall span
-8:  STEP  LVL, LVH, LEL, LEH, LNQL, LNQH, LRL, LRH, LDL, LDH
-    STEP  RVL, RVH, REL, REH, RNQL, RNQH, RRL, RRH, RDL, RDH
-    inc   K
-    lsl   M
-    breq  9f
-    dec   ROWS
-    brne  growL
-    rjmp  fin
-9:  rjmp  wrap
+4:  rjmp  growr             /* (only left ends: its right piece is empty) */
 
 fin:
     andi  K, 3
     std   Y+2, M
     std   Y+3, K
-    lds   r0, r8k_sf+4      /* r8k_scanfill's trapezoid: back to it */
-    sbrc  r0, 0
-    rjmp  .Lsf_fin
-    pop   r31               /* r */
-    pop   r30
-    std   Z+0, RVL
-    std   Z+1, RVH
-    std   Z+4, REL
-    std   Z+5, REH
-    pop   r31               /* l */
-    pop   r30
-    std   Z+0, LVL
-    std   Z+1, LVH
-    std   Z+4, LEL
-    std   Z+5, LEH
-    RESTORE18
-    clr   r1
     ret
 
-/* rows >= 256 (never from the renderer: a band has 8 rows): calls of 255
- * rows and one of the rest; the state is all in memory between calls */
-big:
-    push  r12
-    push  r13
-    push  r14
-    push  r15
-    push  r16
-    push  r17
-    push  r28
-    push  r29
-    movw  r16, r18          /* rows */
-    movw  r28, r24          /* t */
-    movw  r14, r22          /* l */
-    movw  r12, r20          /* r */
-7:  movw  r24, r28
-    movw  r22, r14
-    movw  r20, r12
-    ldi   r18, 255
-    ldi   r19, 0
-    rcall r8k_trap
-    subi  r16, 255
-    sbci  r17, 0
-    tst   r17
-    brne  7b                /* still 256 or more */
-    movw  r24, r28
-    movw  r22, r14
-    movw  r20, r12
-    movw  r18, r16
-    rcall r8k_trap
-    pop   r29
-    pop   r28
-    pop   r17
-    pop   r16
-    pop   r15
-    pop   r14
-    pop   r13
-    pop   r12
-    ret
 
-/* rows == 1 (the commonest call): no state in registers but what the
- * span needs; both DDAs step in memory. */
-one:
-    push  r28
-    push  r29
-    movw  r28, r24          /* Y = t */
-    movw  r30, r22          /* X = max(l->val, 0) */
-    ld    r26, Z
-    ldd   r27, Z+1
-    sbrc  r27, 7
-    rjmp  oneg
-1:  movw  r30, r20          /* Z = min(r->val, w) */
-    ld    r24, Z
-    ldd   r25, Z+1
-    ldd   r30, Y+8
-    ldd   r31, Y+9
-    cp    r24, r30
-    cpc   r25, r31
-    brge  2f
-    movw  r30, r24
-2:  cp    r26, r30
-    cpc   r27, r31
-    ldd   M, Y+2            /* (flags kept) m and k: the span's and */
-    ldd   K, Y+3            /* the step's */
-    brge  ostep
-    set                     /* T set: the span returns */
-    rcall span
-ostep:
-    inc   K                 /* k = (k + 1) & 3 */
-    andi  K, 3
-    std   Y+3, K
-    lsl   M                 /* m <<= 1; past bit 7: m = 1, page += w */
-    brne  3f
-    inc   M
-    ldd   r26, Y+0
-    ldd   r27, Y+1
-    ldd   r18, Y+8
-    ldd   r19, Y+9
-    add   r26, r18
-    adc   r27, r19
-    std   Y+0, r26
-    std   Y+1, r27
-3:  std   Y+2, M
-    movw  r30, r22          /* l */
+/* one DDA step of the r8_interp at Z (Z kept; r24-r27 changed): for
+ * `one` and r8k_scanfill's one-row trapezoids */
+mstz:
     MSTEP
-    movw  r30, r20          /* r */
-    MSTEP
-    pop   r29
-    pop   r28
-    clr   r1
     ret
-oneg:
-    clr   r26
-    clr   r27
-    rjmp  1b
-
-    .size r8k_trap, .-r8k_trap
 
 /* r8k_scanband (src/r8scan.h): r8_scanx_fill's page-1 set-up, then
  * r8k_scanfill; its C reference in src/kern.c.
@@ -1079,9 +934,11 @@ r8k_scanband:
  * most 255 at a time) as r8k_trap does, and on; s->y = lim at the end.
  * A one-row trapezoid is `one`'s span and t step inline (its state in
  * memory), its edges' DDA steps left to .Lsf_next1; longer ones go
- * through the register body above, entered at grp: fin, seeing r8k_sf+4
- * set, comes back here (.Lsf_fin) instead of writing back and
- * returning.  Both skip the work on an edge that ends at y < lim, since
+ * through the register body above, called at grp (it returns at fin),
+ * then on to .Lsf_fin; r8k_trap's entry calls it the same way and
+ * writes back itself, so a firmware that only calls r8k_scanband links
+ * no r8k_trap entry (its own section).  One stop calculation for all
+ * (.Lsf_stop; r19 says which edge .Lsf_fin kept in registers).  Both skip the work on an edge that ends at y < lim, since
  * r8k_estart then rewrites all five of its r8_interp fields (the step
  * of a one-row trapezoid, the write-back of a longer one); at y = lim
  * both edges are stepped or written, so s ends as the C reference
@@ -1141,6 +998,8 @@ r8k_scanfill:
     ldd   r24, Z+48
     ldd   r25, Z+49
 .Lsf_stop:
+    clr   r19               /* both edges to load (r19: 1 l kept, 2 r kept) */
+.Lsf_stopK:
     lds   r26, r8k_sf+2     /* stop = min(lim, r->yend, l->yend) */
     lds   r27, r8k_sf+3
     cp    r24, r26
@@ -1218,8 +1077,14 @@ r8k_scanfill:
     clr   r26
     clr   r27
     rjmp  .Lsf_o1
+.Lsf_kept:
+    cpi   r19, 1
+    breq  .Lsf_rowsA
+    rjmp  .Lsf_rowsB
 .Lsf_rows:
     mov   ROWS, r26
+    tst   r19               /* an edge kept in registers (after .Lsf_fin) */
+    brne  .Lsf_kept
     lds   r30, r8k_sf+4     /* the first of these rows in this call: */
     tst   r30               /* save r2..r17 now */
     brne  6f
@@ -1239,7 +1104,7 @@ r8k_scanfill:
     push  r15
     push  r16
     push  r17
-    ldi   r30, 1            /* saved, and fin comes back */
+    ldi   r30, 1            /* saved: restored at .Lsf_out */
     sts   r8k_sf+4, r30
 6:  movw  r30, r22
     ld    LVL, Z+
@@ -1254,6 +1119,7 @@ r8k_scanfill:
     ld    LDH, Z
     com   LNQL
     com   LNQH
+.Lsf_rowsA:                 /* (l in r2..r11 already) */
     movw  r30, r20
     ld    RVL, Z+
     ld    RVH, Z+
@@ -1269,7 +1135,8 @@ r8k_scanfill:
     com   RNQH
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+    rcall grp
+    rjmp  .Lsf_fin
 /* after a one-row trapezoid: y = s->y; each edge's pending DDA step,
  * unless the edge ends here and a trapezoid follows (r8k_estart
  * rewrites it: the step would be lost) */
@@ -1284,8 +1151,11 @@ r8k_scanfill:
     cp    r20, r24
     cpc   r21, r25
     brlt  1f
-    MSTEPO 25               /* y = lim: both steps, and out */
-    MSTEPO 38
+    adiw  r30, 25           /* y = lim: both steps, and out */
+    rcall mstz
+    adiw  r30, 13
+    rcall mstz
+    sbiw  r30, 38
     rjmp  .Lsf_out
 1:  ldd   r24, Z+35         /* y >= l->yend: restart l, no step */
     ldd   r25, Z+36
@@ -1303,14 +1173,18 @@ r8k_scanfill:
     ldd   r20, Z+21
     ldd   r21, Z+22
     rjmp  3f
-2:  MSTEPO 25
+2:  adiw  r30, 25
+    rcall mstz
+    sbiw  r30, 25
 3:  ldd   r24, Z+48         /* y >= r->yend: restart r, no step */
     ldd   r25, Z+49
     cp    r20, r24
     cpc   r21, r25
     brlt  4f
     rjmp  .Lsf_rre
-4:  MSTEPO 38
+4:  adiw  r30, 38
+    rcall mstz
+    sbiw  r30, 38
     ldd   r24, Z+48
     ldd   r25, Z+49
     rjmp  .Lsf_stop
@@ -1364,7 +1238,8 @@ r8k_scanfill:
     std   Z+39, RVH         /* r12..r17 (r25:r24 = r->yend) */
     std   Z+42, REL
     std   Z+43, REH
-    STOPCALC .Lsf_rowsB
+    ldi   r19, 2            /* on with l loaded (r kept) */
+    rjmp  .Lsf_stopK
 .Lsf_lgo:                   /* l goes on */
     std   Z+25, LVL
     std   Z+26, LVH
@@ -1392,26 +1267,10 @@ r8k_scanfill:
     ldd   r21, Z+22
     ldd   r24, Z+48
     ldd   r25, Z+49
-    STOPCALC .Lsf_rowsA
+    ldi   r19, 1            /* on with r loaded (l kept) */
+    rjmp  .Lsf_stopK
 /* the next trapezoid after .Lsf_fin restarted one edge only: l still
  * in r2..r11 (A), or r's val, err, ~q in r12..r17 (B) */
-.Lsf_rowsA:
-    movw  r30, r20
-    ld    RVL, Z+
-    ld    RVH, Z+
-    ld    RNQL, Z+
-    ld    RNQH, Z+
-    ld    REL, Z+
-    ld    REH, Z+
-    ld    RRL, Z+
-    ld    RRH, Z+
-    ld    RDL, Z+
-    ld    RDH, Z
-    com   RNQL
-    com   RNQH
-    ldd   M, Y+2
-    ldd   K, Y+3
-    rjmp  grp
 .Lsf_rowsB:
     movw  r30, r22
     ld    LVL, Z+
@@ -1433,7 +1292,8 @@ r8k_scanfill:
     ldd   RDH, Z+9
     ldd   M, Y+2
     ldd   K, Y+3
-    rjmp  grp
+    rcall grp
+    rjmp  .Lsf_fin
 .Lsf_out:
 7:  lds   r0, r8k_sf+4
     tst   r0

@@ -53,10 +53,20 @@
 #ifdef R8_AVR_NO_CRCTAB
 #define STEP(hi, lo, b) CRCSTEP(hi, lo, b, r25, r23)
 #define TABPAGE
+#define LOWSECT(name) .section .text.name, "ax", @progbits
 #else
 #define STEP(hi, lo, b) CRCTAB(hi, lo, b)
 #define TABPAGE ldi r31, hi8(r8_crc_tab)
 
+/* r8_crc16_update and r8_tx_zeros (114 bytes) go in the padding before
+ * the table: avr-libc's linker script puts the .progmem.gcc* sections
+ * right after the interrupt vectors (140 bytes on the ATmega1284P, 104
+ * on the 328P), in the order this file makes them, so these two come
+ * before the page-aligned table instead of after it, and the flash they
+ * take would otherwise be padding. */
+#define LOWSECT(name) .section .progmem.gcc_r8a.name, "ax", @progbits
+        LOWSECT(r8_crc16_update)
+        LOWSECT(r8_tx_zeros)
 /* The CRC table: T[i] = i * x^16 mod P; the high bytes, then the low
  * bytes, on a 256-byte page (the step needs no address arithmetic). */
         .section .progmem.gcc_r8crc, "a", @progbits
@@ -100,7 +110,7 @@ r8_crc_tab:
 /* r8_u16 r8_crc16_update(r8_u16 crc, const r8_u8 *p, unsigned n)
  *   crc r25:r24, p r23:r22, n r21:r20 -> r25:r24  17 (23) cycles/byte
  * (Each routine has its own section: --gc-sections drops the unused.) */
-        .section .text.r8_crc16_update, "ax", @progbits
+        LOWSECT(r8_crc16_update)
         .global r8_crc16_update
         .type   r8_crc16_update, @function
 r8_crc16_update:
@@ -389,7 +399,7 @@ r8_tx_lit:
 /* unsigned r8_tx_zeros(const r8_u8 *p, unsigned n)
  *   p r25:r24, n r23:r22 -> r25:r24: how many bytes of p[0..n) are 0x00
  * before the first other.  8 at a time: ~3.6 cycles a byte. */
-        .section .text.r8_tx_zeros, "ax", @progbits
+        LOWSECT(r8_tx_zeros)
         .global r8_tx_zeros
         .type   r8_tx_zeros, @function
 r8_tx_zeros:
