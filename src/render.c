@@ -650,6 +650,87 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 
 #endif
 
+#ifdef R8_FIXED_PLAN
+/* The fixed plan's r8_state as tables (cc65 and sdcc spend 10-20 bytes
+ * on each store through st; here 2 or 4): its non-zero bytes and words
+ * (offset, value) and its arena pointers (offset, FP_* from base).
+ * Every other field is 0, as the general path in r8_render_init sets
+ * it (nclip, npoly, dropped, nclipped, pool_used, zx[0], attrs before
+ * the methods' bits) or r8_render_frame does before reading it. */
+#define FPO(f) ((r8_u16)offsetof(r8_state, f))
+#if R8_CFG_BAND == 1
+#define FP_bsh 0
+#elif R8_CFG_BAND == 2
+#define FP_bsh 1
+#elif R8_CFG_BAND == 4
+#define FP_bsh 2
+#elif R8_CFG_BAND == 8
+#define FP_bsh 3
+#elif R8_CFG_BAND == 16
+#define FP_bsh 4
+#elif R8_CFG_BAND == 32
+#define FP_bsh 5
+#elif R8_CFG_BAND == 64
+#define FP_bsh 6
+#elif R8_CFG_BAND == 128
+#define FP_bsh 7
+#elif R8_CFG_BAND == 256
+#define FP_bsh 8
+#elif R8_CFG_BAND == 512
+#define FP_bsh 9
+#elif R8_CFG_BAND == 1024
+#define FP_bsh 10
+#else
+#define FP_bsh (-1)
+#endif
+R8_CASSERT(fixed_plan_state_small, sizeof(r8_state) <= 256);
+static R8_FLASH const r8_u8 fp_b[] = {
+    (r8_u8)FPO(vsh), FP_vsh,
+    (r8_u8)FPO(fast), FP_fast,
+    (r8_u8)FPO(judd), (r8_u8)(R8_CFG_CULL == R8_CULL_JUDD),
+    (r8_u8)FPO(method), R8_CFG_METHOD,
+    (r8_u8)FPO(shading), R8_CFG_SHADING,
+    (r8_u8)FPO(npool), FP_npool,
+    (r8_u8)FPO(nclip), R8_CFG_CLIP,
+    (r8_u8)(FPO(zx) + 1u), 255,
+    (r8_u8)FPO(pool_free), R8_NO_SLOT
+};
+static R8_FLASH const r8_u16 fp_w[] = {
+    FPO(width), (r8_u16)R8_CFG_WIDTH,
+    FPO(height), (r8_u16)R8_CFG_HEIGHT,
+    FPO(nverts), FP_nverts,
+    FPO(nfaces), FP_nfaces,
+    FPO(bsh), (r8_u16)FP_bsh,
+    FPO(nbands), FP_nbands,
+    FPO(nheads), (r8_u16)FP_nheads,
+    FPO(sv_cap), FP_sv_cap,
+    FPO(esize), (r8_u16)FP_esize,
+    FPO(first), (r8_u16)R8_FID_END,
+    (r8_u16)(FPO(cam) + offsetof(r8_proj, cx)), (r8_u16)(R8_CFG_WIDTH * 8),
+    (r8_u16)(FPO(cam) + offsetof(r8_proj, cy)), (r8_u16)(R8_CFG_HEIGHT * 8)
+};
+static R8_FLASH const r8_u16 fp_p[] = {
+    FPO(obj), FP_obj,
+    FPO(sv), FP_sv,
+    FPO(vnorm), FP_vnorm,
+    FPO(next), FP_next,
+#if FP_NP1 > 0
+    FPO(slot), FP_slot,               /* (npool: 0 when FP_NP1 is) */
+#if FP_PAINTER
+    FPO(ftop), FP_ftop,
+#endif
+#endif
+    FPO(cpoly), FP_cpoly,
+    FPO(heads), FP_heads,
+    FPO(clipbuf), FP_clipbuf,
+    FPO(tmp), FP_tmp,
+    FPO(pool), FP_pool,
+    FPO(depth), FP_depth,
+    FPO(snode), FP_snode,
+    FPO(shead), FP_shead
+};
+#endif
+
 int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
                    unsigned work_size)
 {
@@ -694,6 +775,32 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->work_size = work_size;
     r->state = st;
     sc = cfg->scene;
+#ifdef R8_FIXED_PLAN
+    /* the fields below from fp_b, fp_w, fp_p (zero first): the same
+     * values as the general path after #else, field by field */
+    {
+        r8_u8 *q = (r8_u8 *)st;
+        for (k = (r8_u16)sizeof *st; k; k--)
+            *q++ = 0;
+    }
+    st->scene = sc;
+    for (k = 0; k < (r8_u16)sizeof fp_b; k = (r8_u16)(k + 2u))
+        ((r8_u8 *)st)[R8_RDU8(&fp_b[k])] = R8_RDU8(&fp_b[k + 1u]);
+    for (k = 0; k < (r8_u16)(sizeof fp_w / sizeof fp_w[0]); k = (r8_u16)(k + 2u))
+        *(r8_u16 *)(void *)((r8_u8 *)st + R8_RDU16(&fp_w[k])) = R8_RDU16(&fp_w[k + 1u]);
+    for (k = 0; k < (r8_u16)(sizeof fp_p / sizeof fp_p[0]); k = (r8_u16)(k + 2u))
+        *(r8_u8 **)(void *)((r8_u8 *)st + R8_RDU16(&fp_p[k])) = base + R8_RDU16(&fp_p[k + 1u]);
+    /* (R8_FAST_ONLY: cull or painter's, so depth_bytes and nsnode 0;
+     * the attributes as below) */
+#if R8_W_DEPTH
+    if (CFG_METHOD(cfg) >= R8_VIS_Z8)
+        st->attrs |= R8_ATTR_D;
+#endif
+#if R8_W_GOURAUD
+    if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
+        st->attrs |= R8_ATTR_S;
+#endif
+#else
     st->scene = sc;
     st->width = CFG_WIDTH(cfg);
     st->height = CFG_HEIGHT(cfg);
@@ -760,6 +867,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->pool_free = R8_NO_SLOT;
     st->cam.cx = (r8_s16)(CFG_WIDTH(cfg) * 8);
     st->cam.cy = (r8_s16)(CFG_HEIGHT(cfg) * 8);
+#endif
 #ifndef R8_NO_RT_NORMALS
     norms = (r8_s16 *)(void *)(base + PLV(norms));
 #endif

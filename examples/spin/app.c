@@ -124,6 +124,49 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 /* Everything app_run needs before the first frame, in its own stack
  * frame (gone while frames are drawn: the 2 KB parts need the bytes;
  * external, so -Os does not fold it into app_run). */
+#if defined(R8_FIXED_PLAN) && defined(R8_TXCFG_FORMAT)
+#if R8_TXCFG_FORMAT == R8_FMT_PAGE1
+#define APP_FIXED 1
+#endif
+#endif
+#ifdef APP_FIXED
+/* The demo firmware on cc65 and sdcc (src/render.c R8_FIXED_PLAN, the
+ * stream fixed by R8_TXCFG_*): app_plan's layout with the renderer's
+ * work (FP_total, which r8_render_ram returns for the one configuration
+ * it takes) and the band (PAGE1) as constants, so app_plan is not
+ * linked and the set-up runs once.  What the build does not prove is
+ * still checked here: r8_render_init refuses any other configuration
+ * (-1: APP_E_CFG, before its size: -2, APP_E_RAM), the band buffer's
+ * size against r8_fb_bytes, and the stream's scratch (r8_tx_scratch, 0
+ * for another stream) against what is left; the arena is as app_plan
+ * lays it out (work, band, scratch), which app_ram measures. */
+#define APP_BAND_AT ((unsigned)FP_total)
+#define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
+#define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
+{
+    r8_tx_cfg t;
+    r8_render_cfg rc;
+    unsigned sc, ws = 0;
+    int e;
+    if (!app_demo(cfg))
+        return APP_E_CFG;
+    tx_cfg_from(cfg, &t);
+    rc = cfg->render;
+    rc.scene = &run.scene;
+    sc = r8_tx_scratch(&t);
+    if (mem_size >= APP_SCRATCH_AT && mem_size - APP_SCRATCH_AT >= sc)
+        ws = APP_BAND_AT;                /* else r8_render_init: -2 */
+    e = r8_render_init(&ren, &rc, mem, ws);
+    if (e == -2 && sc)
+        return APP_E_RAM;
+    if (e || !sc || r8_fb_bytes(t.format, t.width, t.band) != APP_BAND_BYTES ||
+        r8_fb_init(&band_fb, mem + APP_BAND_AT, t.format, t.width, t.height, 0, t.band) ||
+        r8_tx_init(&tx, &t, mem + APP_SCRATCH_AT, sc, put, 0))
+        return APP_E_CFG;
+    return APP_OK;
+}
+#else
 int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
     app_layout lay;
@@ -142,6 +185,7 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         return APP_E_CFG;
     return APP_OK;
 }
+#endif
 
 int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
