@@ -336,9 +336,6 @@ static int cfg_valid(const r8_render_cfg *cfg)
 {
     const r8_scene *sc = cfg->scene;
     r8_u32 nf = 0;
-#ifdef R8_CFG_NVERTS
-    r8_u32 nv;
-#endif
     r8_u8 i;
 #ifdef R8_CFG_METHOD
     if (cfg->method != R8_CFG_METHOD || cfg->shading != R8_CFG_SHADING ||
@@ -373,6 +370,49 @@ static int cfg_valid(const r8_render_cfg *cfg)
         }
     }
 #endif
+#ifdef R8_CFG_NVERTS
+    /* The demo firmware (its scene's sizes fixed): the same checks in one
+     * walk with 16-bit sums.  A sum never passes its constant (each step
+     * is refused first), so it cannot wrap to it; the face ids' limit
+     * is a constant too. */
+    (void)nf;
+    if (CFG_WIDTH(cfg) < 8 || CFG_WIDTH(cfg) > 1024 || CFG_HEIGHT(cfg) < 8 || CFG_HEIGHT(cfg) > 1024)
+        return 0;
+    if (CFG_BAND(cfg) < 1 || CFG_BAND(cfg) > CFG_HEIGHT(cfg))
+        return 0;
+    if (CFG_FORMAT(cfg) == R8_FMT_PAGE1 && ((CFG_BAND(cfg) & 7) || (CFG_HEIGHT(cfg) & 7)))
+        return 0;
+    if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
+        ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
+        return 0;
+#if R8_CFG_NFACES + R8_CFG_CLIP >= R8_FID_END
+    (void)i;
+    return 0;       /* more face ids than r8_fid holds */
+#else
+    if (sc->nobjects != R8_CFG_NOBJ)
+        return 0;      /* the scene this firmware is built for */
+    {
+        r8_u16 v = 0, f = 0;
+        for (i = 0; i < sc->nobjects; i++) {
+            const r8_mesh *me = sc->objects[i].mesh;
+            if (!me || !me->verts || !me->faces || me->nverts > 255)
+                return 0;
+#ifdef R8_NO_RT_NORMALS
+            if (!me->normals)
+                return 0;     /* this build takes meshes with their normals only */
+#endif
+            if (me->nverts > (r8_u16)R8_CFG_NVERTS - v || me->nfaces > (r8_u16)R8_CFG_NFACES - f)
+                return 0;
+            v = (r8_u16)(v + me->nverts);
+            f = (r8_u16)(f + me->nfaces);
+        }
+        if (v != (r8_u16)R8_CFG_NVERTS || f != (r8_u16)R8_CFG_NFACES)
+            return 0;
+    }
+    return 1;
+#endif
+}
+#else
 #ifdef R8_NO_RT_NORMALS
     for (i = 0; i < sc->nobjects; i++)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
@@ -387,26 +427,17 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
         ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
         return 0;
-#ifdef R8_CFG_NVERTS
-    nv = 0;
-#endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         if (!me || !me->verts || !me->faces || me->nverts > 255)
             return 0;
         nf += me->nfaces;
-#ifdef R8_CFG_NVERTS
-        nv += me->nverts;
-#endif
     }
-#ifdef R8_CFG_NVERTS
-    if (sc->nobjects != R8_CFG_NOBJ || nv != R8_CFG_NVERTS || nf != R8_CFG_NFACES)
-        return 0;      /* the scene this firmware is built for */
-#endif
     if (nf + CFG_CLIP(cfg) >= (r8_u32)R8_FID_END)
         return 0;
     return 1;
 }
+#endif
 
 unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg)
 {
@@ -652,12 +683,15 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 
 #ifdef R8_FIXED_PLAN
 /* The fixed plan's r8_state as tables (cc65 and sdcc spend 10-20 bytes
- * on each store through st; here 2 or 4): its non-zero bytes and words
- * (offset, value) and its arena pointers (offset, FP_* from base).
+ * on each store through st; here 2 or 4): its non-zero bytes (offset,
+ * value; words as two) and its arena pointers (offset, FP_* from base).
  * Every other field is 0, as the general path in r8_render_init sets
  * it (nclip, npoly, dropped, nclipped, pool_used, zx[0], attrs before
  * the methods' bits) or r8_render_frame does before reading it. */
 #define FPO(f) ((r8_u16)offsetof(r8_state, f))
+#define FPWO(o, v) (r8_u8)(o), (r8_u8)((r8_u16)(v) & 255u), \
+                   (r8_u8)((o) + 1u), (r8_u8)((r8_u16)(v) >> 8)
+#define FPW(f, v) FPWO(FPO(f), v)
 #if R8_CFG_BAND == 1
 #define FP_bsh 0
 #elif R8_CFG_BAND == 2
@@ -684,6 +718,14 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 #define FP_bsh (-1)
 #endif
 R8_CASSERT(fixed_plan_state_small, sizeof(r8_state) <= 256);
+/* n bytes of v from q (the state's clear, the buckets' R8_FID_END) */
+static void fp_fill(r8_u8 *q, r8_u16 n, r8_u8 v)
+{
+    for (; n; n--)
+        *q++ = v;
+}
+#define FP_HEADS_BYTES ((r8_u16)(FP_nheads * sizeof(r8_fid)))
+R8_CASSERT(fixed_plan_fid_end, (r8_fid)R8_FID_END == (r8_fid)~(r8_fid)0);
 static R8_FLASH const r8_u8 fp_b[] = {
     (r8_u8)FPO(vsh), FP_vsh,
     (r8_u8)FPO(fast), FP_fast,
@@ -693,21 +735,20 @@ static R8_FLASH const r8_u8 fp_b[] = {
     (r8_u8)FPO(npool), FP_npool,
     (r8_u8)FPO(nclip), R8_CFG_CLIP,
     (r8_u8)(FPO(zx) + 1u), 255,
-    (r8_u8)FPO(pool_free), R8_NO_SLOT
-};
-static R8_FLASH const r8_u16 fp_w[] = {
-    FPO(width), (r8_u16)R8_CFG_WIDTH,
-    FPO(height), (r8_u16)R8_CFG_HEIGHT,
-    FPO(nverts), FP_nverts,
-    FPO(nfaces), FP_nfaces,
-    FPO(bsh), (r8_u16)FP_bsh,
-    FPO(nbands), FP_nbands,
-    FPO(nheads), (r8_u16)FP_nheads,
-    FPO(sv_cap), FP_sv_cap,
-    FPO(esize), (r8_u16)FP_esize,
-    FPO(first), (r8_u16)R8_FID_END,
-    (r8_u16)(FPO(cam) + offsetof(r8_proj, cx)), (r8_u16)(R8_CFG_WIDTH * 8),
-    (r8_u16)(FPO(cam) + offsetof(r8_proj, cy)), (r8_u16)(R8_CFG_HEIGHT * 8)
+    (r8_u8)FPO(pool_free), R8_NO_SLOT,
+    /* the words, a byte at a time (6502 and Z80: little-endian) */
+    FPW(width, R8_CFG_WIDTH),
+    FPW(height, R8_CFG_HEIGHT),
+    FPW(nverts, FP_nverts),
+    FPW(nfaces, FP_nfaces),
+    FPW(bsh, FP_bsh),
+    FPW(nbands, FP_nbands),
+    FPW(nheads, FP_nheads),
+    FPW(sv_cap, FP_sv_cap),
+    FPW(esize, FP_esize),
+    FPW(first, R8_FID_END),
+    FPWO(FPO(cam) + offsetof(r8_proj, cx), R8_CFG_WIDTH * 8),
+    FPWO(FPO(cam) + offsetof(r8_proj, cy), R8_CFG_HEIGHT * 8)
 };
 static R8_FLASH const r8_u16 fp_p[] = {
     FPO(obj), FP_obj,
@@ -776,18 +817,12 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->state = st;
     sc = cfg->scene;
 #ifdef R8_FIXED_PLAN
-    /* the fields below from fp_b, fp_w, fp_p (zero first): the same
+    /* the fields below from fp_b and fp_p (zero first): the same
      * values as the general path after #else, field by field */
-    {
-        r8_u8 *q = (r8_u8 *)st;
-        for (k = (r8_u16)sizeof *st; k; k--)
-            *q++ = 0;
-    }
+    fp_fill((r8_u8 *)st, (r8_u16)sizeof *st, 0);
     st->scene = sc;
     for (k = 0; k < (r8_u16)sizeof fp_b; k = (r8_u16)(k + 2u))
         ((r8_u8 *)st)[R8_RDU8(&fp_b[k])] = R8_RDU8(&fp_b[k + 1u]);
-    for (k = 0; k < (r8_u16)(sizeof fp_w / sizeof fp_w[0]); k = (r8_u16)(k + 2u))
-        *(r8_u16 *)(void *)((r8_u8 *)st + R8_RDU16(&fp_w[k])) = R8_RDU16(&fp_w[k + 1u]);
     for (k = 0; k < (r8_u16)(sizeof fp_p / sizeof fp_p[0]); k = (r8_u16)(k + 2u))
         *(r8_u8 **)(void *)((r8_u8 *)st + R8_RDU16(&fp_p[k])) = base + R8_RDU16(&fp_p[k + 1u]);
     /* (R8_FAST_ONLY: cull or painter's, so depth_bytes and nsnode 0;
@@ -905,8 +940,12 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
             vertex_normals(st, me, o);
 #endif
     }
+#ifdef R8_FIXED_PLAN
+    fp_fill((r8_u8 *)st->heads, FP_HEADS_BYTES, 0xFF);   /* R8_FID_END: all ones */
+#else
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
+#endif
     return 0;
 }
 
@@ -1382,8 +1421,12 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* with the normal cull, vertices are transformed as front faces need
      * them (a closed mesh shows about half its faces) */
     r8_tf_vertices(st, CFG_CULL(&r->cfg) == R8_CULL_NORMAL);
+#ifdef R8_FIXED_PLAN
+    fp_fill((r8_u8 *)st->heads, FP_HEADS_BYTES, 0xFF);   /* R8_FID_END: all ones */
+#else
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
+#endif
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
 #ifndef R8_NO_BSP
@@ -1417,7 +1460,25 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 #endif
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
-#ifndef R8_NO_POOL
+#if defined(R8_FIXED_PLAN) && !defined(R8_NO_POOL)
+    /* (the fixed plan: FP_npool entries of FP_esize bytes) */
+#if FP_NP1 > 0
+    {
+        r8_u8 *q = st->pool;
+        st->pool_free = 0;
+        for (k = 1; k <= FP_npool; k++, q += FP_esize) {
+            r8_acthead *e = (r8_acthead *)(void *)q;
+            e->used = 0;
+            if (k < FP_npool)
+                e->level = (r8_u8)k;
+            else
+                e->level = R8_NO_SLOT;
+        }
+    }
+#else
+    st->pool_free = R8_NO_SLOT;
+#endif
+#elif !defined(R8_NO_POOL)
     st->pool_free = st->npool ? 0 : R8_NO_SLOT;
     for (k = 0; k < st->npool; k++) {
         r8_acthead *e = (r8_acthead *)(void *)ENTRY(st, k);
