@@ -1256,7 +1256,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         const r8_s16 *vp[R8_SCAN_MAXV];
 #endif
         r8_s16 top, bot, xmin = 32767, xmax = -32767, ymin = 32767, ymax = -32767;
-        r8_s32 zsum = 0;
+#if R8_W_PAINTER || !defined(R8_NO_CLIP)
+        r8_s32 zsum = 0;       /* (painter's keys, the clipper's sums) */
+#endif
         r8_fid id;
         r8_u16 key;
         if (n < 3 || n > R8_MAX_FACE_VERTS)
@@ -1348,8 +1350,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 continue;
             id = (r8_fid)(o->fbase + f);
         }
+#ifndef R8_NO_CLIP             /* (without: a clipped face went on above) */
         if (clip)
             st->nclipped++;
+#endif
 #if R8_FWALK_K
     bucket:
 #endif
@@ -1370,7 +1374,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
             }
         } else
-#else
+#elif !defined(R8_NO_CLIP)
         (void)zsum;
 #endif
         {
