@@ -125,7 +125,8 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
  * frame (gone while frames are drawn: the 2 KB parts need the bytes;
  * external, so -Os does not fold it into app_run). */
 #if defined(R8_FIXED_PLAN) && defined(R8_TXCFG_FORMAT)
-#if R8_TXCFG_FORMAT == R8_FMT_PAGE1
+#if R8_TXCFG_FORMAT == R8_FMT_PAGE1 && R8_TXCFG_FORMAT == R8_CFG_FORMAT && \
+    R8_TXCFG_WIDTH == R8_CFG_WIDTH && R8_TXCFG_HEIGHT == R8_CFG_HEIGHT && R8_TXCFG_BAND == R8_CFG_BAND
 #define APP_FIXED 1
 #endif
 #endif
@@ -134,8 +135,9 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
  * stream fixed by R8_TXCFG_*): app_plan's layout with the renderer's
  * work (FP_total, which r8_render_ram returns for the one configuration
  * it takes) and the band (PAGE1) as constants, so app_plan is not
- * linked and the set-up runs once.  What the build does not prove is
- * still checked here: r8_render_init refuses any other configuration
+ * linked and the set-up runs once; the stream as constants (app_tx), so
+ * tx_cfg_from is not called.  What the build does not prove is still
+ * checked here: cfg's stream fields against app_tx's, r8_render_init refuses any other configuration
  * (-1: APP_E_CFG, before its size: -2, APP_E_RAM), the band buffer's
  * size against r8_fb_bytes, and the stream's scratch (r8_tx_scratch, 0
  * for another stream) against what is left; the arena is as app_plan
@@ -143,26 +145,35 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #define APP_BAND_AT ((unsigned)FP_total)
 #define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
 #define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+/* the stream: what tx_cfg_from makes of cfg, whose codec, full period,
+ * dirty flag and palette size app_start checks against it (its format
+ * and size are the renderer's, which cfg_valid checks against R8_CFG_*,
+ * equal to these: APP_FIXED; no palette with PAGE1) */
+static const r8_tx_cfg app_tx = {
+    R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT, R8_TXCFG_BAND, R8_TXCFG_CODEC,
+    R8_TXCFG_FULL, R8_TXCFG_DIRTY, 0, R8_TXCFG_NPAL
+};
 int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
-    r8_tx_cfg t;
     r8_render_cfg rc;
     unsigned sc, ws = 0;
     int e;
-    if (!app_demo(cfg))
+    if (!app_demo(cfg) || cfg->codec != R8_TXCFG_CODEC || cfg->full_period != R8_TXCFG_FULL ||
+        cfg->dirty != R8_TXCFG_DIRTY || cfg->npal != R8_TXCFG_NPAL)
         return APP_E_CFG;
-    tx_cfg_from(cfg, &t);
     rc = cfg->render;
     rc.scene = &run.scene;
-    sc = r8_tx_scratch(&t);
+    sc = r8_tx_scratch(&app_tx);
     if (mem_size >= APP_SCRATCH_AT && mem_size - APP_SCRATCH_AT >= sc)
         ws = APP_BAND_AT;                /* else r8_render_init: -2 */
     e = r8_render_init(&ren, &rc, mem, ws);
     if (e == -2 && sc)
         return APP_E_RAM;
-    if (e || !sc || r8_fb_bytes(t.format, t.width, t.band) != APP_BAND_BYTES ||
-        r8_fb_init(&band_fb, mem + APP_BAND_AT, t.format, t.width, t.height, 0, t.band) ||
-        r8_tx_init(&tx, &t, mem + APP_SCRATCH_AT, sc, put, 0))
+    if (e || !sc ||
+        r8_fb_bytes(R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_BAND) != APP_BAND_BYTES ||
+        r8_fb_init(&band_fb, mem + APP_BAND_AT, R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT,
+                   0, R8_TXCFG_BAND) ||
+        r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
         return APP_E_CFG;
     return APP_OK;
 }
