@@ -137,11 +137,11 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
  * it takes) and the band (PAGE1) as constants, so app_plan is not
  * linked and the set-up runs once; the stream as constants (app_tx), so
  * tx_cfg_from is not called.  What the build does not prove is still
- * checked here: cfg's stream fields against app_tx's, r8_render_init refuses any other configuration
- * (-1: APP_E_CFG, before its size: -2, APP_E_RAM), the band buffer's
- * size against r8_fb_bytes, and the stream's scratch (r8_tx_scratch, 0
- * for another stream) against what is left; the arena is as app_plan
- * lays it out (work, band, scratch), which app_ram measures. */
+ * checked here: cfg's stream fields against app_tx's; r8_render_init
+ * refuses any other configuration (-1: APP_E_CFG, before its size: -2,
+ * APP_E_RAM); the stream's scratch (r8_tx_scratch, 0 for another
+ * stream) against what is left.  The arena is as app_plan lays it out
+ * (work, band, scratch), which app_ram measures. */
 #define APP_BAND_AT ((unsigned)FP_total)
 #define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
 #define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
@@ -169,8 +169,9 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     e = r8_render_init(&ren, &rc, mem, ws);
     if (e == -2 && sc)
         return APP_E_RAM;
+    /* (the band's bytes: r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1
+     * and a width and rows > 0, which r8_fb_init checks: APP_BAND_BYTES) */
     if (e || !sc ||
-        r8_fb_bytes(R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_BAND) != APP_BAND_BYTES ||
         r8_fb_init(&band_fb, mem + APP_BAND_AT, R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT,
                    0, R8_TXCFG_BAND) ||
         r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
