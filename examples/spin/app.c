@@ -161,6 +161,8 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     if (!app_demo(cfg) || cfg->codec != R8_TXCFG_CODEC || cfg->full_period != R8_TXCFG_FULL ||
         cfg->dirty != R8_TXCFG_DIRTY || cfg->npal != R8_TXCFG_NPAL)
         return APP_E_CFG;
+    if (cfg->on_band || cfg->on_frame)
+        return APP_E_CFG;          /* (host hooks: app_run calls none here) */
     rc = cfg->render;
     rc.scene = &run.scene;
     sc = r8_tx_scratch(&app_tx);
@@ -215,6 +217,16 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_demo_pose(&run, no);            /* the spin: angle = start + turn * frame */
         r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
         r8_tx_frame_begin(&tx, no);
+#ifdef APP_FIXED
+        /* (the band as app_start's r8_fb_init made it; no hooks) */
+        for (y = 0; y < R8_TXCFG_HEIGHT; y = (r8_s16)(y + R8_TXCFG_BAND)) {
+            r8_fb_set_band(&band_fb, y);
+            r8_render_band(&ren, &band_fb);
+            r8_tx_band(&tx, &band_fb);
+        }
+        r8_tx_frame_end(&tx);
+        plat_mark(PLAT_MARK_FRAME_END);
+#else
         for (y = 0; y < band_fb.height; y = (r8_s16)(y + band_fb.rows)) {
             r8_fb_set_band(&band_fb, y);
             r8_render_band(&ren, &band_fb);
@@ -226,6 +238,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         plat_mark(PLAT_MARK_FRAME_END);
         if (cfg->on_frame && cfg->on_frame(cfg->ctx, no))
             break;
+#endif
     }
     plat_mark(PLAT_MARK_DONE);
     return APP_OK;
