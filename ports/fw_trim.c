@@ -92,36 +92,37 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
 static int fw_spin_bad(const app_cfg *c)
 {
     r8_demo_run *run = app_demo(c);
-    const r8_object *o;
-    r8_u8 i, k;
+    r8_u8 i;
     if (!run)
         return 0;                    /* app_run reports the scene */
-    if ((r8_u8)(run->cam.yaw | run->cam.pitch | run->cam.roll | run->cam.flags) ||
+    if (run->cam.yaw || run->cam.pitch || run->cam.roll || run->cam.flags ||
         run->scene.grid)
         return 1;
-    o = run->obj;
-    for (i = run->scene.nobjects; i; i--, o++) {
+    for (i = 0; i < run->scene.nobjects; i++) {
+        const r8_object *o = &run->obj[i];
         const r8_s16 *p = &o->pose.x, *q = &run->cam.x;
-        r8_u16 r = (r8_u16)o->mesh->radius;
+        r8_s16 r = o->mesh->radius;
         r8_u16 b = 0, d;             /* (16 bits: each term <= 2040) */
-        if (r > 2040u)
-            return 1;                /* (a negative radius too) */
-        for (k = 3; k; k--, p++, q++) {
+        r8_u8 k;
+        if (r < 0 || r > 2040)
+            return 1;
+        for (k = 0; k < 3; k++) {
             /* |p - q| (up to 65535: unsigned, no overflow) */
-            d = (r8_u16)((r8_u16)*p - (r8_u16)*q);
-            if (*p < *q)
-                d = (r8_u16)(0u - d);
+            if (p[k] >= q[k])
+                d = (r8_u16)((r8_u16)p[k] - (r8_u16)q[k]);
+            else
+                d = (r8_u16)((r8_u16)q[k] - (r8_u16)p[k]);
             if (d > 2040u)
                 return 1;
             b = (r8_u16)(b + d);
         }
-        if (b + r > 2040u)
+        if (b + (r8_u16)r > 2040u)
             return 1;
 #ifdef R8_CULL16
         /* the eye within 16383/16 units of the model origin (r8_tf_frame's
          * eye16: |R^T d| <= |d|) and every vertex within 1023 units
          * (the radius bounds them): r8k_cull is always in range */
-        if (b > 1000u || r > 1023u)
+        if (b > 1000u || r > 1023)
             return 1;
 #endif
     }

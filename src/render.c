@@ -247,6 +247,11 @@ static int method_built(r8_u8 m)
     (defined(__CC65__) || defined(__SDCC))
 #if R8_CFG_CLIP == 0
 #define R8_FIXED_PLAN 1
+#ifdef __CC65__
+#define R8_FP_TABLES 1   /* r8_render_init's stores as tables (below; on
+                            sdcc, whose stores through st are short, the
+                            tables' loops cost more) */
+#endif
 #endif
 #endif
 
@@ -691,7 +696,7 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 #endif
 
 #ifdef R8_FIXED_PLAN
-/* The fixed plan's r8_state as tables (cc65 and sdcc spend 10-20 bytes
+/* The fixed plan's r8_state as tables (R8_FP_TABLES: cc65 spends 10-20 bytes
  * on each store through st; here 2 or 4): its non-zero bytes (offset,
  * value; words as two) and its arena pointers (offset, FP_* from base).
  * Every other field is 0, as the general path in r8_render_init sets
@@ -735,6 +740,7 @@ static void fp_fill(r8_u8 *q, r8_u16 n, r8_u8 v)
 }
 #define FP_HEADS_BYTES ((r8_u16)(FP_nheads * sizeof(r8_fid)))
 R8_CASSERT(fixed_plan_fid_end, (r8_fid)R8_FID_END == (r8_fid)~(r8_fid)0);
+#ifdef R8_FP_TABLES
 static R8_FLASH const r8_u8 fp_b[] = {
     (r8_u8)FPO(vsh), FP_vsh,
     (r8_u8)FPO(fast), FP_fast,
@@ -779,6 +785,7 @@ static R8_FLASH const r8_u16 fp_p[] = {
     FPO(snode), FP_snode,
     FPO(shead), FP_shead
 };
+#endif
 #endif
 
 int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
@@ -825,7 +832,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->work_size = work_size;
     r->state = st;
     sc = cfg->scene;
-#ifdef R8_FIXED_PLAN
+#ifdef R8_FP_TABLES
     /* the fields below from fp_b and fp_p (zero first): the same
      * values as the general path after #else, field by field */
     fp_fill((r8_u8 *)st, (r8_u16)sizeof *st, 0);
