@@ -1441,7 +1441,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* with the normal cull, vertices are transformed as front faces need
      * them (a closed mesh shows about half its faces) */
     r8_tf_vertices(st, CFG_CULL(&r->cfg) == R8_CULL_NORMAL);
-#ifdef R8_FIXED_PLAN
+#if defined(R8_FIXED_PLAN) && defined(R8_NO_BSP)   /* (BSP: r8_bsp_init's plan) */
     fp_fill((r8_u8 *)st->heads, FP_HEADS_BYTES, 0xFF);   /* R8_FID_END: all ones */
 #else
     for (k = 0; k < st->nheads; k++)
@@ -1480,7 +1480,7 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 #endif
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
-#if defined(R8_FIXED_PLAN) && !defined(R8_NO_POOL)
+#if defined(R8_FIXED_PLAN) && defined(R8_NO_BSP) && !defined(R8_NO_POOL)
     /* (the fixed plan: FP_npool entries of FP_esize bytes) */
 #if FP_NP1 > 0
     {

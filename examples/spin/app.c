@@ -124,7 +124,8 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 /* Everything app_run needs before the first frame, in its own stack
  * frame (gone while frames are drawn: the 2 KB parts need the bytes;
  * external, so -Os does not fold it into app_run). */
-#if defined(R8_FIXED_PLAN) && defined(R8_TXCFG_FORMAT)
+#if defined(R8_FIXED_PLAN) && defined(R8_TXCFG_FORMAT) && defined(R8_NO_BSP)
+/* (not the BSP firmware: its renderer's work is r8_bsp_ram's) */
 #if R8_TXCFG_FORMAT == R8_FMT_PAGE1 && R8_TXCFG_FORMAT == R8_CFG_FORMAT && \
     R8_TXCFG_WIDTH == R8_CFG_WIDTH && R8_TXCFG_HEIGHT == R8_CFG_HEIGHT && R8_TXCFG_BAND == R8_CFG_BAND
 #define APP_FIXED 1
