@@ -104,6 +104,7 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     r8_s32 zn = 0x7FFFFFFFL, zf = 1;
     r8_u8 i, nobj;
     const r8_demo_obj *objs;
+    r8_object *ob;
     if (!d)
         return -1;
     nobj = R8_RDU8(&d->nobjects);
@@ -111,16 +112,18 @@ int r8_demo_setup(r8_demo_run *run, const r8_demo *d, r8_s16 width)
     if (nobj > R8_DEMO_MAXOBJ)
         return -1;
     run->demo = d;
-    for (i = 0; i < nobj; i++) {
-        const r8_demo_obj *o = &objs[i];
-        const r8_mesh *me = (const r8_mesh *)R8_RDPTR(&o->mesh);
-        r8_s16 z = R8_RDS16(&o->z);
-        r8_s32 a = (r8_s32)z - me->radius, b = (r8_s32)z + me->radius;
-        run->obj[i].mesh = me;
-        r8_pose_identity(&run->obj[i].pose);
-        run->obj[i].pose.x = R8_RDS16(&o->x);
-        run->obj[i].pose.y = R8_RDS16(&o->y);
-        run->obj[i].pose.z = z;
+    ob = run->obj;
+    for (i = nobj; i; i--, objs++, ob++) {
+        const r8_mesh *me = (const r8_mesh *)R8_RDPTR(&objs->mesh);
+        r8_s16 z = R8_RDS16(&objs->z);
+        r8_s32 a = z, b = z;
+        a -= me->radius;
+        b += me->radius;
+        ob->mesh = me;
+        r8_pose_identity(&ob->pose);
+        ob->pose.x = R8_RDS16(&objs->x);
+        ob->pose.y = R8_RDS16(&objs->y);
+        ob->pose.z = z;
         if (a < zn) zn = a;
         if (b > zf) zf = b;
     }

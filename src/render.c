@@ -172,10 +172,19 @@ int r8_method_by_name(const char *name)
 
 void r8_camera_defaults(r8_camera *c, r8_s16 width)
 {
+#if defined(__CC65__) || defined(__SDCC)
+    /* (cc65 and sdcc: a store through c costs ~15 bytes on the 6502;
+     * their null pointer is all bits zero, so clearing the bytes sets
+     * position, angles, flags and m as below) */
+    r8_u8 *q = (r8_u8 *)c, n;
+    for (n = (r8_u8)sizeof *c; n; n--)
+        *q++ = 0;
+#else
     c->x = c->y = c->z = 0;
     c->yaw = c->pitch = c->roll = 0;
     c->flags = 0;
     c->m = 0;
+#endif
     c->focal = width;
     c->znear = 16;
     c->zfar = 4096;
@@ -238,6 +247,11 @@ static int method_built(r8_u8 m)
     (defined(__CC65__) || defined(__SDCC))
 #if R8_CFG_CLIP == 0
 #define R8_FIXED_PLAN 1
+#ifdef __CC65__
+#define R8_FP_TABLES 1   /* r8_render_init's stores as tables (below; on
+                            sdcc, whose stores through st are short, the
+                            tables' loops cost more) */
+#endif
 #endif
 #endif
 
@@ -336,9 +350,6 @@ static int cfg_valid(const r8_render_cfg *cfg)
 {
     const r8_scene *sc = cfg->scene;
     r8_u32 nf = 0;
-#ifdef R8_CFG_NVERTS
-    r8_u32 nv;
-#endif
     r8_u8 i;
 #ifdef R8_CFG_METHOD
     if (cfg->method != R8_CFG_METHOD || cfg->shading != R8_CFG_SHADING ||
@@ -373,6 +384,49 @@ static int cfg_valid(const r8_render_cfg *cfg)
         }
     }
 #endif
+#ifdef R8_CFG_NVERTS
+    /* The demo firmware (its scene's sizes fixed): the same checks in one
+     * walk with 16-bit sums.  A sum never passes its constant (each step
+     * is refused first), so it cannot wrap to it; the face ids' limit
+     * is a constant too. */
+    (void)nf;
+    if (CFG_WIDTH(cfg) < 8 || CFG_WIDTH(cfg) > 1024 || CFG_HEIGHT(cfg) < 8 || CFG_HEIGHT(cfg) > 1024)
+        return 0;
+    if (CFG_BAND(cfg) < 1 || CFG_BAND(cfg) > CFG_HEIGHT(cfg))
+        return 0;
+    if (CFG_FORMAT(cfg) == R8_FMT_PAGE1 && ((CFG_BAND(cfg) & 7) || (CFG_HEIGHT(cfg) & 7)))
+        return 0;
+    if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
+        ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
+        return 0;
+#if R8_CFG_NFACES + R8_CFG_CLIP >= R8_FID_END
+    (void)i;
+    return 0;       /* more face ids than r8_fid holds */
+#else
+    if (sc->nobjects != R8_CFG_NOBJ)
+        return 0;      /* the scene this firmware is built for */
+    {
+        r8_u16 v = 0, f = 0;
+        for (i = 0; i < sc->nobjects; i++) {
+            const r8_mesh *me = sc->objects[i].mesh;
+            if (!me || !me->verts || !me->faces || me->nverts > 255)
+                return 0;
+#ifdef R8_NO_RT_NORMALS
+            if (!me->normals)
+                return 0;     /* this build takes meshes with their normals only */
+#endif
+            if (me->nverts > (r8_u16)R8_CFG_NVERTS - v || me->nfaces > (r8_u16)R8_CFG_NFACES - f)
+                return 0;
+            v = (r8_u16)(v + me->nverts);
+            f = (r8_u16)(f + me->nfaces);
+        }
+        if (v != (r8_u16)R8_CFG_NVERTS || f != (r8_u16)R8_CFG_NFACES)
+            return 0;
+    }
+    return 1;
+#endif
+}
+#else
 #ifdef R8_NO_RT_NORMALS
     for (i = 0; i < sc->nobjects; i++)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
@@ -387,26 +441,17 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
         ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
         return 0;
-#ifdef R8_CFG_NVERTS
-    nv = 0;
-#endif
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         if (!me || !me->verts || !me->faces || me->nverts > 255)
             return 0;
         nf += me->nfaces;
-#ifdef R8_CFG_NVERTS
-        nv += me->nverts;
-#endif
     }
-#ifdef R8_CFG_NVERTS
-    if (sc->nobjects != R8_CFG_NOBJ || nv != R8_CFG_NVERTS || nf != R8_CFG_NFACES)
-        return 0;      /* the scene this firmware is built for */
-#endif
     if (nf + CFG_CLIP(cfg) >= (r8_u32)R8_FID_END)
         return 0;
     return 1;
 }
+#endif
 
 unsigned r8_vis_depth_bytes(const r8_render_cfg *cfg)
 {
@@ -650,6 +695,99 @@ static void vertex_normals(r8_state *st, const r8_mesh *me, const r8_objx *o)
 
 #endif
 
+#ifdef R8_FIXED_PLAN
+/* The fixed plan's r8_state as tables (R8_FP_TABLES: cc65 spends 10-20 bytes
+ * on each store through st; here 2 or 4): its non-zero bytes (offset,
+ * value; words as two) and its arena pointers (offset, FP_* from base).
+ * Every other field is 0, as the general path in r8_render_init sets
+ * it (nclip, npoly, dropped, nclipped, pool_used, zx[0], attrs before
+ * the methods' bits) or r8_render_frame does before reading it. */
+#define FPO(f) ((r8_u16)offsetof(r8_state, f))
+#define FPWO(o, v) (r8_u8)(o), (r8_u8)((r8_u16)(v) & 255u), \
+                   (r8_u8)((o) + 1u), (r8_u8)((r8_u16)(v) >> 8)
+#define FPW(f, v) FPWO(FPO(f), v)
+#if R8_CFG_BAND == 1
+#define FP_bsh 0
+#elif R8_CFG_BAND == 2
+#define FP_bsh 1
+#elif R8_CFG_BAND == 4
+#define FP_bsh 2
+#elif R8_CFG_BAND == 8
+#define FP_bsh 3
+#elif R8_CFG_BAND == 16
+#define FP_bsh 4
+#elif R8_CFG_BAND == 32
+#define FP_bsh 5
+#elif R8_CFG_BAND == 64
+#define FP_bsh 6
+#elif R8_CFG_BAND == 128
+#define FP_bsh 7
+#elif R8_CFG_BAND == 256
+#define FP_bsh 8
+#elif R8_CFG_BAND == 512
+#define FP_bsh 9
+#elif R8_CFG_BAND == 1024
+#define FP_bsh 10
+#else
+#define FP_bsh (-1)
+#endif
+R8_CASSERT(fixed_plan_state_small, sizeof(r8_state) <= 256);
+/* n bytes of v from q (the state's clear, the buckets' R8_FID_END) */
+static void fp_fill(r8_u8 *q, r8_u16 n, r8_u8 v)
+{
+    for (; n; n--)
+        *q++ = v;
+}
+#define FP_HEADS_BYTES ((r8_u16)(FP_nheads * sizeof(r8_fid)))
+R8_CASSERT(fixed_plan_fid_end, (r8_fid)R8_FID_END == (r8_fid)~(r8_fid)0);
+#ifdef R8_FP_TABLES
+static R8_FLASH const r8_u8 fp_b[] = {
+    (r8_u8)FPO(vsh), FP_vsh,
+    (r8_u8)FPO(fast), FP_fast,
+    (r8_u8)FPO(judd), (r8_u8)(R8_CFG_CULL == R8_CULL_JUDD),
+    (r8_u8)FPO(method), R8_CFG_METHOD,
+    (r8_u8)FPO(shading), R8_CFG_SHADING,
+    (r8_u8)FPO(npool), FP_npool,
+    (r8_u8)FPO(nclip), R8_CFG_CLIP,
+    (r8_u8)(FPO(zx) + 1u), 255,
+    (r8_u8)FPO(pool_free), R8_NO_SLOT,
+    /* the words, a byte at a time (6502 and Z80: little-endian) */
+    FPW(width, R8_CFG_WIDTH),
+    FPW(height, R8_CFG_HEIGHT),
+    FPW(nverts, FP_nverts),
+    FPW(nfaces, FP_nfaces),
+    FPW(bsh, FP_bsh),
+    FPW(nbands, FP_nbands),
+    FPW(nheads, FP_nheads),
+    FPW(sv_cap, FP_sv_cap),
+    FPW(esize, FP_esize),
+    FPW(first, R8_FID_END),
+    FPWO(FPO(cam) + offsetof(r8_proj, cx), R8_CFG_WIDTH * 8),
+    FPWO(FPO(cam) + offsetof(r8_proj, cy), R8_CFG_HEIGHT * 8)
+};
+static R8_FLASH const r8_u16 fp_p[] = {
+    FPO(obj), FP_obj,
+    FPO(sv), FP_sv,
+    FPO(vnorm), FP_vnorm,
+    FPO(next), FP_next,
+#if FP_NP1 > 0
+    FPO(slot), FP_slot,               /* (npool: 0 when FP_NP1 is) */
+#if FP_PAINTER
+    FPO(ftop), FP_ftop,
+#endif
+#endif
+    FPO(cpoly), FP_cpoly,
+    FPO(heads), FP_heads,
+    FPO(clipbuf), FP_clipbuf,
+    FPO(tmp), FP_tmp,
+    FPO(pool), FP_pool,
+    FPO(depth), FP_depth,
+    FPO(snode), FP_snode,
+    FPO(shead), FP_shead
+};
+#endif
+#endif
+
 int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
                    unsigned work_size)
 {
@@ -694,6 +832,26 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     r->work_size = work_size;
     r->state = st;
     sc = cfg->scene;
+#ifdef R8_FP_TABLES
+    /* the fields below from fp_b and fp_p (zero first): the same
+     * values as the general path after #else, field by field */
+    fp_fill((r8_u8 *)st, (r8_u16)sizeof *st, 0);
+    st->scene = sc;
+    for (k = 0; k < (r8_u16)sizeof fp_b; k = (r8_u16)(k + 2u))
+        ((r8_u8 *)st)[R8_RDU8(&fp_b[k])] = R8_RDU8(&fp_b[k + 1u]);
+    for (k = 0; k < (r8_u16)(sizeof fp_p / sizeof fp_p[0]); k = (r8_u16)(k + 2u))
+        *(r8_u8 **)(void *)((r8_u8 *)st + R8_RDU16(&fp_p[k])) = base + R8_RDU16(&fp_p[k + 1u]);
+    /* (R8_FAST_ONLY: cull or painter's, so depth_bytes and nsnode 0;
+     * the attributes as below) */
+#if R8_W_DEPTH
+    if (CFG_METHOD(cfg) >= R8_VIS_Z8)
+        st->attrs |= R8_ATTR_D;
+#endif
+#if R8_W_GOURAUD
+    if (CFG_SHADING(cfg) == R8_SHADE_GOURAUD)
+        st->attrs |= R8_ATTR_S;
+#endif
+#else
     st->scene = sc;
     st->width = CFG_WIDTH(cfg);
     st->height = CFG_HEIGHT(cfg);
@@ -760,6 +918,7 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
     st->pool_free = R8_NO_SLOT;
     st->cam.cx = (r8_s16)(CFG_WIDTH(cfg) * 8);
     st->cam.cy = (r8_s16)(CFG_HEIGHT(cfg) * 8);
+#endif
 #ifndef R8_NO_RT_NORMALS
     norms = (r8_s16 *)(void *)(base + PLV(norms));
 #endif
@@ -797,8 +956,12 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
             vertex_normals(st, me, o);
 #endif
     }
+#ifdef R8_FIXED_PLAN
+    fp_fill((r8_u8 *)st->heads, FP_HEADS_BYTES, 0xFF);   /* R8_FID_END: all ones */
+#else
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
+#endif
     return 0;
 }
 
@@ -1109,7 +1272,9 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
         const r8_s16 *vp[R8_SCAN_MAXV];
 #endif
         r8_s16 top, bot, xmin = 32767, xmax = -32767, ymin = 32767, ymax = -32767;
-        r8_s32 zsum = 0;
+#if R8_W_PAINTER || !defined(R8_NO_CLIP)
+        r8_s32 zsum = 0;       /* (painter's keys, the clipper's sums) */
+#endif
         r8_fid id;
         r8_u16 key;
         if (n < 3 || n > R8_MAX_FACE_VERTS)
@@ -1201,8 +1366,10 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 continue;
             id = (r8_fid)(o->fbase + f);
         }
+#ifndef R8_NO_CLIP             /* (without: a clipped face went on above) */
         if (clip)
             st->nclipped++;
+#endif
 #if R8_FWALK_K
     bucket:
 #endif
@@ -1223,7 +1390,7 @@ void r8_bucket_object(r8_render *r, r8_u8 i)
                 st->ftop[id] = (r8_u8)(b > 255 ? 255 : b);
             }
         } else
-#else
+#elif !defined(R8_NO_CLIP)
         (void)zsum;
 #endif
         {
@@ -1274,8 +1441,12 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     /* with the normal cull, vertices are transformed as front faces need
      * them (a closed mesh shows about half its faces) */
     r8_tf_vertices(st, CFG_CULL(&r->cfg) == R8_CULL_NORMAL);
+#if defined(R8_FIXED_PLAN) && defined(R8_NO_BSP)   /* (BSP: r8_bsp_init's plan) */
+    fp_fill((r8_u8 *)st->heads, FP_HEADS_BYTES, 0xFF);   /* R8_FID_END: all ones */
+#else
     for (k = 0; k < st->nheads; k++)
         st->heads[k] = (r8_fid)R8_FID_END;
+#endif
     /* faces last to first, each put at the front of its bucket: every
      * bucket then lists its faces in scene order */
 #ifndef R8_NO_BSP
@@ -1309,7 +1480,25 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
 #endif
     /* the pool shares memory with the buckets and the clipper: all free,
      * in one list */
-#ifndef R8_NO_POOL
+#if defined(R8_FIXED_PLAN) && defined(R8_NO_BSP) && !defined(R8_NO_POOL)
+    /* (the fixed plan: FP_npool entries of FP_esize bytes) */
+#if FP_NP1 > 0
+    {
+        r8_u8 *q = st->pool;
+        st->pool_free = 0;
+        for (k = 1; k <= FP_npool; k++, q += FP_esize) {
+            r8_acthead *e = (r8_acthead *)(void *)q;
+            e->used = 0;
+            if (k < FP_npool)
+                e->level = (r8_u8)k;
+            else
+                e->level = R8_NO_SLOT;
+        }
+    }
+#else
+    st->pool_free = R8_NO_SLOT;
+#endif
+#elif !defined(R8_NO_POOL)
     st->pool_free = st->npool ? 0 : R8_NO_SLOT;
     for (k = 0; k < st->npool; k++) {
         r8_acthead *e = (r8_acthead *)(void *)ENTRY(st, k);

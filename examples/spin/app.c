@@ -124,6 +124,64 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 /* Everything app_run needs before the first frame, in its own stack
  * frame (gone while frames are drawn: the 2 KB parts need the bytes;
  * external, so -Os does not fold it into app_run). */
+#if defined(R8_FIXED_PLAN) && defined(R8_TXCFG_FORMAT) && defined(R8_NO_BSP)
+/* (not the BSP firmware: its renderer's work is r8_bsp_ram's) */
+#if R8_TXCFG_FORMAT == R8_FMT_PAGE1 && R8_TXCFG_FORMAT == R8_CFG_FORMAT && \
+    R8_TXCFG_WIDTH == R8_CFG_WIDTH && R8_TXCFG_HEIGHT == R8_CFG_HEIGHT && R8_TXCFG_BAND == R8_CFG_BAND
+#define APP_FIXED 1
+#endif
+#endif
+#ifdef APP_FIXED
+/* The demo firmware on cc65 and sdcc (src/render.c R8_FIXED_PLAN, the
+ * stream fixed by R8_TXCFG_*): app_plan's layout with the renderer's
+ * work (FP_total, which r8_render_ram returns for the one configuration
+ * it takes) and the band (PAGE1) as constants, so app_plan is not
+ * linked and the set-up runs once; the stream as constants (app_tx), so
+ * tx_cfg_from is not called.  What the build does not prove is still
+ * checked here: cfg's stream fields against app_tx's; r8_render_init
+ * refuses any other configuration (-1: APP_E_CFG, before its size: -2,
+ * APP_E_RAM); the stream's scratch (r8_tx_scratch, 0 for another
+ * stream) against what is left.  The arena is as app_plan lays it out
+ * (work, band, scratch), which app_ram measures. */
+#define APP_BAND_AT ((unsigned)FP_total)
+#define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
+#define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+/* the stream: what tx_cfg_from makes of cfg, whose codec, full period,
+ * dirty flag and palette size app_start checks against it (its format
+ * and size are the renderer's, which cfg_valid checks against R8_CFG_*,
+ * equal to these: APP_FIXED; no palette with PAGE1) */
+static const r8_tx_cfg app_tx = {
+    R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT, R8_TXCFG_BAND, R8_TXCFG_CODEC,
+    R8_TXCFG_FULL, R8_TXCFG_DIRTY, 0, R8_TXCFG_NPAL
+};
+int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
+{
+    r8_render_cfg rc;
+    unsigned sc, ws = 0;
+    int e;
+    if (!app_demo(cfg) || cfg->codec != R8_TXCFG_CODEC || cfg->full_period != R8_TXCFG_FULL ||
+        cfg->dirty != R8_TXCFG_DIRTY || cfg->npal != R8_TXCFG_NPAL)
+        return APP_E_CFG;
+    if (cfg->on_band || cfg->on_frame)
+        return APP_E_CFG;          /* (host hooks: app_run calls none here) */
+    rc = cfg->render;
+    rc.scene = &run.scene;
+    sc = r8_tx_scratch(&app_tx);
+    if (mem_size >= APP_SCRATCH_AT && mem_size - APP_SCRATCH_AT >= sc)
+        ws = APP_BAND_AT;                /* else r8_render_init: -2 */
+    e = r8_render_init(&ren, &rc, mem, ws);
+    if (e == -2 && sc)
+        return APP_E_RAM;
+    /* (the band's bytes: r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1
+     * and a width and rows > 0, which r8_fb_init checks: APP_BAND_BYTES) */
+    if (e || !sc ||
+        r8_fb_init(&band_fb, mem + APP_BAND_AT, R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT,
+                   0, R8_TXCFG_BAND) ||
+        r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
+        return APP_E_CFG;
+    return APP_OK;
+}
+#else
 int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
     app_layout lay;
@@ -142,6 +200,7 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         return APP_E_CFG;
     return APP_OK;
 }
+#endif
 
 int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
 {
@@ -159,6 +218,16 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_demo_pose(&run, no);            /* the spin: angle = start + turn * frame */
         r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
         r8_tx_frame_begin(&tx, no);
+#ifdef APP_FIXED
+        /* (the band as app_start's r8_fb_init made it; no hooks) */
+        for (y = 0; y < R8_TXCFG_HEIGHT; y = (r8_s16)(y + R8_TXCFG_BAND)) {
+            r8_fb_set_band(&band_fb, y);
+            r8_render_band(&ren, &band_fb);
+            r8_tx_band(&tx, &band_fb);
+        }
+        r8_tx_frame_end(&tx);
+        plat_mark(PLAT_MARK_FRAME_END);
+#else
         for (y = 0; y < band_fb.height; y = (r8_s16)(y + band_fb.rows)) {
             r8_fb_set_band(&band_fb, y);
             r8_render_band(&ren, &band_fb);
@@ -170,6 +239,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         plat_mark(PLAT_MARK_FRAME_END);
         if (cfg->on_frame && cfg->on_frame(cfg->ctx, no))
             break;
+#endif
     }
     plat_mark(PLAT_MARK_DONE);
     return APP_OK;

@@ -34,10 +34,9 @@
 #endif
 #endif
 
-static app_cfg cfg;
-
 /* A world of sectors (the rooms) needs the clipper: the floor and
  * ceiling round the camera cross the near plane. */
+#if defined(FW_HOST) || !(defined(FW_RENDER) && defined(R8_NO_PORTAL))
 static void world_clip(app_cfg *c)
 {
 #ifndef R8_NO_PORTAL
@@ -48,10 +47,12 @@ static void world_clip(app_cfg *c)
     (void)c;
 #endif
 }
+#endif
 
 #ifdef FW_HOST
 #include <stdlib.h>
 static r8_u8 mem[1L << 20];
+static app_cfg cfg;
 
 int main(int argc, char **argv)
 {
@@ -122,9 +123,54 @@ int main(int argc, char **argv)
 #endif
 static r8_u8 mem[FW_RAM];
 
+#ifdef R8_CFG_METHOD
+/* A mesh scene's firmware (its configuration fixed above): cfg as
+ * app_defaults() leaves it with main's changes below, as data, so
+ * neither app_defaults nor r8_render_defaults is linked; world_clip
+ * is not needed (R8_NO_PORTAL: no world).
+ * What the build does not prove stays checked at run time: the
+ * renderer's cfg_valid takes R8_CFG_* only and the stream's cfg_ok
+ * R8_TXCFG_* only (APP_E_CFG otherwise), so a field set wrong here
+ * stops the firmware, never draws wrong. */
+#ifdef FW_POOL
+#define FW_CFG_POOL FW_POOL
+#else
+#define FW_CFG_POOL R8_POOL_AUTO
+#endif
+#ifdef FW_WIRE
+#define FW_CFG_WIRE FW_WIRE
+#else
+#define FW_CFG_WIRE 0
+#endif
+#ifdef FW_TEXFILTER
+#define FW_CFG_TEXF FW_TEXFILTER
+#else
+#define FW_CFG_TEXF R8_TEXF_NEAREST
+#endif
+#ifdef FW_PERSP
+#define FW_CFG_PERSP FW_PERSP
+#else
+#define FW_CFG_PERSP 0
+#endif
+static app_cfg cfg = {
+    FW_SCENE, 0,
+    /* render: scene (app_run's), method, shading, cull, format, width,
+     * height, band, clip (none: fw_trim.c), pool, wire, texfilter,
+     * persp */
+    { 0, FW_METHOD, FW_SHADING, R8_CULL_NORMAL, R8_FMT_PAGE1, 128, 64, 8, 0,
+      FW_CFG_POOL, FW_CFG_WIRE, FW_CFG_TEXF, FW_CFG_PERSP },
+    /* frames, first frame, codec, full period, dirty, palette, npal,
+     * on_band, on_frame, ctx */
+    FW_FRAMES, 0, R8_CODEC_RLE, 32, 1, 0, 0, 0, 0, 0
+};
+#else
+static app_cfg cfg;
+#endif
+
 int main(void)
 {
     plat_init();
+#ifndef R8_CFG_METHOD
     app_defaults(&cfg);
     cfg.render.clip = 0;   /* built without the clipper (fw_trim.c) */
 #ifdef FW_POOL
@@ -144,6 +190,7 @@ int main(void)
     cfg.render.wire = FW_WIRE;
 #endif
     world_clip(&cfg);
+#endif
 #ifdef FW_SPIN
     if (fw_spin_bad(&cfg))
         plat_exit(APP_E_CFG);    /* built for a fixed camera, 16-bit points */
