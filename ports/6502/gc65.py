@@ -157,7 +157,7 @@ def main(argv):
         for e in s.exports:
             exported.setdefault(e, s)
         if s.opaque:
-            for r in s.refs:
+            for r in sorted(s.refs):   # (sorted: the link order, hence the image, must not depend on hashing)
                 work.append((s, r))
 
     def resolve(s, name):
@@ -184,7 +184,7 @@ def main(argv):
         if b is None or b.marked:
             continue
         b.marked = True
-        for r in b.refs:
+        for r in sorted(b.refs):
             work.append((t, r))
     os.makedirs(outdir, exist_ok=True)
     total = kept = 0

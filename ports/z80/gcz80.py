@@ -191,7 +191,7 @@ def reach(progs, members, why=None):
         order.append(m)
         for e in m.exports:
             owner.setdefault(e, m)
-        pending.extend((m, r, m.path) for r in m.roots)
+        pending.extend((m, r, m.path) for r in sorted(m.roots))
 
     for m in progs:
         use(m)
@@ -215,7 +215,7 @@ def reach(progs, members, why=None):
         b.live = True
         if why is not None:
             why[n] = by
-        pending.extend((t, r, n) for r in b.refs)
+        pending.extend((t, r, n) for r in sorted(b.refs))
     return order
 
 
