@@ -98,6 +98,8 @@ gg:     .ds     1               ; the group's rows (2..8)
 gA:     .ds     1               ; max ga, or 255: no common columns
 gB:     .ds     1               ; min gb, or 255
 gC:     .ds     1               ; the rows to the page's end
+gM:     .ds     1               ; m after the group (0: the next page)
+gslow:  .ds     1               ; nonzero: a DDA of the group went slow
 pr12:   .ds     2               ; this call's slot's r12 and q16
 pq16:   .ds     2
         ;; the pattern cache, rebuilt when t->pat differs from its
@@ -117,6 +119,8 @@ cache:  .ds     32 * NSLOT
         .endm
 
         .area   _CODE
+
+p2:     .db     1, 2, 4, 8, 16, 32, 64, 128, 0  ; 1 << i (0: past bit 7)
 
 _r8k_trap:
         ld      (ts_pt), hl
@@ -543,6 +547,9 @@ d2:     ld      a, (hl)
         ;; page move on g rows.
 grp:    ld      (gg), a
         ld      b, a
+        xor     a, a
+        ld      (gslow), a
+        ld      a, b
         ld      ix, #ga
         ld      iy, (ts_pl)
         call    dda
@@ -551,7 +558,40 @@ grp:    ld      (gg), a
         ld      ix, #gb
         ld      iy, (ts_pr)
         call    dda
-        ld      a, (gg)         ; gA = max ga
+        ld      a, (gC)         ; m after the group: p2[s + g], s =
+        ld      b, a            ; 8 - gC (m = 1 << s; 0 past the
+        ld      a, (gg)         ; page's last row)
+        add     a, #8
+        sub     a, b
+        ld      e, a
+        ld      d, #0
+        ld      hl, #p2
+        add     hl, de
+        ld      a, (hl)
+        ld      (gM), a
+        ld      a, (gslow)      ; both DDAs monotone and unwrapped
+        or      a, a            ; (dda's fast path): their clamped
+        jr      nz, 8$          ; columns too, so the max of ga and
+        ld      a, (gg)         ; the min of gb are at the first or
+        dec     a               ; the last row
+        ld      e, a
+        ld      d, #0
+        ld      hl, #ga
+        ld      a, (hl)
+        add     hl, de
+        cp      a, (hl)
+        jr      nc, 9$
+        ld      a, (hl)
+9$:     ld      (gA), a
+        ld      hl, #gb
+        ld      a, (hl)
+        add     hl, de
+        cp      a, (hl)
+        jr      c, 10$
+        ld      a, (hl)
+10$:    ld      (gB), a
+        jr      11$
+8$:     ld      a, (gg)         ; gA = max ga
         ld      b, a
         ld      hl, #ga
         xor     a, a
@@ -571,7 +611,7 @@ grp:    ld      (gg), a
 4$:     inc     hl
         djnz    3$
         ld      (gB), a
-        ld      hl, #gA
+11$:    ld      hl, #gA
         cp      a, (hl)         ; gB - gA
         jr      c, 5$
         jr      nz, 6$
@@ -584,11 +624,7 @@ grp:    ld      (gg), a
         ;; (E, IXH, IXL, D: phases 0..3, as dspan takes them)
         ld      a, (ts_m)
         ld      c, a
-        ld      a, (gg)
-        ld      b, a
-        ld      a, c
-7$:     add     a, a
-        djnz    7$
+        ld      a, (gM)
         sub     a, c
         ld      c, a            ; C = G
         cpl
@@ -687,9 +723,7 @@ gend:   ld      a, (gg)         ; k, m and the page: g rows on
         add     a, b
         and     a, #3
         ld      (ts_k), a
-        ld      a, (ts_m)
-6$:     add     a, a
-        djnz    6$
+        ld      a, (gM)
         or      a, a
         jr      nz, 7$
         ld      hl, (ts_page)   ; the page's last row done: the next page
@@ -782,10 +816,80 @@ ragf:   ld      e, a
 ;; dda: B = g >= 1 rows of the column DDA copy at IY (val +0, q +2, err
 ;; +4, r +6, den +8): each row's clamp(val, 0, w) to (IX++), then the
 ;; step (as `step`).  Uses the alternate registers for err, r, den.
+;; Fast path (round 11): with den < 0x8000 (so err + r < 2 den never
+;; wraps 16 bits; err, r < den as R8_INTERP_STEP keeps them) and the
+;; first row's val in [0, w], the rows go unclamped with err biased by
+;; -den (err - den + r carries exactly when err + r >= den: no compare);
+;; with q in [-256, 255] val does not wrap and the DDA is monotone, so when val after the g rows is in [0, w] too,
+;; every row's was and none needed the clamp.  Else the slow loop redoes
+;; the rows from *IY (not written until the end).  ~80 T a row (was
+;; ~146).
 dda:    ld      a, (ts_w)
         ld      c, a            ; C = w (<= 255)
         ld      l, 0 (iy)
         ld      h, 1 (iy)       ; HL = val
+        ld      a, h            ; the first row in [0, w]?
+        or      a, a
+        jr      nz, ddas
+        ld      a, c
+        cp      a, l
+        jr      c, ddas
+        ld      a, 9 (iy)
+        add     a, a
+        jr      c, ddas         ; den >= 0x8000: err + r may wrap
+        ld      a, 3 (iy)       ; q in [-256, 255] (no val wraps 16
+        inc     a               ; bits on g <= 8 rows)
+        cp      a, #2
+        jr      nc, ddas
+        push    bc              ; B = g, C = w
+        push    ix
+        ld      e, 2 (iy)
+        ld      d, 3 (iy)       ; DE = q
+        exx
+        ld      l, 4 (iy)
+        ld      h, 5 (iy)       ; HL' = err - den
+        ld      c, 8 (iy)
+        ld      b, 9 (iy)
+        or      a, a            ; (carry clear from add a, a)
+        sbc     hl, bc
+        dec     bc              ; BC' = den - 1 (sbc with the carry)
+        ld      e, 6 (iy)
+        ld      d, 7 (iy)       ; DE' = r
+        exx
+1$:     ld      0 (ix), l
+        inc     ix
+        add     hl, de          ; val += q
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      c, 3$
+        exx
+        djnz    1$
+        jr      4$
+3$:     sbc     hl, bc          ; - den (the carry: + 1)
+        exx
+        inc     hl              ; val + 1
+        djnz    1$
+4$:     pop     ix
+        pop     bc
+        ld      a, h            ; val after the rows in [0, w]?
+        or      a, a
+        jr      nz, dda0
+        ld      a, c
+        cp      a, l
+        jr      c, dda0
+        ld      0 (iy), l
+        ld      1 (iy), h
+        exx
+        inc     bc              ; err = biased + den
+        add     hl, bc
+        ld      4 (iy), l
+        ld      5 (iy), h
+        exx
+        ret
+dda0:   ld      l, 0 (iy)       ; no: the slow loop from the start
+        ld      h, 1 (iy)
+ddas:   ld      a, #1
+        ld      (gslow), a
         ld      e, 2 (iy)
         ld      d, 3 (iy)       ; DE = q
         exx
