@@ -549,13 +549,18 @@ grp:    ld      (gg), a
         ld      b, a
         xor     a, a
         ld      (gslow), a
-        ld      a, b
-        ld      ix, #ga
+        ld      a, b            ; IX = ga - 8 + g (dda's rows at
+        add     a, #<(ga - 8)   ; 8 - g .. 7)
+        ld      l, a
+        adc     a, #>(ga - 8)
+        sub     a, l
+        ld      h, a
+        push    hl
+        pop     ix
         ld      iy, (ts_pl)
-        call    dda
-        ld      a, (gg)
-        ld      b, a
-        ld      ix, #gb
+        call    dda             ; (B, IX kept)
+        ld      de, #8          ; gb = ga + 8
+        add     ix, de
         ld      iy, (ts_pr)
         call    dda
         ld      a, (gC)         ; m after the group: p2[s + g], s =
@@ -813,70 +818,129 @@ ragf:   ld      e, a
         djnz    2$
         ret
 
-;; dda: B = g >= 1 rows of the column DDA copy at IY (val +0, q +2, err
-;; +4, r +6, den +8): each row's clamp(val, 0, w) to (IX++), then the
-;; step (as `step`).  Uses the alternate registers for err, r, den.
+;; dda: B = g (1..8) rows of the column DDA at IY (val +0, q +2, err +4,
+;; r +6, den +8): row i's clamp(val, 0, w) to (IX + 8 - g + i), then the
+;; step (as `step`); *IY left after the g rows.  Uses the alternate
+;; registers for err, r, den; B, IX kept.
 ;; Fast path (round 11): with den < 0x8000 (so err + r < 2 den never
-;; wraps 16 bits; err, r < den as R8_INTERP_STEP keeps them) and the
-;; first row's val in [0, w], the rows go unclamped with err biased by
-;; -den (err - den + r carries exactly when err + r >= den: no compare);
-;; with q in [-256, 255] val does not wrap and the DDA is monotone, so when val after the g rows is in [0, w] too,
-;; every row's was and none needed the clamp.  Else the slow loop redoes
-;; the rows from *IY (not written until the end).  ~80 T a row (was
-;; ~146).
-dda:    ld      a, (ts_w)
+;; wraps 16 bits; err, r < den as R8_INTERP_STEP keeps them), q in
+;; [-256, 255] and the first row's val in [0, w], the rows go unclamped
+;; with err biased by -den (err - den + r carries exactly when err + r >=
+;; den; then - den borrows: the carry is the step either way, and `adc`
+;; adds it to val), unrolled (c0..c7, 12 bytes a row: entered at row 8 -
+;; g through the stack).  val does not wrap and the DDA is monotone, so
+;; when val after the g rows is in [0, w] too, every row's was and none
+;; needed the clamp.  Else the slow loop (ddas, gslow set) redoes the
+;; rows from *IY (not written until the end).  65 T a row without the
+;; step, 75 with it (was ~146).
+dda:    ld      a, #8           ; the entry: c0 + 12 (8 - g)
+        sub     a, b
+        add     a, a
+        add     a, a
+        ld      e, a
+        add     a, a
+        add     a, e
+        add     a, #<c0
+        ld      l, a
+        adc     a, #>c0
+        sub     a, l
+        ld      h, a
+        push    hl
+        ld      a, (ts_w)
         ld      c, a            ; C = w (<= 255)
+        ld      d, 3 (iy)       ; q in [-256, 255] (no val wraps 16
+        ld      a, d            ; bits on g <= 8 rows)
+        inc     a
+        cp      a, #2
+        jr      nc, ddax
         ld      l, 0 (iy)
         ld      h, 1 (iy)       ; HL = val
         ld      a, h            ; the first row in [0, w]?
         or      a, a
-        jr      nz, ddas
+        jr      nz, ddax
         ld      a, c
         cp      a, l
-        jr      c, ddas
+        jr      c, ddax
+        ld      e, 2 (iy)       ; DE = q
         ld      a, 9 (iy)
-        add     a, a
-        jr      c, ddas         ; den >= 0x8000: err + r may wrap
-        ld      a, 3 (iy)       ; q in [-256, 255] (no val wraps 16
-        inc     a               ; bits on g <= 8 rows)
-        cp      a, #2
-        jr      nc, ddas
-        push    bc              ; B = g, C = w
-        push    ix
-        ld      e, 2 (iy)
-        ld      d, 3 (iy)       ; DE = q
         exx
-        ld      l, 4 (iy)
-        ld      h, 5 (iy)       ; HL' = err - den
+        ld      b, a
+        add     a, a            ; den >= 0x8000: err + r may wrap
+        jr      c, ddaxx
         ld      c, 8 (iy)
-        ld      b, 9 (iy)
-        or      a, a            ; (carry clear from add a, a)
+        ld      l, 4 (iy)
+        ld      h, 5 (iy)       ; HL' = err - den (carry clear here)
         sbc     hl, bc
         dec     bc              ; BC' = den - 1 (sbc with the carry)
         ld      e, 6 (iy)
         ld      d, 7 (iy)       ; DE' = r
         exx
-1$:     ld      0 (ix), l
-        inc     ix
-        add     hl, de          ; val += q
+        ret                     ; to row 8 - g
+ddaxx:  exx
+ddax:   pop     hl
+        jr      ddas
+c0:     ld      0 (ix), l      ; row 0
         exx
         add     hl, de          ; err - den + r: carry when err + r >= den
-        jr      c, 3$
+        jr      nc, 10$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+10$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      1 (ix), l      ; row 1
         exx
-        djnz    1$
-        jr      4$
-3$:     sbc     hl, bc          ; - den (the carry: + 1)
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 11$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+11$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      2 (ix), l      ; row 2
         exx
-        inc     hl              ; val + 1
-        djnz    1$
-4$:     pop     ix
-        pop     bc
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 12$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+12$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      3 (ix), l      ; row 3
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 13$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+13$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      4 (ix), l      ; row 4
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 14$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+14$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      5 (ix), l      ; row 5
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 15$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+15$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      6 (ix), l      ; row 6
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 16$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+16$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      7 (ix), l      ; row 7
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 17$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+17$:    exx
+        adc     hl, de          ; val += q + the step
         ld      a, h            ; val after the rows in [0, w]?
         or      a, a
-        jr      nz, dda0
+        jr      nz, ddas
         ld      a, c
         cp      a, l
-        jr      c, dda0
+        jr      c, ddas
         ld      0 (iy), l
         ld      1 (iy), h
         exx
@@ -886,10 +950,17 @@ dda:    ld      a, (ts_w)
         ld      5 (iy), h
         exx
         ret
-dda0:   ld      l, 0 (iy)       ; no: the slow loop from the start
-        ld      h, 1 (iy)
-ddas:   ld      a, #1
+ddas:   ld      a, #1           ; the slow loop from the start
         ld      (gslow), a
+        ld      l, 0 (iy)
+        ld      h, 1 (iy)       ; HL = val
+        push    ix
+        ld      a, #8           ; IX = the first row's byte
+        sub     a, b
+        ld      e, a
+        ld      d, #0
+        add     ix, de
+        push    bc
         ld      e, 2 (iy)
         ld      d, 3 (iy)       ; DE = q
         exx
@@ -932,4 +1003,6 @@ ddas:   ld      a, #1
         ld      4 (iy), l
         ld      5 (iy), h
         exx
+        pop     bc
+        pop     ix
         ret
