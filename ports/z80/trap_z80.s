@@ -126,8 +126,16 @@ _r8k_trap:
         ld      (ts_pt), hl
         ld      (ts_pl), de
         ld      de, #ts
-        ld      bc, #10
-        ldir
+        ldi                     ; (10 bytes: ldir's 21 T a byte less
+        ldi                     ; its loop)
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
         pop     bc              ; the return address
         pop     hl              ; r
         pop     de              ; rows
@@ -357,12 +365,25 @@ next:   ld      hl, (ts_rows)
         dec     a
         and     a, b
         jr      nz, single
-        ld      a, b
-        ld      c, #0
-1$:     inc     c               ; C = the rows to the page's end
-        add     a, a
-        jr      nz, 1$
-        ld      a, c
+        ld      a, b            ; C = the rows to the page's end: 8 -
+        ld      c, #8           ; log2 m (m one bit), by halves
+        cp      a, #0x10
+        jr      c, 1$
+        rrca
+        rrca
+        rrca
+        rrca
+        ld      c, #4
+1$:     cp      a, #4
+        jr      c, 3$
+        rrca
+        rrca
+        dec     c
+        dec     c
+3$:     cp      a, #2
+        jr      c, 4$
+        dec     c
+4$:     ld      a, c
         ld      (gC), a
         ld      a, h            ; g = min(C, rows)
         or      a, a
@@ -395,8 +416,10 @@ single: dec     hl              ; one row: *l, *r copied in and out
 done:   pop     ix
         ld      de, (ts_pt)     ; t->page, t->m, t->k
         ld      hl, #ts
-        ld      bc, #4
-        ldir
+        ldi
+        ldi
+        ldi
+        ldi
         ret
 
         ;; ---- a dither: column x gets m where bit 3 - (x & 3) of the
