@@ -723,7 +723,7 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
 2$:     sub     a, 0 (ix)
         jr      z, 3$
         jr      c, 3$
-        ld      b, a
+        ex      af, af'         ; n
         ld      a, 0 (ix)
         call    ragf
 3$:     ld      a, (gB)         ; right: [max(ga, gB), gb)
@@ -735,7 +735,7 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
         sub     a, e
         jr      z, 5$
         jr      c, 5$
-        ld      b, a
+        ex      af, af'         ; n
         ld      a, e
         call    ragf
 5$:     inc     ix
@@ -786,59 +786,48 @@ gfast:  ld      b, a            ; B = gA
         exx
         jr      nz, 1$
         jp      gend
-5$:     push    bc
-        push    de
-        push    hl
-        ld      b, a
-        ld      a, (hl)
+5$:     ex      af, af'         ; n
+        ld      a, (hl)         ; x = ga
         call    ragf
-        pop     hl
-        pop     de
-        pop     bc
         jr      2$
-6$:     push    bc
-        push    de
-        push    hl
-        ld      b, a
-        ld      a, c
+6$:     ex      af, af'         ; n
+        ld      a, c            ; x = gB
         call    ragf
-        pop     hl
-        pop     de
-        pop     bc
         jr      3$
 
-;; ragf: columns [x, x + n) of one row, one by one: A = x, B = n >= 1,
+;; ragf: columns [x, x + n) of one row, one by one: A = x, A' = n >= 1,
 ;; C' = the row's bit, (IY) = its pattern nibble twice (bit 7: phase 0).
 ;; Each byte = (byte & ~bit) | (bit if bit 3 - (x & 3) of the nibble).
-;; Clobbers A, B, C, D, E, HL.
-ragf:   ld      e, a
-        exx
-        ld      a, c
-        exx
-        ld      c, a
-        ld      d, 0 (iy)
-        ld      a, e
+;; Works in the alternate set (HL', DE'; B', C' kept) and keeps the main
+;; one, so gfast's loop keeps its registers across it (round 11: was
+;; push / pop of three pairs a call).  Clobbers AF, AF', HL', DE'.
+ragf:   exx
+        ld      e, a
         ld      hl, (ts_page)
         add     a, l
         ld      l, a
         adc     a, h
         sub     a, l
-        ld      h, a            ; HL = page + x
+        ld      h, a            ; HL' = page + x
         ld      a, e
-        ld      e, d
+        ld      e, 0 (iy)
         and     a, #3
         jr      z, 2$
 1$:     rlc     e               ; bit 7: phase x & 3
         dec     a
         jr      nz, 1$
-2$:     rlc     e
+2$:     ex      af, af'
+        ld      d, a            ; D' = n
+3$:     rlc     e
         sbc     a, a
         xor     a, (hl)
         and     a, c
         xor     a, (hl)
         ld      (hl), a
         inc     hl
-        djnz    2$
+        dec     d
+        jr      nz, 3$
+        exx
         ret
 
 ;; dda: B = g (1..8) rows of the column DDA at IY (val +0, q +2, err +4,
