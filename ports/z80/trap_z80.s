@@ -145,26 +145,37 @@ _r8k_trap:
         push    ix
         ld      de, (ts_pat)    ; the pattern cache: a slot of these
         ld      bc, (ts_pat + 2) ; patterns? (E, D, C, B: pat[0..3])
-        ld      ix, #cache
-        ld      h, #NSLOT
-2$:     ld      a, 0 (ix)
+        ld      hl, #cache      ; (HL walks the slots: a mismatch at
+2$:     ld      a, (hl)         ; byte i moves it 32 - i on)
         cp      a, e
-        jr      nz, 3$
-        ld      a, 1 (ix)
+        jr      nz, 31$
+        inc     hl
+        ld      a, (hl)
         cp      a, d
-        jr      nz, 3$
-        ld      a, 2 (ix)
+        jr      nz, 32$
+        inc     hl
+        ld      a, (hl)
         cp      a, c
-        jr      nz, 3$
-        ld      a, 3 (ix)
+        jr      nz, 33$
+        inc     hl
+        ld      a, (hl)
         cp      a, b
-        jr      z, 4$
-3$:     push    de
-        ld      de, #32
-        add     ix, de
-        pop     de
-        dec     h
-        jr      nz, 2$
+        jr      z, 4$           ; found: HL = the slot + 3
+        ld      a, #29
+        jr      35$
+33$:    ld      a, #30
+        jr      35$
+32$:    ld      a, #31
+        jr      35$
+31$:    ld      a, #32
+35$:    add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a
+        ld      a, l            ; past the last slot? (no slot's low
+        cp      a, #<(cache + 32 * NSLOT) ; byte is the end's: 32 i
+        jr      nz, 2$          ; < 256)
         ld      a, (cvic)       ; none: rebuild the slot cvic (the
         and     a, #(NSLOT - 1) * 32 ; slots in turn)
         ld      l, a
@@ -178,10 +189,7 @@ _r8k_trap:
         add     hl, de
         ld      (pq16), hl
         jp      newpat
-4$:     push    ix              ; found: its r12 and q16
-        pop     hl
-        ld      de, #4
-        add     hl, de
+4$:     inc     hl              ; found: its r12 and q16
         ld      (pr12), hl
         ld      de, #12
         add     hl, de
