@@ -98,6 +98,8 @@ gg:     .ds     1               ; the group's rows (2..8)
 gA:     .ds     1               ; max ga, or 255: no common columns
 gB:     .ds     1               ; min gb, or 255
 gC:     .ds     1               ; the rows to the page's end
+gM:     .ds     1               ; m after the group (0: the next page)
+gslow:  .ds     1               ; nonzero: a DDA of the group went slow
 pr12:   .ds     2               ; this call's slot's r12 and q16
 pq16:   .ds     2
         ;; the pattern cache, rebuilt when t->pat differs from its
@@ -118,12 +120,22 @@ cache:  .ds     32 * NSLOT
 
         .area   _CODE
 
+p2:     .db     1, 2, 4, 8, 16, 32, 64, 128, 0  ; 1 << i (0: past bit 7)
+
 _r8k_trap:
         ld      (ts_pt), hl
         ld      (ts_pl), de
         ld      de, #ts
-        ld      bc, #10
-        ldir
+        ldi                     ; (10 bytes: ldir's 21 T a byte less
+        ldi                     ; its loop)
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
+        ldi
         pop     bc              ; the return address
         pop     hl              ; r
         pop     de              ; rows
@@ -133,26 +145,37 @@ _r8k_trap:
         push    ix
         ld      de, (ts_pat)    ; the pattern cache: a slot of these
         ld      bc, (ts_pat + 2) ; patterns? (E, D, C, B: pat[0..3])
-        ld      ix, #cache
-        ld      h, #NSLOT
-2$:     ld      a, 0 (ix)
+        ld      hl, #cache      ; (HL walks the slots: a mismatch at
+2$:     ld      a, (hl)         ; byte i moves it 32 - i on)
         cp      a, e
-        jr      nz, 3$
-        ld      a, 1 (ix)
+        jr      nz, 31$
+        inc     hl
+        ld      a, (hl)
         cp      a, d
-        jr      nz, 3$
-        ld      a, 2 (ix)
+        jr      nz, 32$
+        inc     hl
+        ld      a, (hl)
         cp      a, c
-        jr      nz, 3$
-        ld      a, 3 (ix)
+        jr      nz, 33$
+        inc     hl
+        ld      a, (hl)
         cp      a, b
-        jr      z, 4$
-3$:     push    de
-        ld      de, #32
-        add     ix, de
-        pop     de
-        dec     h
-        jr      nz, 2$
+        jr      z, 4$           ; found: HL = the slot + 3
+        ld      a, #29
+        jr      35$
+33$:    ld      a, #30
+        jr      35$
+32$:    ld      a, #31
+        jr      35$
+31$:    ld      a, #32
+35$:    add     a, l
+        ld      l, a
+        adc     a, h
+        sub     a, l
+        ld      h, a
+        ld      a, l            ; past the last slot? (no slot's low
+        cp      a, #<(cache + 32 * NSLOT) ; byte is the end's: 32 i
+        jr      nz, 2$          ; < 256)
         ld      a, (cvic)       ; none: rebuild the slot cvic (the
         and     a, #(NSLOT - 1) * 32 ; slots in turn)
         ld      l, a
@@ -166,10 +189,7 @@ _r8k_trap:
         add     hl, de
         ld      (pq16), hl
         jp      newpat
-4$:     push    ix              ; found: its r12 and q16
-        pop     hl
-        ld      de, #4
-        add     hl, de
+4$:     inc     hl              ; found: its r12 and q16
         ld      (pr12), hl
         ld      de, #12
         add     hl, de
@@ -353,12 +373,25 @@ next:   ld      hl, (ts_rows)
         dec     a
         and     a, b
         jr      nz, single
-        ld      a, b
-        ld      c, #0
-1$:     inc     c               ; C = the rows to the page's end
-        add     a, a
-        jr      nz, 1$
-        ld      a, c
+        ld      a, b            ; C = the rows to the page's end: 8 -
+        ld      c, #8           ; log2 m (m one bit), by halves
+        cp      a, #0x10
+        jr      c, 1$
+        rrca
+        rrca
+        rrca
+        rrca
+        ld      c, #4
+1$:     cp      a, #4
+        jr      c, 3$
+        rrca
+        rrca
+        dec     c
+        dec     c
+3$:     cp      a, #2
+        jr      c, 4$
+        dec     c
+4$:     ld      a, c
         ld      (gC), a
         ld      a, h            ; g = min(C, rows)
         or      a, a
@@ -391,8 +424,10 @@ single: dec     hl              ; one row: *l, *r copied in and out
 done:   pop     ix
         ld      de, (ts_pt)     ; t->page, t->m, t->k
         ld      hl, #ts
-        ld      bc, #4
-        ldir
+        ldi
+        ldi
+        ldi
+        ldi
         ret
 
         ;; ---- a dither: column x gets m where bit 3 - (x & 3) of the
@@ -543,15 +578,56 @@ d2:     ld      a, (hl)
         ;; page move on g rows.
 grp:    ld      (gg), a
         ld      b, a
-        ld      ix, #ga
+        xor     a, a
+        ld      (gslow), a
+        ld      a, b            ; IX = ga - 8 + g (dda's rows at
+        add     a, #<(ga - 8)   ; 8 - g .. 7)
+        ld      l, a
+        adc     a, #>(ga - 8)
+        sub     a, l
+        ld      h, a
+        push    hl
+        pop     ix
         ld      iy, (ts_pl)
-        call    dda
-        ld      a, (gg)
-        ld      b, a
-        ld      ix, #gb
+        call    dda             ; (B, IX kept)
+        ld      de, #8          ; gb = ga + 8
+        add     ix, de
         ld      iy, (ts_pr)
         call    dda
-        ld      a, (gg)         ; gA = max ga
+        ld      a, (gC)         ; m after the group: p2[s + g], s =
+        ld      b, a            ; 8 - gC (m = 1 << s; 0 past the
+        ld      a, (gg)         ; page's last row)
+        add     a, #8
+        sub     a, b
+        ld      e, a
+        ld      d, #0
+        ld      hl, #p2
+        add     hl, de
+        ld      a, (hl)
+        ld      (gM), a
+        ld      a, (gslow)      ; both DDAs monotone and unwrapped
+        or      a, a            ; (dda's fast path): their clamped
+        jr      nz, 8$          ; columns too, so the max of ga and
+        ld      a, (gg)         ; the min of gb are at the first or
+        dec     a               ; the last row
+        ld      e, a
+        ld      d, #0
+        ld      hl, #ga
+        ld      a, (hl)
+        add     hl, de
+        cp      a, (hl)
+        jr      nc, 9$
+        ld      a, (hl)
+9$:     ld      (gA), a
+        ld      hl, #gb
+        ld      a, (hl)
+        add     hl, de
+        cp      a, (hl)
+        jr      c, 10$
+        ld      a, (hl)
+10$:    ld      (gB), a
+        jr      11$
+8$:     ld      a, (gg)         ; gA = max ga
         ld      b, a
         ld      hl, #ga
         xor     a, a
@@ -571,7 +647,7 @@ grp:    ld      (gg), a
 4$:     inc     hl
         djnz    3$
         ld      (gB), a
-        ld      hl, #gA
+11$:    ld      hl, #gA
         cp      a, (hl)         ; gB - gA
         jr      c, 5$
         jr      nz, 6$
@@ -584,11 +660,7 @@ grp:    ld      (gg), a
         ;; (E, IXH, IXL, D: phases 0..3, as dspan takes them)
         ld      a, (ts_m)
         ld      c, a
-        ld      a, (gg)
-        ld      b, a
-        ld      a, c
-7$:     add     a, a
-        djnz    7$
+        ld      a, (gM)
         sub     a, c
         ld      c, a            ; C = G
         cpl
@@ -659,7 +731,7 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
 2$:     sub     a, 0 (ix)
         jr      z, 3$
         jr      c, 3$
-        ld      b, a
+        ex      af, af'         ; n
         ld      a, 0 (ix)
         call    ragf
 3$:     ld      a, (gB)         ; right: [max(ga, gB), gb)
@@ -671,7 +743,7 @@ grag:   ;; each row: [ga, min(gb, gA)) and [max(ga, gB), gb); IY = its
         sub     a, e
         jr      z, 5$
         jr      c, 5$
-        ld      b, a
+        ex      af, af'         ; n
         ld      a, e
         call    ragf
 5$:     inc     ix
@@ -687,9 +759,7 @@ gend:   ld      a, (gg)         ; k, m and the page: g rows on
         add     a, b
         and     a, #3
         ld      (ts_k), a
-        ld      a, (ts_m)
-6$:     add     a, a
-        djnz    6$
+        ld      a, (gM)
         or      a, a
         jr      nz, 7$
         ld      hl, (ts_page)   ; the page's last row done: the next page
@@ -724,68 +794,193 @@ gfast:  ld      b, a            ; B = gA
         exx
         jr      nz, 1$
         jp      gend
-5$:     push    bc
-        push    de
-        push    hl
-        ld      b, a
-        ld      a, (hl)
+5$:     ex      af, af'         ; n
+        ld      a, (hl)         ; x = ga
         call    ragf
-        pop     hl
-        pop     de
-        pop     bc
         jr      2$
-6$:     push    bc
-        push    de
-        push    hl
-        ld      b, a
-        ld      a, c
+6$:     ex      af, af'         ; n
+        ld      a, c            ; x = gB
         call    ragf
-        pop     hl
-        pop     de
-        pop     bc
         jr      3$
 
-;; ragf: columns [x, x + n) of one row, one by one: A = x, B = n >= 1,
+;; ragf: columns [x, x + n) of one row, one by one: A = x, A' = n >= 1,
 ;; C' = the row's bit, (IY) = its pattern nibble twice (bit 7: phase 0).
 ;; Each byte = (byte & ~bit) | (bit if bit 3 - (x & 3) of the nibble).
-;; Clobbers A, B, C, D, E, HL.
-ragf:   ld      e, a
-        exx
-        ld      a, c
-        exx
-        ld      c, a
-        ld      d, 0 (iy)
-        ld      a, e
+;; Works in the alternate set (HL', DE'; B', C' kept) and keeps the main
+;; one, so gfast's loop keeps its registers across it (round 11: was
+;; push / pop of three pairs a call).  Clobbers AF, AF', HL', DE'.
+ragf:   exx
+        ld      e, a
         ld      hl, (ts_page)
         add     a, l
         ld      l, a
         adc     a, h
         sub     a, l
-        ld      h, a            ; HL = page + x
+        ld      h, a            ; HL' = page + x
         ld      a, e
-        ld      e, d
+        ld      e, 0 (iy)
         and     a, #3
         jr      z, 2$
 1$:     rlc     e               ; bit 7: phase x & 3
         dec     a
         jr      nz, 1$
-2$:     rlc     e
+2$:     ex      af, af'
+        ld      d, a            ; D' = n
+3$:     rlc     e
         sbc     a, a
         xor     a, (hl)
         and     a, c
         xor     a, (hl)
         ld      (hl), a
         inc     hl
-        djnz    2$
+        dec     d
+        jr      nz, 3$
+        exx
         ret
 
-;; dda: B = g >= 1 rows of the column DDA copy at IY (val +0, q +2, err
-;; +4, r +6, den +8): each row's clamp(val, 0, w) to (IX++), then the
-;; step (as `step`).  Uses the alternate registers for err, r, den.
-dda:    ld      a, (ts_w)
+;; dda: B = g (1..8) rows of the column DDA at IY (val +0, q +2, err +4,
+;; r +6, den +8): row i's clamp(val, 0, w) to (IX + 8 - g + i), then the
+;; step (as `step`); *IY left after the g rows.  Uses the alternate
+;; registers for err, r, den; B, IX kept.
+;; Fast path (round 11): with den < 0x8000 (so err + r < 2 den never
+;; wraps 16 bits; err, r < den as R8_INTERP_STEP keeps them), q in
+;; [-256, 255] and the first row's val in [0, w], the rows go unclamped
+;; with err biased by -den (err - den + r carries exactly when err + r >=
+;; den; then - den borrows: the carry is the step either way, and `adc`
+;; adds it to val), unrolled (c0..c7, 12 bytes a row: entered at row 8 -
+;; g through the stack).  val does not wrap and the DDA is monotone, so
+;; when val after the g rows is in [0, w] too, every row's was and none
+;; needed the clamp.  Else the slow loop (ddas, gslow set) redoes the
+;; rows from *IY (not written until the end).  65 T a row without the
+;; step, 75 with it (was ~146).
+dda:    ld      a, #8           ; the entry: c0 + 12 (8 - g)
+        sub     a, b
+        add     a, a
+        add     a, a
+        ld      e, a
+        add     a, a
+        add     a, e
+        add     a, #<c0
+        ld      l, a
+        adc     a, #>c0
+        sub     a, l
+        ld      h, a
+        push    hl
+        ld      a, (ts_w)
         ld      c, a            ; C = w (<= 255)
+        ld      d, 3 (iy)       ; q in [-256, 255] (no val wraps 16
+        ld      a, d            ; bits on g <= 8 rows)
+        inc     a
+        cp      a, #2
+        jr      nc, ddax
         ld      l, 0 (iy)
         ld      h, 1 (iy)       ; HL = val
+        ld      a, h            ; the first row in [0, w]?
+        or      a, a
+        jr      nz, ddax
+        ld      a, c
+        cp      a, l
+        jr      c, ddax
+        ld      e, 2 (iy)       ; DE = q
+        ld      a, 9 (iy)
+        exx
+        ld      b, a
+        add     a, a            ; den >= 0x8000: err + r may wrap
+        jr      c, ddaxx
+        ld      c, 8 (iy)
+        ld      l, 4 (iy)
+        ld      h, 5 (iy)       ; HL' = err - den (carry clear here)
+        sbc     hl, bc
+        dec     bc              ; BC' = den - 1 (sbc with the carry)
+        ld      e, 6 (iy)
+        ld      d, 7 (iy)       ; DE' = r
+        exx
+        ret                     ; to row 8 - g
+ddaxx:  exx
+ddax:   pop     hl
+        jr      ddas
+c0:     ld      0 (ix), l      ; row 0
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 10$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+10$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      1 (ix), l      ; row 1
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 11$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+11$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      2 (ix), l      ; row 2
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 12$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+12$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      3 (ix), l      ; row 3
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 13$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+13$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      4 (ix), l      ; row 4
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 14$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+14$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      5 (ix), l      ; row 5
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 15$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+15$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      6 (ix), l      ; row 6
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 16$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+16$:    exx
+        adc     hl, de          ; val += q + the step
+         ld      7 (ix), l      ; row 7
+        exx
+        add     hl, de          ; err - den + r: carry when err + r >= den
+        jr      nc, 17$
+        sbc     hl, bc          ; - den (the carry: + 1), carry set again
+17$:    exx
+        adc     hl, de          ; val += q + the step
+        ld      a, h            ; val after the rows in [0, w]?
+        or      a, a
+        jr      nz, ddas
+        ld      a, c
+        cp      a, l
+        jr      c, ddas
+        ld      0 (iy), l
+        ld      1 (iy), h
+        exx
+        inc     bc              ; err = biased + den
+        add     hl, bc
+        ld      4 (iy), l
+        ld      5 (iy), h
+        exx
+        ret
+ddas:   ld      a, #1           ; the slow loop from the start
+        ld      (gslow), a
+        ld      l, 0 (iy)
+        ld      h, 1 (iy)       ; HL = val
+        push    ix
+        ld      a, #8           ; IX = the first row's byte
+        sub     a, b
+        ld      e, a
+        ld      d, #0
+        add     ix, de
+        push    bc
         ld      e, 2 (iy)
         ld      d, 3 (iy)       ; DE = q
         exx
@@ -828,4 +1023,6 @@ dda:    ld      a, (ts_w)
         ld      4 (iy), l
         ld      5 (iy), h
         exx
+        pop     bc
+        pop     ix
         ret
