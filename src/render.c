@@ -384,12 +384,6 @@ static int cfg_valid(const r8_render_cfg *cfg)
         }
     }
 #endif
-#ifdef R8_CFG_NVERTS
-    /* The demo firmware (its scene's sizes fixed): the same checks in one
-     * walk with 16-bit sums.  A sum never passes its constant (each step
-     * is refused first), so it cannot wrap to it; the face ids' limit
-     * is a constant too. */
-    (void)nf;
     if (CFG_WIDTH(cfg) < 8 || CFG_WIDTH(cfg) > 1024 || CFG_HEIGHT(cfg) < 8 || CFG_HEIGHT(cfg) > 1024)
         return 0;
     if (CFG_BAND(cfg) < 1 || CFG_BAND(cfg) > CFG_HEIGHT(cfg))
@@ -399,6 +393,12 @@ static int cfg_valid(const r8_render_cfg *cfg)
     if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
         ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
         return 0;
+#ifdef R8_CFG_NVERTS
+    /* The demo firmware (its scene's sizes fixed): the same checks in one
+     * walk with 16-bit sums.  A sum never passes its constant (each step
+     * is refused first), so it cannot wrap to it; the face ids' limit
+     * is a constant too. */
+    (void)nf;
 #if R8_CFG_NFACES + R8_CFG_CLIP >= R8_FID_END
     (void)i;
     return 0;       /* more face ids than r8_fid holds */
@@ -432,15 +432,6 @@ static int cfg_valid(const r8_render_cfg *cfg)
         if (sc->objects[i].mesh && !sc->objects[i].mesh->normals)
             return 0;     /* this build takes meshes with their normals only */
 #endif
-    if (CFG_WIDTH(cfg) < 8 || CFG_WIDTH(cfg) > 1024 || CFG_HEIGHT(cfg) < 8 || CFG_HEIGHT(cfg) > 1024)
-        return 0;
-    if (CFG_BAND(cfg) < 1 || CFG_BAND(cfg) > CFG_HEIGHT(cfg))
-        return 0;
-    if (CFG_FORMAT(cfg) == R8_FMT_PAGE1 && ((CFG_BAND(cfg) & 7) || (CFG_HEIGHT(cfg) & 7)))
-        return 0;
-    if ((CFG_METHOD(cfg) == R8_VIS_BLOCK || CFG_METHOD(cfg) == R8_VIS_BLOCKMASK) &&
-        ((CFG_BAND(cfg) & 3) || (CFG_HEIGHT(cfg) & 3)))
-        return 0;
     for (i = 0; i < sc->nobjects; i++) {
         const r8_mesh *me = sc->objects[i].mesh;
         if (!me || !me->verts || !me->faces || me->nverts > 255)
