@@ -146,6 +146,11 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #define APP_BAND_AT ((unsigned)FP_total)
 #define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
 #define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+/* (app_plan refused a layout past an unsigned; this one is constant:
+ * sdcc checks it, cc65 cannot evaluate FP_total in a constant expression) */
+#ifndef __CC65__
+R8_CASSERT(app_fixed_fits, (unsigned long)FP_total + APP_BAND_BYTES < 0xFFF0ul);
+#endif
 /* the stream: what tx_cfg_from makes of cfg, whose codec, full period,
  * dirty flag and palette size app_start checks against it (its format
  * and size are the renderer's, which cfg_valid checks against R8_CFG_*,
