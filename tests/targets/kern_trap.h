@@ -84,10 +84,16 @@ static int trap_case(r8_s16 w, r8_u16 rows, unsigned pages, int full)
     if (rndn(3) == 0) {           /* often a real trapezoid: r right of l */
         ra.val = (r8_s16)(la.val + rnds(-4, (r8_s16)(w + 4)));
     }
+#ifdef TRAP_BIAS
+    TRAP_BIAS(&ta, &la, &ra);   /* the including test's biased inputs */
+#endif
     tr = ta;
     tr.page = wr + GUARD;
     lr_ = la;
     rr_ = ra;
+#ifdef TRAP_CLASSES
+    TRAP_CLASSES(&ta, &la, &ra, rows);  /* the including test's counters */
+#endif
     r8k_trap_ref(&tr, &lr_, &rr_, rows);
     r8k_trap(&ta, &la, &ra, rows);
     n_rows += rows;

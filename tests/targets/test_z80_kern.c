@@ -281,7 +281,145 @@ static void test_mulint_random(void)
 
 #if !defined(Z80K_PART) || Z80K_PART == 1
 /* ---- r8k_trap: tests/targets/kern_trap.h ---- */
+/* trap_z80.s's group classes, derived from each case's inputs (the rows
+ * walked as the kernel groups them, the DDAs stepped as the reference):
+ * a group is g = min(rows to the page's end, rows left) >= 2 rows when
+ * w <= 255 and m is one bit.  Per DDA of a group, dda's fast path (den <
+ * 0x8000, q in [-256, 255], the first row's val in [0, w]) completes for
+ * each g (tc_fast[g]) when the val after the g rows is in [0, w] too,
+ * else falls back to ddas after its rows (tc_back); with both DDAs fast,
+ * the group's bounds come from its first and last rows: max ga at the
+ * first (tc_bnd[0]) or the last (tc_bnd[1]), min gb at the first
+ * (tc_bnd[2]) or the last (tc_bnd[3]) */
+static unsigned long tc_fast[9], tc_back, tc_bnd[4];
+
+/* one DDA of a group: 1 if the fast path completes; *it steps g rows,
+ * *last the last row's val */
+static int tc_dda(r8_interp *it, r8_s16 w, unsigned g, r8_s16 *last)
+{
+    int fast = it->den < 0x8000u && it->q >= -256 && it->q <= 255 && it->val >= 0 && it->val <= w;
+    unsigned i;
+    for (i = 0; i < g; i++) {
+        *last = it->val;
+        R8_INTERP_STEP(it);
+    }
+    if (!fast)
+        return 0;
+    if (it->val >= 0 && it->val <= w) {
+        tc_fast[g]++;
+        return 1;
+    }
+    tc_back++;
+    return 0;
+}
+
+static void trap_classes(const r8_trapfill *t, const r8_interp *l0, const r8_interp *r0, r8_u16 rows)
+{
+    r8_interp l, r;
+    r8_u8 m = t->m;
+    r8_s16 w = t->w;
+    memcpy(&l, l0, sizeof l);
+    memcpy(&r, r0, sizeof r);
+    while (rows != 0) {
+        unsigned s = 0, g;
+        if (w <= 255 && m != 0 && (m & (m - 1u)) == 0) {
+            while ((1u << s) != m)
+                s++;
+            g = 8u - s;
+            if (rows < g)
+                g = rows;
+            if (g >= 2) {
+                r8_s16 la = l.val, ra = r.val;
+                r8_s16 lz = 0, rz = 0;
+                int fl = tc_dda(&l, w, g, &lz), fr = tc_dda(&r, w, g, &rz);
+                if (fl && fr) {
+                    if (la > lz)
+                        tc_bnd[0]++;
+                    else if (lz > la)
+                        tc_bnd[1]++;
+                    if (ra < rz)
+                        tc_bnd[2]++;
+                    else if (rz < ra)
+                        tc_bnd[3]++;
+                }
+                rows = (r8_u16)(rows - g);
+                m = (r8_u8)(s + g < 8u ? 1u << (s + g) : 1u);
+                continue;
+            }
+        }
+        R8_INTERP_STEP(&l);
+        R8_INTERP_STEP(&r);
+        m = (r8_u8)(m << 1);
+        if (m == 0)
+            m = 1;
+        rows--;
+    }
+}
+#define TRAP_CLASSES(t, l, r, rows) trap_classes(t, l, r, rows)
+
+/* test_trap_classes's extra cases: m one bit, both DDAs slow-moving
+ * (q in [-3, 3], den <= 64) from a column in [0, w], so both often take
+ * dda's fast path through a group and set its bounds */
+static int tc_bias;
+static void tc_bias_interp(r8_interp *it, r8_s16 w)
+{
+    it->den = (r8_u16)(1u + rndn(64));
+    it->err = (r8_u16)(rndn(it->den));
+    it->r = (r8_u16)(rndn(it->den));
+    it->val = (r8_s16)rndn((unsigned)w + 1u);
+    it->q = rnds(-3, 3);
+}
+static void trap_bias(r8_trapfill *t, r8_interp *l, r8_interp *r)
+{
+    if (!tc_bias)
+        return;
+    t->m = (r8_u8)(1u << rndn(8));
+    tc_bias_interp(l, t->w);
+    tc_bias_interp(r, t->w);
+}
+#define TRAP_BIAS(t, l, r) trap_bias(t, l, r)
 #include "kern_trap.h"
+
+#ifndef TRAPB_CASES
+#define TRAPB_CASES 500
+#endif
+static void test_trap_classes(void)
+{
+    unsigned g;
+    unsigned long i;
+    int bad;
+    tc_bias = 1;
+    for (i = 0; i < TRAPB_CASES; i++) {
+        bad = trap_case((r8_s16)(1 + rndn(160)), (r8_u16)(2u + rndn(19)), 4, 0);
+        if (bad) {
+            print_case("r8k_trap biased", i);
+            unity_fail_int(__LINE__, "r8k_trap differs from the reference (1 band, 2 page, 3 t, 4 l, 5 r)", 0, bad);
+        }
+    }
+    tc_bias = 0;
+    unity_print("r8k_trap dda fast g=2..8:");
+    for (g = 2; g <= 8; g++) {
+        unity_print(" ");
+        unity_print_long((long)tc_fast[g]);
+    }
+    unity_print("; back to ddas ");
+    unity_print_long((long)tc_back);
+    unity_print("; bounds max ga first/last, min gb first/last:");
+    for (g = 0; g < 4; g++) {
+        unity_print(" ");
+        unity_print_long((long)tc_bnd[g]);
+    }
+    unity_print("\n");
+    for (g = 2; g <= 8; g++)
+        if (tc_fast[g] < 50)
+            unity_fail_int(__LINE__, "r8k_trap: dda's fast path too rare for a group size", (long)g,
+                           (long)tc_fast[g]);
+    if (tc_back < 100)
+        unity_fail_int(__LINE__, "r8k_trap: dda's fast path falling back too rare", 100, (long)tc_back);
+    for (g = 0; g < 4; g++)
+        if (tc_bnd[g] < 50)
+            unity_fail_int(__LINE__, "r8k_trap: a group bound class too rare", (long)g, (long)tc_bnd[g]);
+}
 
 /* ---- r8k_fill: lengths 0..700 at random offsets in band_asm/band_ref
  * (kern_trap.h's windows), the bytes around them kept ---- */
@@ -558,21 +696,44 @@ static void test_cull_random(void)
 #if !defined(Z80K_PART) || Z80K_PART == 1
 /* ---- r8k_trap's pattern cache (trap_z80.s: 4 slots, rebuilt in turn):
  * the patterns of a pool of 6 come back in random order, so every slot
- * is hit, missed and rebuilt; as trap_case, on rows of a page (groups) */
+ * is hit, missed and rebuilt; as trap_case, on rows of a page (groups).
+ * The pool's patterns share prefixes (one base, bytes 0, 1, 2, 3 or 2
+ * and 3 changed), so a lookup meets slots that differ first at each
+ * byte: counted on a miss (every slot is compared then) from a model of
+ * the slots (the last 4 patterns missed: rebuilt in turn), set first by
+ * 4 calls with patterns the other tests never give */
 #ifndef TRAPC_CASES
 #define TRAPC_CASES 1500
 #endif
 static void test_trap_cache(void)
 {
-    static r8_u8 pool[6][4];
-    unsigned long i;
-    unsigned j;
+    static r8_u8 pool[6][4], slot[4][4];
+    static const r8_u8 chg[6][4] = {
+        { 0, 0, 0, 0 }, { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 }, { 0, 0, 1, 1 } };
+    unsigned long i, miss[4];
+    unsigned j, nslot = 0;
     r8_trapfill ta, tr;
     r8_interp la, lr_, ra, rr_;
     r8_s16 w;
-    for (i = 0; i < 6; i++)
-        for (j = 0; j < 4; j++)
-            pool[i][j] = (r8_u8)(j == 0 ? i : rnd());    /* all different */
+    for (j = 0; j < 4; j++) {
+        r8_u8 base = (r8_u8)rnd(), x = (r8_u8)(1u + rndn(255));
+        for (i = 0; i < 6; i++)
+            pool[i][j] = (r8_u8)(chg[i][j] ? base ^ x : base);  /* all different */
+    }
+    memset(miss, 0, sizeof miss);
+    memset(&ta, 0, sizeof ta);
+    ta.page = band_asm;
+    ta.w = 8;
+    rnd_interp(&la, 8);
+    ra = la;
+    for (j = 0; j < 4; j++) {    /* rows 0: the lookup only */
+        slot[j][0] = 0x96;
+        slot[j][1] = 0x69;
+        slot[j][2] = 0x35;
+        slot[j][3] = (r8_u8)(0xA7 + j);
+        memcpy(ta.pat, slot[j], 4);
+        r8k_trap(&ta, &la, &ra, 0);
+    }
     for (i = 0; i < TRAPC_CASES; i++) {
         unsigned off = rndn(64), len;
         r8_u16 rows = (r8_u16)(1u + rndn(20));
@@ -584,6 +745,18 @@ static void test_trap_cache(void)
         ta.m = (r8_u8)(1u << rndn(8));
         ta.k = (r8_u8)rndn(4);
         memcpy(ta.pat, pool[rndn(6)], 4);
+        for (j = 0; j < 4 && memcmp(slot[j], ta.pat, 4) != 0; j++)
+            ;
+        if (j == 4) {   /* a miss: each slot differs first at a byte */
+            for (j = 0; j < 4; j++) {
+                unsigned b = 0;
+                while (slot[j][b] == ta.pat[b])
+                    b++;
+                miss[b]++;
+            }
+            memcpy(slot[nslot], ta.pat, 4);
+            nslot = (nslot + 1u) & 3u;
+        }
         ta.w = w;
         rnd_interp(&la, w);
         rnd_interp(&ra, w);
@@ -604,6 +777,15 @@ static void test_trap_cache(void)
             TEST_FAIL_MESSAGE("r8k_trap differs from the reference (pattern cache)");
         }
     }
+    unity_print("r8k_trap cache: slots differing first at bytes 0..3 on a miss:");
+    for (j = 0; j < 4; j++) {
+        unity_print(" ");
+        unity_print_long((long)miss[j]);
+    }
+    unity_print("\n");
+    for (j = 0; j < 4; j++)
+        if (miss[j] < 100)
+            unity_fail_int(__LINE__, "r8k_trap cache: a mismatch byte too rare", (long)j, (long)miss[j]);
 }
 
 #endif
@@ -619,6 +801,7 @@ int main(void)
     RUN_TEST(test_mulint_random);
     RUN_TEST(test_trap_random);
     RUN_TEST(test_trap_many_rows);
+    RUN_TEST(test_trap_classes);
     RUN_TEST(test_fill_random);
     RUN_TEST(test_trap_cache);
 #endif
