@@ -88,6 +88,23 @@ static const r8_u8 delim = 0;
 #endif
 #endif
 
+/* R8_TXBAND_ALL (a port's firmware flag, with R8_ASM_TXBAND and a fixed
+ * stream): the port's r8_tx_band takes every valid band of that stream
+ * that comes in order, those whose RLE does not pay (sent raw) too.
+ * What it hands to r8_tx_band_c is then a band out of order, which the
+ * relay at the end of this file makes the expected one and hands back,
+ * or a bad one (R8_E_ARG): tx_band and tx_rle, the C band path, leave
+ * the firmware. */
+#define TX_ASM_ALL 0
+#if defined(R8_TXBAND_ALL) && defined(R8_ASM_TXBAND) && defined(R8_TXCFG_FORMAT)
+#if !TX_SHORT || R8_TXCFG_CODEC != R8_CODEC_RLE || R8_TXCFG_HEIGHT % R8_TXCFG_BAND != 0 || \
+    (R8_TXCFG_BAND + 7) / 8 * R8_TXCFG_WIDTH < 8
+#error "R8_TXBAND_ALL: the port's r8_tx_band takes RLE streams of whole bands of 8..249 bytes only"
+#endif
+#undef TX_ASM_ALL
+#define TX_ASM_ALL 1
+#endif
+
 typedef r8_tx_st tx_st;
 
 /* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
@@ -512,6 +529,7 @@ r8_u8 r8_tx_lit_c(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k, r8_u8 c)
     return (r8_u8)(c | (stop << 7));
 }
 
+#if !TX_ASM_ALL
 /* RLE-encode the band p[0..n) into o (the bytes r8_rle_encode gives, see
  * r8codec.h), at most cap bytes: the payload goes on s's packet CRC and
  * COBS chain, s gets the band's CRC from 0 and Fletcher sums.  Returns
@@ -588,6 +606,7 @@ static unsigned tx_rle(register tx_st *s, register const r8_u8 *p, unsigned n, r
     return (unsigned)(o - o0);
 }
 #endif
+#endif /* !TX_ASM_ALL */
 
 unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
 {
@@ -597,6 +616,7 @@ unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n)
     return (unsigned)(q - p);
 }
 
+#if !TX_ASM_ALL
 /* Encode and send band src[0..n) at row y0: the packet, the fingerprint
  * fp[4] (changed: whether it did) and the frame CRC; z = its leading
  * zeros. */
@@ -674,6 +694,25 @@ static void TX_NOINLINE tx_band(register r8_tx *tx, const r8_u8 *src, unsigned n
     tx->sent++;
 }
 
+#endif /* !TX_ASM_ALL */
+
+#if TX_ASM_ALL
+/* What the port's r8_tx_band hands on (R8_TXBAND_ALL, above): a band of
+ * the frame out of order becomes the expected one, as r8_tx_band below
+ * finds its index, and goes back; any other is bad (one the kernel takes
+ * it never hands on: R8_E_ARG, never a loop). */
+int r8_tx_band_c(register r8_tx *tx, const r8_fb *band)
+{
+    r8_s16 y0 = band->y0;
+    if (!tx->in_frame || y0 < 0 || y0 >= R8_TXCFG_HEIGHT || y0 == tx->next_y ||
+        (unsigned)y0 % R8_TXCFG_BAND != 0 || band->width != R8_TXCFG_WIDTH ||
+        band->format != R8_TXCFG_FORMAT)
+        return R8_E_ARG;
+    tx->next_y = y0;
+    tx->next_idx = (unsigned)y0 / R8_TXCFG_BAND;
+    return r8_tx_band(tx, band);
+}
+#else
 #if defined(R8_ASM_TXBAND) && !defined(r8_tx_band)
 /* a port's r8_tx_band (6502: ports/6502/txband_6502.s) hands the bands
  * it does not take to this one, the reference (r8crc.h; a test that
@@ -722,6 +761,7 @@ int r8_tx_band(register r8_tx *tx, const r8_fb *band)
     tx_band(tx, band->buf, n, (unsigned)y0, fp, xn, z);
     return R8_OK;
 }
+#endif /* TX_ASM_ALL */
 
 int r8_tx_frame_end(r8_tx *tx)
 {
