@@ -78,7 +78,8 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # rast8.cfg (R8PAGE: the tables' page-aligned RAM) and ports/6502/gc65.py
 # (function-level dead code removal; C65_GC=0: off); one that does not fit
 # is linked again with ports/6502/ckern.s65 (the C versions of txband,
-# scanx and fill: ports/xbuild.sh).
+# scanx and fill: ports/xbuild.sh; txband stays the kernel in a firmware
+# built with R8_TXBAND_ALL, FWK_6502 below).
 C65_ASM    := $(wildcard ports/6502/*.s)
 C65_ASMDEF := -DR8_ASM_MUL16 -DR8_ASM_TRAP -DR8_ASM_WIRE -DR8_ASM_TXBAND -DR8_ASM_SCANX -DR8_ASM_FILL -DR8_ASM_XFORM -DR8_ASM_PROJECT -DR8_ASM_EDGE
 C65_CFLAGS := -t sim6502 --standard c89 -W +error,-const-comparison -Or -Cl -g $(C65_ASMDEF) $(INC) $(XINC)
@@ -301,6 +302,9 @@ FWK_avr328     = $(AVR_KDEFS)
 FWK_avr1284    = $(AVR_KDEFS)
 # (the Z80's: whether project_z80.s hands r8_project_recip its rare points)
 FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT)
+# (the 6502's: txband_6502.s takes every band of the fixed stream, raw
+# too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL)
+FWK_6502       = -DR8_TXBAND_ALL
 define XPROG
 XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) ports/xbuild.sh
 XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))

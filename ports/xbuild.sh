@@ -67,7 +67,13 @@ case $tgt in
     grep -q 'overflows memory area' "$log.ld" || fail
     [ $try = 2 ] && skip "$(grep -m1 -o 'Segment.*' "$log.ld") (sim6502: 63 KB for code+data, 512 B C stack; with the C kernels)"
     echo "xbuild.sh: $(grep -m1 -o 'Segment.*' "$log.ld"): again with ports/6502/ckern.s65" >> "$log"
-    cp ports/6502/ckern.s65 "$base.ck.s"
+    # (a unit with wire.c's relay r8_tx_band_c but no C band path tx_band,
+    # R8_TXBAND_ALL, keeps the kernel r8_tx_band: ckern's last part out)
+    if grep -q '^\.proc[[:space:]]_r8_tx_band_c:' "$base.s" && ! grep -q '^\.proc[[:space:]]_tx_band:' "$base.s"; then
+      sed '/^; ---- r8_tx_band/,$d' ports/6502/ckern.s65 > "$base.ck.s"
+    else
+      cp ports/6502/ckern.s65 "$base.ck.s"
+    fi
     ca65 -g -t sim6502 -o "$base.ck.o" "$base.ck.s" >> "$log" 2>&1 || fail
     objs+=("$base.ck.o")
     done

@@ -6,16 +6,24 @@
 ;
 ;   in a frame, the band the encoder expects next (y0 = next_y), a whole
 ;   band (height - y0 >= band), the frame's width and format, codec RLE,
-;   8 <= band bytes <= 255; and the RLE payload smaller than the band,
-;   with the COBS chain never broken (no block of 254 non-zero bytes).
+;   8 <= band bytes <= 255; and either the RLE payload smaller than the
+;   band, with the COBS chain never broken (no block of 254 non-zero
+;   bytes), or, when RLE does not pay, a band of fewer than 242 bytes
+;   (the raw packet, n + 6 + 2 < 250 bytes, keeps its COBS chain).
 ;
 ; Nothing of tx changes before that is known (only the packet scratch
 ; is written), so the C version then does the whole band itself.  What
 ; is left is what src/wire.c's r8_tx_band, tx_band, tx_rle and tx_send
-; (all = 0) do on that path: the header, the RLE tokens (txrun and
-; txlit of wire_6502.s: packet CRC, the band's CRC from 0, Fletcher
-; sums, COBS links), the fingerprint, the frame CRC, the skip of an
-; unchanged band in a delta frame, and one put of the framed packet.
+; do on those paths: the header, the RLE tokens (txrun and txlit of
+; wire_6502.s: packet CRC, the band's CRC from 0, Fletcher sums, COBS
+; links; tx_send all = 0) or the raw payload (its copy, the band's CRC
+; and Fletcher sums in one pass, the packet CRC from the header's with
+; one multiply, every 0x00 linked after: tx_send all = 1), the
+; fingerprint, the frame CRC, the skip of an unchanged band in a delta
+; frame, and one put of the framed packet.  A fixed-stream firmware
+; (-DR8_TXBAND_ALL, mk/targets.mk FWK_6502) then never hands a band of
+; its stream on but one out of order, and links src/wire.c's relay in
+; place of the C band path.
 ; tests/c/test_txband.c compares the two on random frames in sim65, and
 ; the r8_tx / r8_fb offsets below with the C compiler's (r8_txband_offs).
 
@@ -245,92 +253,34 @@ fast:   ldy     #FB_BUF
         jmp     done
 
 ; ---- the packet, in the scratch only
-encode: ldy     #TX_FRAME       ; header: BAND, frame, y0, RLE
-        lda     (tx),y
-        tax
-        iny
-        lda     (tx),y
-        ldy     #2
-        sta     (pk),y          ; b[1] = frame high
-        txa
-        iny
-        sta     (pk),y          ; b[2] = frame low
-        ldy     #1
-        lda     #2              ; R8_PKT_BAND
-        sta     (pk),y
-        ldy     #4
-        lda     y0+1
-        sta     (pk),y
-        iny
-        lda     y0
-        sta     (pk),y
-        iny
-        lda     #1              ; R8_CODEC_RLE
-        sta     (pk),y
-        ldy     #TX_HCRC        ; s.crc = crc(hcrc, b[3..5])
-        lda     (tx),y
-        sta     cl
-        iny
-        lda     (tx),y
-        sta     ch
-        lda     y0+1
-        CRCSTEP
-        lda     y0
-        CRCSTEP
-        lda     #1
-        CRCSTEP
-        lda     cl
+encode: lda     #1              ; R8_CODEC_RLE
+        jsr     hdr             ; the header; o = b + 6 = pkt + 7
+        lda     cl              ; s.crc = crc(hcrc, b[3..5])
         sta     st+S_CRC
         lda     ch
         sta     st+S_CRC+1
-        lda     pk              ; s.pkt = s.code = pkt
+        lda     pk              ; s.pkt = pkt
         sta     st+S_PKT
-        sta     st+S_CODE
         lda     pk+1
         sta     st+S_PKT+1
-        sta     st+S_CODE+1
         lda     #0
         sta     st+S_F1
         sta     st+S_F2
         sta     st+S_G
         sta     st+S_G+1
-        ldy     #2              ; the header's zeros (b[1..4]: pkt + 2..5)
-@hz:    lda     (pk),y          ; link: *code = q - code, code = q
-        bne     @hn
-        sty     tmp
-        tya
-        sec
-        sbc     st+S_CODE       ; (code is pkt + 1 .. 4: same page or
-        clc                     ;  the next; the difference is 8-bit)
-        adc     pk
-        ldx     st+S_CODE       ; *code
-        stx     ptr
-        ldx     st+S_CODE+1
-        stx     ptr+1
-        ldy     #0
-        sta     (ptr),y
-        lda     tmp             ; code = pkt + y
+        lda     #6              ; the header's zeros (b[1..4]) linked,
+        jsr     links0          ; s.code = pkt + the last
+        txa
         clc
         adc     pk
         sta     st+S_CODE
         lda     pk+1
         adc     #0
         sta     st+S_CODE+1
-        ldy     tmp
-@hn:    iny
-        cpy     #6
-        bne     @hz
         lda     #<st
         sta     sptr
         lda     #>st
         sta     sptr+1
-        lda     pk              ; o = b + 6 = pkt + 7
-        clc
-        adc     #7
-        sta     optr
-        lda     pk+1
-        adc     #0
-        sta     optr+1
         lda     bp
         sta     ptr
         lda     bp+1
@@ -351,7 +301,7 @@ encode: ldy     #TX_FRAME       ; header: BAND, frame, y0, RLE
 :       sta     cnt
         lda     room
         cmp     #2
-        bcc     fail
+        bcc     noroom
         sbc     #2
         sta     room
         ldy     #0
@@ -374,7 +324,7 @@ encode: ldy     #TX_FRAME       ; header: BAND, frame, y0, RLE
         sta     st+S_CRC+1
         lda     #1              ; link o + 1
         jsr     linko
-        bcs     fail
+        bcs     broke
         jsr     adv2
         lda     zz
         sec
@@ -387,7 +337,8 @@ encode: ldy     #TX_FRAME       ; header: BAND, frame, y0, RLE
         jsr     advp
         jmp     @zl
 
-fail:   jmp     slow
+noroom: jmp     raw             ; RLE does not pay: the band goes raw
+broke:  jmp     slow            ; the COBS chain broke: the C does it
 
 ; the tokens, as tx_rle: a run of 3 or more, else literals
 tokens: lda     left
@@ -409,7 +360,7 @@ tokens: lda     left
         bne     @lit
         lda     room            ; a run
         cmp     #2
-        bcc     fail
+        bcc     noroom
         sbc     #2
         sta     room
         lda     cnt
@@ -421,7 +372,7 @@ tokens: lda     left
         bne     :+
         lda     #1
         jsr     linko
-        bcs     fail
+        bcs     broke
 :       jsr     adv2
         jmp     @next
 @lit:   ldx     #127            ; k: where a run of 3 may start
@@ -441,7 +392,7 @@ tokens: lda     left
         beq     :+
         bcs     @fits
 :       cmp     #2
-        bcc     fail
+        bcc     noroom
         sbc     #1
         sta     cnt
         sta     full
@@ -450,9 +401,9 @@ tokens: lda     left
         sta     kk
 @fits:  jsr     txlit           ; (o + 1 in optr after it)
         tax
-        bmi     fail2            ; the chain broke: the C does it
+        bmi     broke2          ; the chain broke: the C does it
         cmp     full
-        beq     fail2            ; no room
+        beq     noroom2         ; no room
         sta     cnt
         sec                     ; room -= c + 1
         lda     room
@@ -473,7 +424,9 @@ tokens: lda     left
         jsr     advp
         jmp     tokens
 
-fail2:  jmp     slow
+noroom2:
+        jmp     raw
+broke2: jmp     slow
 
 ; ---- the payload is in: o = end - 3; the CRC, links, the last code
 sent:   ldy     #0              ; o[0], o[1] = the packet CRC
@@ -482,14 +435,14 @@ sent:   ldy     #0              ; o[0], o[1] = the packet CRC
         bne     :+
         tya
         jsr     linko
-        bcs     fail2
+        bcs     broke2
 :       ldy     #1
         lda     st+S_CRC
         sta     (optr),y
         bne     :+
         tya
         jsr     linko
-        bcs     fail2
+        bcs     broke2
 :       lda     optr            ; end = o + 2
         clc
         adc     #2
@@ -502,7 +455,7 @@ sent:   ldy     #0              ; o[0], o[1] = the packet CRC
         tax
         lda     optr+1
         sbc     st+S_CODE+1
-        bne     fail2
+        bne     broke2
         lda     st+S_CODE
         sta     ptr
         lda     st+S_CODE+1
@@ -513,8 +466,8 @@ sent:   ldy     #0              ; o[0], o[1] = the packet CRC
         tya
         sta     (optr),y        ; *end = 0
 
-; ---- it goes: now tx changes
-        jsr     commit
+; ---- it goes: now tx changes (the packet ends at optr)
+go:     jsr     commit
         lda     zz
         cmp     nn
         bne     @fp
@@ -601,7 +554,141 @@ done:   lda     #2              ; pop tx; R8_OK
         tax
         rts
 
+; ---- RLE does not pay: the raw packet (tx_band's from == b path), if
+; short enough for its COBS chain to hold (n + 6 + 2 < 250), else the C
+raw:    lda     nn
+        cmp     #242
+        bcc     :+
+        jmp     slow
+:
+        lda     #0              ; R8_CODEC_RAW
+        jsr     hdr             ; the header again (links wrote over its
+        lda     cl              ; zeros); its CRC from hcrc saved
+        pha
+        lda     ch
+        pha
+        lda     #0              ; the payload: the band, its CRC from 0
+        sta     cl              ; (g; leading zeros leave it 0) and its
+        sta     ch              ; Fletcher sums (f1 tmp, f2 tmp+1)
+        sta     tmp
+        sta     tmp+1
+        tay
+@cp:    lda     (bp),y
+        sta     (optr),y
+        clc
+        adc     tmp
+        sta     tmp
+        clc
+        adc     tmp+1
+        sta     tmp+1
+        lda     (bp),y
+        CRCSTEP
+        iny
+        cpy     nn
+        bne     @cp
+        lda     cl
+        sta     st+S_G
+        lda     ch
+        sta     st+S_G+1
+        lda     tmp
+        sta     st+S_F1
+        lda     tmp+1
+        sta     st+S_F2
+        pla                     ; the packet CRC: header's * x^(8n) ^ g
+        tax
+        pla
+        jsr     mulxn
+        eor     st+S_G
+        sta     tmp
+        txa
+        eor     st+S_G+1
+        ldy     nn              ; after the payload: CRC high, low, the
+        sta     (optr),y        ; delimiter
+        iny
+        lda     tmp
+        sta     (optr),y
+        iny
+        lda     #0
+        sta     (optr),y
+        tya                     ; end = o + n + 2
+        clc
+        adc     optr
+        sta     optr
+        bcc     :+
+        inc     optr+1
+:       tya                     ; every 0x00 of pkt[1 .. n + 9] linked,
+        clc                     ; the delimiter's the last code
+        adc     #8
+        jsr     links0
+        jmp     go
+
 ; ---- helpers
+; the header at pkt + 1: BAND, frame, y0, codec A; cl:ch = the CRC of
+; b[3..5] on from hcrc (b[0..2]'s); optr = b + 6 (the payload)
+hdr:    ldy     #6
+        sta     (pk),y          ; b[5] = the codec
+        dey
+        lda     y0
+        sta     (pk),y
+        dey
+        lda     y0+1
+        sta     (pk),y
+        ldy     #TX_FRAME
+        lda     (tx),y
+        tax
+        iny
+        lda     (tx),y
+        ldy     #2
+        sta     (pk),y          ; b[1] = frame high
+        txa
+        iny
+        sta     (pk),y          ; b[2] = frame low
+        ldy     #1
+        lda     #2              ; R8_PKT_BAND
+        sta     (pk),y
+        ldy     #TX_HCRC
+        lda     (tx),y
+        sta     cl
+        iny
+        lda     (tx),y
+        sta     ch
+        ldy     #4
+@c:     lda     (pk),y
+        CRCSTEP
+        iny
+        cpy     #7
+        bne     @c
+        lda     pk
+        clc
+        adc     #7
+        sta     optr
+        lda     pk+1
+        adc     #0
+        sta     optr+1
+        rts
+
+; link the 0x00 of pkt[1 .. A) into a chain from the code at pkt[0]
+; (every one: the caller knows no block is over 254 bytes); X = the
+; offset of the last code
+links0: sta     left
+        ldx     #0
+        ldy     #1
+@l:     lda     (pk),y
+        bne     @n
+        sty     tmp
+        stx     tmp+1
+        tya                     ; *code = q - code
+        sec
+        sbc     tmp+1
+        ldy     tmp+1
+        sta     (pk),y
+        ldy     tmp             ; code = q
+        ldx     tmp
+@n:     iny
+        cpy     left
+        bne     @l
+        rts
+
 ; link the 0x00 at optr + A into s's chain: carry set (and nothing
 ; done) when it is more than 254 bytes after the last code
 linko:  clc
@@ -713,16 +800,19 @@ fcrcmul:
         tax
         dey
         lda     (tx),y
-        jsr     pushax
-        ldy     #TX_XN+1
-        lda     (tx),y
-        tax
-        dey
-        lda     (tx),y
-        jsr     _r8_crc16_mul
+        jsr     mulxn
         ldy     #TX_FCRC
         sta     (tx),y
         iny
         txa
         sta     (tx),y
         rts
+
+; A/X = r8_crc16_mul(A/X, tx->xn): a CRC shifted over the band's n bytes
+mulxn:  jsr     pushax
+        ldy     #TX_XN+1
+        lda     (tx),y
+        tax
+        dey
+        lda     (tx),y
+        jmp     _r8_crc16_mul
