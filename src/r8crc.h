@@ -59,6 +59,11 @@ unsigned r8_tx_zeros_c(const r8_u8 *p, unsigned n);
 #ifdef R8_ASM_TXBAND
 /* src/wire.c's r8_tx_band when a port links its own (R8_ASM_TXBAND) */
 int r8_tx_band_c(r8_tx *tx, const r8_fb *band);
+/* the port's packet send (with its r8_tx_band; src/wire.c R8_ASM_TXPKT):
+ * the body tx->pkt[1 .. 1+n), n + 4 < 255, gets its CRC-16 (from
+ * R8_CRC16_INIT, big-endian), is COBS-encoded in place (pkt[0] the first
+ * code) with the delimiter, and goes out in one put; tx->bytes += n + 4 */
+void r8_tx_pkt(r8_tx *tx, unsigned n);
 #endif
 
 #if defined(R8_ASM_WIRE)

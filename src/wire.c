@@ -107,6 +107,16 @@ static const r8_u8 delim = 0;
 #define TX_ASM_ALL 1
 #endif
 
+/* R8_ASM_TXPKT (a port's firmware flag, with R8_TXBAND_ALL): the port's
+ * r8_tx_pkt (src/r8crc.h) sends the packets tx_send is then left with,
+ * FRAME_START and FRAME_END (all = 1, under 250 bytes: TX_SHORT), so
+ * tx_send's C leaves the firmware too. */
+#define TX_PKT_ASM 0
+#if TX_ASM_ALL && defined(R8_ASM_TXPKT)
+#undef TX_PKT_ASM
+#define TX_PKT_ASM 1
+#endif
+
 typedef r8_tx_st tx_st;
 
 /* big-endian 16 bits; PUT16 in line on the per-band paths (v is read
@@ -125,6 +135,7 @@ static void out(register r8_tx *tx, const r8_u8 *p, unsigned n)
     tx->bytes += n;
 }
 
+#if !TX_PKT_ASM
 static void count_put(void *ctx, const r8_u8 *p, unsigned n)
 {
     out((r8_tx *)ctx, p, n);
@@ -142,6 +153,7 @@ static void tx_unlink(tx_st *s)
         }
     s->code = 0;
 }
+#endif
 
 #if !defined(R8_NO_RLE) || !defined(R8_ASM_WIRE)
 /* Link the 0x00 at q, after every zero linked so far: it takes the
@@ -161,6 +173,7 @@ static r8_u8 tx_link1(tx_st *s, r8_u8 *q)
 }
 #endif
 
+#if !TX_PKT_ASM
 /* tx_link on the hot paths: inline in the AVR build (where the band
  * walk's glue is the cost), a call elsewhere (where code size is). */
 #ifdef R8_ASM_WIRE
@@ -223,6 +236,10 @@ static void tx_send(register r8_tx *tx, register tx_st *s, unsigned n, r8_u8 all
         out(tx, &delim, 1);
     }
 }
+#else
+/* (s: the caller's, unused; all = 1: the band path is the port's) */
+#define tx_send(tx, s, n, all) ((void)(s), (void)(all), r8_tx_pkt(tx, n))
+#endif /* !TX_PKT_ASM */
 
 #if !defined(R8_NO_HUFF) || !defined(R8_NO_LZW)
 #define TX_MORE
