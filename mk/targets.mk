@@ -303,8 +303,10 @@ FWK_avr1284    = $(AVR_KDEFS)
 # (the Z80's: whether project_z80.s hands r8_project_recip its rare points)
 FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT)
 # (the 6502's: txband_6502.s takes every band of the fixed stream, raw
-# too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL)
-FWK_6502       = -DR8_TXBAND_ALL
+# too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL; and its
+# r8_tx_pkt sends FRAME_START / FRAME_END, so tx_send goes too:
+# R8_ASM_TXPKT)
+FWK_6502       = -DR8_TXBAND_ALL -DR8_ASM_TXPKT
 define XPROG
 XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) ports/xbuild.sh
 XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))
