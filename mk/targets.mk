@@ -69,8 +69,9 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # together: bench/kern6502.py builds without each) - R8_ASM_MUL16
 # mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
 # R8_ASM_PROJECT proj_6502.s, R8_ASM_EDGE edge_6502.s, R8_ASM_WIRE
-# wire_6502.s, R8_ASM_TXBAND txband_6502.s (r8_tx_band; needs
-# wire_6502.s), R8_ASM_SCANX scanx_6502.s (r8_scanx_fill), R8_ASM_FILL
+# wire_6502.s and wirec_6502.s (its C entries), R8_ASM_TXBAND
+# txband_6502.s (r8_tx_band, r8_tx_pkt; needs wire_6502.s; its offsets
+# for the test in txoffs_6502.s), R8_ASM_SCANX scanx_6502.s (r8_scanx_fill), R8_ASM_FILL
 # fill_6502.s (r8k_fill); mul_6502.s is their
 # quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
 # long multiplies.  tests/c/test_mul.c, test_kern.c, test_wirek.c,

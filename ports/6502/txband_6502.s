@@ -28,9 +28,9 @@
 ; firmware built with -DR8_ASM_TXPKT too: FRAME_START and FRAME_END.
 ; tests/c/test_txband.c compares the two on random frames in sim65,
 ; r8_tx_pkt with tx_send on random bodies, and the r8_tx / r8_fb
-; offsets below with the C compiler's (r8_txband_offs).
+; offsets below with the C compiler's (r8_txband_offs, txoffs_6502.s).
 
-        .export         _r8_tx_band, _r8_tx_pkt, _r8_txband_offs
+        .export         _r8_tx_band, _r8_tx_pkt
         .import         _r8_tx_band_c, _r8_crc16_mul
         .import         txrun, txlit, THI, TLO
         .import         pushax, jmpvec
@@ -70,13 +70,11 @@ S_PKT   = 4
 S_CODE  = 6
 S_G     = 8
 
-        .rodata
-; the offsets above, in the order tests/c/test_txband.c checks them
-_r8_txband_offs:
-        .byte   TX_FORMAT, TX_WIDTH, TX_HEIGHT, TX_BAND, TX_CODEC, TX_PUT, TX_CTX
-        .byte   TX_PKT, TX_FP, TX_BANDB, TX_XN, TX_NEXTY, TX_NEXTIDX, TX_FRAME
-        .byte   TX_SENT, TX_FCRC, TX_HCRC, TX_FULL, TX_INFRAME, TX_BYTES, TX_RAW
-        .byte   FB_BUF, FB_WIDTH, FB_Y0, FB_FORMAT
+; (for txoffs_6502.s's table r8_txband_offs, test only)
+        .export         TX_FORMAT, TX_WIDTH, TX_HEIGHT, TX_BAND, TX_CODEC, TX_PUT
+        .export         TX_CTX, TX_PKT, TX_FP, TX_BANDB, TX_XN, TX_NEXTY, TX_NEXTIDX
+        .export         TX_FRAME, TX_SENT, TX_FCRC, TX_HCRC, TX_FULL, TX_INFRAME
+        .export         TX_BYTES, TX_RAW, FB_BUF, FB_WIDTH, FB_Y0, FB_FORMAT
 
         .zeropage
 tx:     .res    2               ; the r8_tx
