@@ -26,9 +26,9 @@ ALL_ASM = sorted(f for f in os.listdir(os.path.join(ROOT, "ports", "6502")) if f
 VARIANTS = [
     ("all kernels, gc65 (the build)", {}),
     ("without r8k_trap (R8_ASM_TRAP)", {"defs": ["R8_ASM_TRAP"], "asm": ["trap_6502.s"]}),
-    ("without r8_tx_band (R8_ASM_TXBAND)", {"defs": ["R8_ASM_TXBAND"], "asm": ["txband_6502.s"]}),
+    ("without r8_tx_band (R8_ASM_TXBAND)", {"defs": ["R8_ASM_TXBAND"], "asm": ["txband_6502.s", "txoffs_6502.s"]}),
     ("without the wire kernels (R8_ASM_WIRE, R8_ASM_TXBAND)",
-     {"defs": ["R8_ASM_WIRE", "R8_ASM_TXBAND"], "asm": ["wire_6502.s", "txband_6502.s"]}),
+     {"defs": ["R8_ASM_WIRE", "R8_ASM_TXBAND"], "asm": ["wire_6502.s", "wirec_6502.s", "txband_6502.s", "txoffs_6502.s"]}),
     ("without r8_scanx_fill (R8_ASM_SCANX)", {"defs": ["R8_ASM_SCANX"], "asm": ["scanx_6502.s"]}),
     ("without r8k_fill (R8_ASM_FILL)", {"defs": ["R8_ASM_FILL"], "asm": ["fill_6502.s"]}),
     ("without r8k_xform (R8_ASM_XFORM)", {"defs": ["R8_ASM_XFORM"], "asm": ["xform_6502.s"]}),

@@ -69,8 +69,9 @@ AVR_CFLAGS := -std=c89 -pedantic -Wall -Wextra -Werror -Os -mcall-prologues -mst
 # together: bench/kern6502.py builds without each) - R8_ASM_MUL16
 # mul16_6502.s, R8_ASM_TRAP trap_6502.s, R8_ASM_XFORM xform_6502.s,
 # R8_ASM_PROJECT proj_6502.s, R8_ASM_EDGE edge_6502.s, R8_ASM_WIRE
-# wire_6502.s, R8_ASM_TXBAND txband_6502.s (r8_tx_band; needs
-# wire_6502.s), R8_ASM_SCANX scanx_6502.s (r8_scanx_fill), R8_ASM_FILL
+# wire_6502.s and wirec_6502.s (its C entries), R8_ASM_TXBAND
+# txband_6502.s (r8_tx_band, r8_tx_pkt; needs wire_6502.s; its offsets
+# for the test in txoffs_6502.s), R8_ASM_SCANX scanx_6502.s (r8_scanx_fill), R8_ASM_FILL
 # fill_6502.s (r8k_fill); mul_6502.s is their
 # quarter-square multiply, rtmul_6502.s replaces cc65's runtime int and
 # long multiplies.  tests/c/test_mul.c, test_kern.c, test_wirek.c,
@@ -303,8 +304,10 @@ FWK_avr1284    = $(AVR_KDEFS)
 # (the Z80's: whether project_z80.s hands r8_project_recip its rare points)
 FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT)
 # (the 6502's: txband_6502.s takes every band of the fixed stream, raw
-# too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL)
-FWK_6502       = -DR8_TXBAND_ALL
+# too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL; and its
+# r8_tx_pkt sends FRAME_START / FRAME_END, so tx_send goes too:
+# R8_ASM_TXPKT)
+FWK_6502       = -DR8_TXBAND_ALL -DR8_ASM_TXPKT
 define XPROG
 XDEPS_$(1) := $(XB)/$(1)/obj/$(PLAT_$(1)).$(OBJ_$(1)) $(XB)/$(1)/$(LIBA_$(1)) ports/xbuild.sh
 XSCENE_OBJS_$(1) := $(XSCENES:%=$(XB)/$(1)/obj/scene_%.$(OBJ_$(1)))

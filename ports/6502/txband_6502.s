@@ -24,10 +24,13 @@
 ; (-DR8_TXBAND_ALL, mk/targets.mk FWK_6502) then never hands a band of
 ; its stream on but one out of order, and links src/wire.c's relay in
 ; place of the C band path.
-; tests/c/test_txband.c compares the two on random frames in sim65, and
-; the r8_tx / r8_fb offsets below with the C compiler's (r8_txband_offs).
+; r8_tx_pkt (src/r8crc.h) is tx_send's all = 1 path, for such a
+; firmware built with -DR8_ASM_TXPKT too: FRAME_START and FRAME_END.
+; tests/c/test_txband.c compares the two on random frames in sim65,
+; r8_tx_pkt with tx_send on random bodies, and the r8_tx / r8_fb
+; offsets below with the C compiler's (r8_txband_offs, txoffs_6502.s).
 
-        .export         _r8_tx_band, _r8_txband_offs
+        .export         _r8_tx_band, _r8_tx_pkt
         .import         _r8_tx_band_c, _r8_crc16_mul
         .import         txrun, txlit, THI, TLO
         .import         pushax, jmpvec
@@ -67,13 +70,11 @@ S_PKT   = 4
 S_CODE  = 6
 S_G     = 8
 
-        .rodata
-; the offsets above, in the order tests/c/test_txband.c checks them
-_r8_txband_offs:
-        .byte   TX_FORMAT, TX_WIDTH, TX_HEIGHT, TX_BAND, TX_CODEC, TX_PUT, TX_CTX
-        .byte   TX_PKT, TX_FP, TX_BANDB, TX_XN, TX_NEXTY, TX_NEXTIDX, TX_FRAME
-        .byte   TX_SENT, TX_FCRC, TX_HCRC, TX_FULL, TX_INFRAME, TX_BYTES, TX_RAW
-        .byte   FB_BUF, FB_WIDTH, FB_Y0, FB_FORMAT
+; (for txoffs_6502.s's table r8_txband_offs, test only)
+        .export         TX_FORMAT, TX_WIDTH, TX_HEIGHT, TX_BAND, TX_CODEC, TX_PUT
+        .export         TX_CTX, TX_PKT, TX_FP, TX_BANDB, TX_XN, TX_NEXTY, TX_NEXTIDX
+        .export         TX_FRAME, TX_SENT, TX_FCRC, TX_HCRC, TX_FULL, TX_INFRAME
+        .export         TX_BYTES, TX_RAW, FB_BUF, FB_WIDTH, FB_Y0, FB_FORMAT
 
         .zeropage
 tx:     .res    2               ; the r8_tx
@@ -503,7 +504,16 @@ go:     jsr     commit
         ldy     #TX_FULL
         lda     (tx),y
         beq     done
-@send:  lda     optr            ; the packet: end + 1 - pkt bytes
+@send:  ldy     #TX_SENT        ; tx->sent++ (before the put, which
+        lda     (tx),y          ; does not read it: the put below is
+        clc                     ; r8_tx_pkt's too)
+        adc     #1
+        sta     (tx),y
+        iny
+        lda     (tx),y
+        adc     #0
+        sta     (tx),y
+        lda     optr            ; the packet: end + 1 - pkt bytes
         sec
         sbc     pk
         sta     tmp
@@ -511,9 +521,10 @@ go:     jsr     commit
         sbc     pk+1
         sta     tmp+1
         inc     tmp
-        bne     :+
+        bne     pput
         inc     tmp+1
-:       ldy     #TX_CTX+1       ; put(ctx, pkt, len)
+; put(ctx, pkt, tmp), tx->bytes += tmp; pop tx, return 0
+pput:   ldy     #TX_CTX+1       ; put(ctx, pkt, len)
         lda     (tx),y
         tax
         dey
@@ -535,15 +546,6 @@ go:     jsr     commit
         lda     tmp
         ldx     tmp+1
         jsr     add32
-        ldy     #TX_SENT        ; tx->sent++
-        lda     (tx),y
-        clc
-        adc     #1
-        sta     (tx),y
-        iny
-        lda     (tx),y
-        adc     #0
-        sta     (tx),y
 done:   lda     #2              ; pop tx; R8_OK
         clc
         adc     sp
@@ -553,6 +555,57 @@ done:   lda     #2              ; pop tx; R8_OK
 :       lda     #0
         tax
         rts
+
+; void r8_tx_pkt(r8_tx *tx, unsigned n) (src/r8crc.h; src/wire.c
+; R8_ASM_TXPKT): n in A (n + 4 < 255), tx at (sp).  tx_send's all = 1
+; path, left with FRAME_START and FRAME_END (two a frame: small, not
+; fast): the body pkt[1 .. n] gets its CRC-16 from R8_CRC16_INIT, high
+; byte first, and the delimiter after it; every 0x00 of pkt[1 .. n + 3]
+; is linked by links0 (no block can be over 254 bytes), the delimiter's
+; the last code; one put of n + 4 bytes, counted in tx->bytes.
+_r8_tx_pkt:
+        sta     nn
+        ldy     #1
+        lda     (sp),y
+        sta     tx+1
+        dey
+        lda     (sp),y
+        sta     tx
+        ldy     #TX_PKT
+        lda     (tx),y
+        sta     pk
+        iny
+        lda     (tx),y
+        sta     pk+1
+        lda     #$FF            ; R8_CRC16_INIT
+        sta     cl
+        sta     ch
+        inc     nn              ; nn = n + 1, the body's end
+        ldy     #1
+@c:     cpy     nn
+        beq     @e
+        lda     (pk),y
+        CRCSTEP
+        iny
+        bne     @c
+@e:     lda     ch              ; pkt[n + 1], pkt[n + 2] = the CRC,
+        sta     (pk),y          ; pkt[n + 3] = 0
+        iny
+        lda     cl
+        sta     (pk),y
+        iny
+        lda     #0
+        sta     (pk),y
+        iny
+        tya
+        jsr     links0
+        ldx     #0              ; n + 4 bytes
+        stx     tmp+1
+        lda     nn
+        clc
+        adc     #3
+        sta     tmp
+        jmp     pput
 
 ; ---- RLE does not pay: the raw packet (tx_band's from == b path), if
 ; short enough for its COBS chain to hold (n + 6 + 2 < 250), else the C

@@ -1,7 +1,9 @@
 ; wire_6502.s - the wire encoder's kernels (src/r8crc.h) for the 6502 (ca65,
 ; issue 10): r8_crc16_update, r8_crc16_mul, r8_tx_zeros, r8_tx_run,
-; r8_tx_lit.  Built into the 6502 library with -DR8_ASM_WIRE
-; (mk/targets.mk); the C89 references are the *_c functions of
+; r8_tx_lit (the last three's C entries are in wirec_6502.s, a module
+; a firmware without wire.c's C band path leaves out; here txrun and
+; txlit, which txband_6502.s calls).  Built into the 6502 library with
+; -DR8_ASM_WIRE (mk/targets.mk); the C89 references are the *_c functions of
 ; src/crc16.c and src/wire.c, and tests/c/test_wirek.c compares the two
 ; in sim65 on random inputs.  ports/avr/wire_avr.S is the AVR version.
 ;
@@ -11,10 +13,9 @@
 ; r8_tx_st (layout fixed by src/r8crc.h): crc +0, f1 +2, f2 +3, pkt +4,
 ; code +6, g +8.
 
-        .export         _r8_crc16_update, _r8_crc16_mul, _r8_tx_zeros
-        .export         _r8_tx_run, _r8_tx_lit
-        .export         txrun, txlit, THI, TLO      ; for txband_6502.s
-        .exportzp       ptr, optr, sptr, ch, cl, kk, cnt
+        .export         _r8_crc16_update, _r8_crc16_mul
+        .export         txrun, txlit, THI, TLO      ; txband, wirec
+        .exportzp       ptr, optr, sptr, ch, cl, kk, cnt, nlo, nhi
         .import         _r8_crc16_shift, pushax
         .importzp       sp
         .constructor    crc_init
@@ -166,72 +167,13 @@ _r8_crc16_mul:
         bne     @bit
         rts
 
-; unsigned r8_tx_zeros(const r8_u8 *p, unsigned n): the 0x00 bytes of
-; p[0..n) before the first other.  n in A/X, p at (sp)+0.  ~13 cycles a
-; byte.
-_r8_tx_zeros:
-        sta     nlo
-        stx     nhi
-        ldy     #1
-        lda     (sp),y
-        sta     ptr+1
-        dey
-        lda     (sp),y
-        sta     ptr
-        POPN    2
-        ldx     #0              ; whole pages counted
-        ldy     #0
-@pg:    cpx     nhi
-        beq     @part
-@full:  lda     (ptr),y
-        bne     @found
-        iny
-        bne     @full
-        inc     ptr+1
-        inx
-        jmp     @pg
-@part:  cpy     nlo
-        beq     @found
-@lp:    lda     (ptr),y
-        bne     @found
-        iny
-        cpy     nlo
-        bne     @lp
-@found: tya                     ; X pages + Y
-        rts
-
 ; ---- the RLE tokens
-
-; load s, o, p from the C stack: p at (sp)+off, o at +2, s at +4
-.macro  ARGS3   off
-        ldy     #off+5
-        lda     (sp),y
-        sta     sptr+1
-        dey
-        lda     (sp),y
-        sta     sptr
-        dey
-        lda     (sp),y
-        sta     optr+1
-        dey
-        lda     (sp),y
-        sta     optr
-        dey
-        lda     (sp),y
-        sta     ptr+1
-        dey
-        lda     (sp),y
-        sta     ptr
-.endmacro
 
 ; r8_u8 r8_tx_run(r8_tx_st *s, r8_u8 *o, const r8_u8 *p, r8_u8 k)
 ;   k in A; p at (sp)+0, o +2, s +4.  The run at p (3 <= its length
 ; <= k), as [count, value] at o; feeds s->crc, s->g, s->f1, s->f2.
-_r8_tx_run:
-        sta     kk
-        ARGS3   0
-        POPN    6
-; txrun: the same with k in kk, p, o, s in ptr, optr, sptr (no stack)
+; (its C entry _r8_tx_run: wirec_6502.s)
+; txrun: k in kk, p, o, s in ptr, optr, sptr (no stack)
 txrun:  ldy     #0
         lda     (ptr),y
         sta     vv
@@ -342,14 +284,8 @@ txrun:  ldy     #0
 ; s->crc, s->f1, s->f2; each 0x00 linked into the COBS chain (s->code)
 ; unless a block got longer than 254 (then bit 7 of the result, and
 ; the chain stops being linked); s->g = (g ^ Pb) * x^(8L) ^ Pa.
-_r8_tx_lit:
-        sta     cnt
-        ldy     #0
-        lda     (sp),y
-        sta     kk
-        ARGS3   1
-        POPN    7
-; txlit: the same with c in cnt, k in kk, p, o, s in ptr, optr, sptr
+; (its C entry _r8_tx_lit: wirec_6502.s)
+; txlit: c in cnt, k in kk, p, o, s in ptr, optr, sptr (no stack)
 txlit:  ldx     kk              ; the first run of 3 among k positions
         beq     @len
         ldy     #0

@@ -243,6 +243,47 @@ static void test_txband(void)
     TEST_ASSERT_TRUE(raw_bands >= 30u); /* (39 with this seed) */
 }
 
+#ifdef TXB_COUNT
+/* r8_tx_pkt (the firmware's packet send, R8_ASM_TXPKT) against tx_send
+ * (tx, s, n, 1): random bodies of 0..246 bytes, zeros at random places
+ * (none to all): the same bytes in one put, the same tx->bytes */
+static void test_pkt(void)
+{
+    r8_tx_cfg c;
+    r8_tx ta, tb;
+    tx_st s;
+    unsigned i, k, n, zr;
+    c.format = R8_FMT_PAGE1;
+    c.width = 255;
+    c.height = 16;
+    c.band = 8;
+    c.codec = R8_CODEC_RLE;
+    c.full_period = 0;
+    c.dirty = 0;
+    c.palette = 0;
+    c.npal = 0;
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&ta, &c, scr_a, sizeof scr_a, cap_a, 0));
+    TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_init(&tb, &c, scr_b, sizeof scr_b, cap_b, 0));
+    TEST_ASSERT_TRUE(ta.pkt_size >= 251u);
+    for (i = 0; i < 300; i++) {
+        n = (i < 5) ? i : (unsigned)rnd8() % 247u;
+        if (i == 5)
+            n = 246;
+        zr = 1u + rnd8() % 9u; /* 1: every byte 0; 9: no 0 */
+        for (k = 1; k <= n; k++)
+            ta.pkt[k] = tb.pkt[k] = (zr < 9u && rnd8() % zr == 0u) ? 0u : (r8_u8)(1u + rnd8() % 255u);
+        len_a = len_b = 0;
+        ta.bytes = tb.bytes = 1000ul * i;
+        r8_tx_pkt(&ta, n);
+        tx_send(&tb, &s, n, 1);
+        TEST_ASSERT_EQUAL_UINT(n + 4u, len_a);
+        TEST_ASSERT_EQUAL_UINT(len_b, len_a);
+        TEST_ASSERT_EQUAL_MEMORY(str_b, str_a, len_a);
+        TEST_ASSERT_TRUE(ta.bytes == tb.bytes);
+    }
+}
+#endif
+
 #ifdef R8_ASM_TXBAND
 extern const r8_u8 r8_txband_offs[];
 /* the kernel's offsets of r8_tx and r8_fb are the compiler's */
@@ -267,6 +308,9 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_txband);
+#ifdef TXB_COUNT
+    RUN_TEST(test_pkt);
+#endif
 #ifdef R8_ASM_TXBAND
     RUN_TEST(test_offsets);
 #endif
