@@ -9,17 +9,24 @@
 ;;   in a frame, the band the encoder expects next (y0 = next_y), a whole
 ;;   band (height - y0 >= band), the frame's width and format, codec RLE,
 ;;   8 <= band bytes <= 255; and the RLE payload smaller than the band,
-;;   with the COBS chain never broken (no block of 254 non-zero bytes).
+;;   with the COBS chain never broken (no block of 254 non-zero bytes),
+;;   or else (RLE does not pay) a packet of under 250 bytes, sent raw.
 ;;
 ;; Nothing of tx changes before that is known (only the packet scratch
 ;; is written), so the C version then does the whole band itself.  What
 ;; is left is what src/wire.c's r8_tx_band, tx_band, tx_rle and tx_send
-;; (all = 0) do on that path: the header, the RLE tokens (r8_tx_run and
-;; r8_tx_lit of wire_z80.s: packet CRC, the band's CRC from 0, Fletcher
-;; sums, COBS links), the fingerprint, the frame CRC, the skip of an
-;; unchanged band in a delta frame, and one put of the framed packet.
-;; tests/c/test_txband.c compares the two on random frames in ucsim, and
-;; the r8_tx / r8_fb offsets below with the C compiler's (r8_txband_offs).
+;; do on that path: the header, the RLE tokens (r8_tx_run and r8_tx_lit
+;; of wire_z80.s: packet CRC, the band's CRC from 0, Fletcher sums, COBS
+;; links) or the raw bytes (tx_send's all = 1), the fingerprint, the
+;; frame CRC, the skip of an unchanged band in a delta frame, and one put
+;; of the framed packet.  So every band of the demo firmware's stream
+;; (128 x 8 bands, 137-byte packets) that comes in order is taken here:
+;; it builds src/wire.c with R8_TXBAND_ALL (FWK_z80, mk/targets.mk),
+;; which leaves out the C band path (tx_band, tx_rle) and links a relay
+;; r8_tx_band_c for a band out of order.
+;; tests/c/test_txband.c compares the two on random frames in ucsim (and
+;; counts the bands handed on), and the r8_tx / r8_fb offsets below with
+;; the C compiler's (r8_txband_offs).
 ;;
 ;; sdcc's __sdcccall(1): tx in HL, band in DE, the int result in DE; IX
 ;; (the caller's frame pointer) is kept: here it holds tx.  The callees
@@ -206,49 +213,8 @@ _r8_tx_band:
 encode: ld      l, TX_PKT (ix)  ; s.pkt = s.code = pkt
         ld      h, TX_PKT+1 (ix)
         ld      (st+S_PKT), hl
-        inc     hl              ; header b = pkt + 1: BAND, frame, y0, RLE
-        ld      (hl), #2        ; R8_PKT_BAND
-        inc     hl
-        ld      a, TX_FRAME+1 (ix)
-        ld      (hl), a
-        inc     hl
-        ld      a, TX_FRAME (ix)
-        ld      (hl), a
-        inc     hl
-        ld      de, (y0)
-        ld      (hl), d
-        inc     hl
-        ld      (hl), e
-        inc     hl
-        ld      (hl), #1        ; R8_CODEC_RLE
-        inc     hl
-        ld      (op), hl        ; o = b + 6
-        ld      c, TX_HCRC (ix) ; s.crc = crc(hcrc, b[3..5])
-        ld      b, TX_HCRC+1 (ix)
-        ld      h, #>r8z_crctab
-        ld      a, d
-        CRCSTEP
-        ld      a, e
-        CRCSTEP
-        ld      a, #1
-        CRCSTEP
-        ld      (st+S_CRC), bc
-        ld      hl, (st+S_PKT)  ; the header's zeros (b[1..4]) linked
-        ld      d, h
-        ld      e, l            ; DE = code
-        inc     hl
-        ld      b, #4
-1$:     inc     hl
-        ld      a, (hl)
-        or      a, a
-        jr      nz, 2$
-        ld      a, l            ; *code = q - code (at most 5)
-        sub     a, e
-        ld      (de), a
-        ld      d, h
-        ld      e, l
-2$:     djnz    1$
-        ld      (st+S_CODE), de
+        ld      a, #1           ; R8_CODEC_RLE
+        call    hdr
         ld      hl, #0
         ld      (st+S_F1), hl   ; f1 = f2 = 0
         ld      (st+S_G), hl
@@ -269,7 +235,7 @@ zl:     ld      a, (zz)
 1$:     ld      (cnt), a
         ld      a, (room)
         sub     a, #2
-        jp      c, slow
+        jp      c, raw          ; no room: RLE does not pay
         ld      (room), a
         ld      hl, (op)        ; [c, 0]
         ld      a, (cnt)
@@ -316,7 +282,7 @@ tokens: ld      a, (left)
         jr      nz, lit
         ld      a, (room)       ; a run
         sub     a, #2
-        jp      c, slow
+        jp      c, raw
         ld      (room), a
         ld      a, (cnt)
         push    af
@@ -355,7 +321,7 @@ lit:    ld      a, (left)       ; B = k: where a run of 3 may start
         jr      z, 2$
         jr      nc, 3$
 2$:     cp      a, #2
-        jp      c, slow
+        jp      c, raw
         dec     a
         ld      c, a
         ld      (full), a
@@ -374,7 +340,7 @@ lit:    ld      a, (left)       ; B = k: where a run of 3 may start
         jp      nz, slow        ; the chain broke: the C does it
         ld      hl, #full
         cp      a, (hl)
-        jp      z, slow         ; no room
+        jp      z, raw          ; no room
         ld      (cnt), a
         ld      c, a
         ld      a, (room)       ; room -= c + 1
@@ -392,6 +358,62 @@ next:   ld      hl, #cnt
         ld      (left), a
         call    advp
         jp      tokens
+
+;; ---- RLE does not pay: the band raw (tx_band's from == b, tx_send's
+;; all = 1), when the packet (n + 6 + 2 bytes) is under 250 bytes, so no
+;; 0x00 is more than 254 bytes after the code before it and the chain
+;; cannot break (the C does a longer one).  What the RLE wrote is undone
+;; by writing it all again: the header (codec raw), its CRC and links;
+;; then one loop copies the band, CRCs it, sums it and links its zeros.
+;; The band's CRC from 0 (its leading zeros leave it 0, as the C's from
+;; src + z) comes from the packet CRC: g = Pa ^ Pb x^(8n) (Pb, Pa: before
+;; and after the payload).                          ~125 T a byte
+raw:    ld      a, (nn)
+        cp      a, #250-6-2
+        jp      nc, slow
+        xor     a, a            ; R8_CODEC_RAW
+        call    hdr             ; -> HL = b + 6, BC = Pb
+        ex      de, hl          ; main: HL = band, DE = o, B = the count
+        ld      hl, (bp)
+        push    bc
+        exx                     ; alternate: B:C = crc, E = f1, D = f2,
+        pop     bc              ; H = the table's page
+        ld      de, #0
+        ld      h, #>r8z_crctab
+        exx
+        ld      a, (nn)
+        ld      b, a
+1$:     ld      a, (hl)
+        ld      (de), a
+        or      a, a
+        call    z, rawz
+        inc     hl
+        inc     de
+        exx
+        ld      l, a
+        add     a, e            ; f1 += v, f2 += f1
+        ld      e, a
+        add     a, d
+        ld      d, a
+        ld      a, l
+        CRCSTEP
+        exx
+        djnz    1$
+        ld      (op), de
+        exx
+        ld      (st+S_F1), de
+        push    bc              ; Pa
+        exx
+        ld      de, (st+S_CRC)  ; Pb x^(8n)
+        call    xnmul
+        pop     bc
+        ld      (st+S_CRC), bc
+        ld      a, e            ; g
+        xor     a, c
+        ld      (st+S_G), a
+        ld      a, d
+        xor     a, b
+        ld      (st+S_G+1), a
 
 ;; ---- the payload is in: o = end - 2; the CRC, links, the last code
 sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
@@ -511,6 +533,73 @@ slow:   push    ix              ; the C version does it all: tx HL, band DE
 calliy: jp      (iy)
 
 ;; ---- helpers
+;; the header at b = pkt + 1: BAND, frame, y0, codec A; s.crc = crc(hcrc,
+;; b[3..5]) (BC too); its zeros (b[1..5]) linked from s.code = pkt (no
+;; code is more than 5 bytes back).  -> HL = o = b + 6
+hdr:    ld      hl, (st+S_PKT)
+        push    hl
+        inc     hl
+        ld      (hl), #2        ; R8_PKT_BAND
+        inc     hl
+        ld      c, TX_FRAME+1 (ix)
+        ld      (hl), c
+        inc     hl
+        ld      c, TX_FRAME (ix)
+        ld      (hl), c
+        inc     hl
+        ld      de, (y0)
+        ld      (hl), d
+        inc     hl
+        ld      (hl), e
+        inc     hl
+        ld      (hl), a
+        inc     hl
+        ld      (op), hl
+        ld      c, TX_HCRC (ix)
+        ld      b, TX_HCRC+1 (ix)
+        ld      h, #>r8z_crctab
+        push    af
+        ld      a, d
+        CRCSTEP
+        ld      a, e
+        CRCSTEP
+        pop     af
+        CRCSTEP
+        ld      (st+S_CRC), bc
+        pop     hl              ; DE = code = pkt
+        ld      d, h
+        ld      e, l
+        inc     hl
+        ld      a, #5
+1$:     inc     hl
+        ex      af, af'
+        ld      a, (hl)
+        or      a, a
+        jr      nz, 2$
+        ld      a, l            ; *code = q - code
+        sub     a, e
+        ld      (de), a
+        ld      d, h
+        ld      e, l
+2$:     ex      af, af'
+        dec     a
+        jr      nz, 1$
+        ld      (st+S_CODE), de
+        inc     hl
+        ret
+
+;; the raw loop's 0x00 at DE: *code = DE - code, code = DE (< 250 bytes
+;; on: no test); A = 0 again
+rawz:   push    hl
+        ld      hl, (st+S_CODE)
+        ld      a, e
+        sub     a, l
+        ld      (hl), a
+        ld      (st+S_CODE), de
+        pop     hl
+        xor     a, a
+        ret
+
 ;; link the 0x00 at o + A into s's chain: carry set (and nothing done)
 ;; when it is more than 254 bytes after the last code
 linko:  ld      hl, (op)
@@ -589,19 +678,30 @@ commit: ld      hl, (y0)
         ld      TX_RAW+3 (ix), a
         ret
 
-;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn), by the table xt of the
-;; multiples of xn (built when xn is not the one it holds: once for a
-;; stream, ~14 k T): with fcrc = fh x^8 + fl, fcrc xn = (fh xn) x^8 + fl
-;; xn, and the x^8 is the CRC table's zero-byte step.  ~190 T against
-;; ~850 for r8_crc16_mul (8 bands a frame: ~5 k T).
+;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn), by xnmul
 fcrcmul:
+        ld      e, TX_FCRC (ix)
+        ld      d, TX_FCRC+1 (ix)
+        call    xnmul
+        ld      TX_FCRC (ix), e
+        ld      TX_FCRC+1 (ix), d
+        ret
+
+;; DE = r8_crc16_mul(DE, tx->xn), by the table xt of the multiples of xn
+;; (built when xn is not the one it holds: once for a stream, ~14 k T):
+;; with a = ah x^8 + al, a xn = (ah xn) x^8 + al xn, and the x^8 is the
+;; CRC table's zero-byte step.  ~190 T against ~850 for r8_crc16_mul (8
+;; bands a frame: ~5 k T).
+xnmul:  push    de
         ld      e, TX_XN (ix)
         ld      d, TX_XN+1 (ix)
         ld      hl, (xtkey)
         or      a, a
         sbc     hl, de
         call    nz, xtbuild
-        ld      l, TX_FCRC+1 (ix) ; xt[fh]
+        pop     hl
+        ld      a, l            ; al
+        ld      l, h            ; xt[ah]
         ld      h, #0
         add     hl, hl
         ld      de, #xt
@@ -611,22 +711,23 @@ fcrcmul:
         ld      b, (hl)
         ld      h, #>r8z_crctab ; * x^8: (C ^ Th[B]) : Tl[B]
         ld      l, b
+        ld      b, a            ; (al)
         ld      a, (hl)
         xor     a, c
-        ld      b, a
         inc     h
         ld      c, (hl)
-        ld      l, TX_FCRC (ix) ; ^ xt[fl]
+        ld      l, b            ; ^ xt[al]
+        ld      b, a
         ld      h, #0
         add     hl, hl
         add     hl, de
         ld      a, (hl)
         xor     a, c
-        ld      TX_FCRC (ix), a
+        ld      e, a
         inc     hl
         ld      a, (hl)
         xor     a, b
-        ld      TX_FCRC+1 (ix), a
+        ld      d, a
         ret
 
 ;; xt[i] = i * xn mod P for xn = DE: xt[0] = 0, xt[1] = xn, then
