@@ -10,8 +10,29 @@
 #include "unity.h"
 #include "../../src/r8crc.h"
 
-#ifndef R8_ASM_TXBAND
-#define r8_tx_band_c r8_tx_band
+#ifdef R8_ASM_TXBAND
+/* src/wire.c compiled here (so the library's wire object is not linked)
+ * with its C r8_tx_band named ref_band; the r8_tx_band_c below, to which
+ * the kernel hands the bands it does not take, counts them */
+#define r8_tx_band_c ref_band
+#include "../../src/wire.c"
+#undef r8_tx_band_c
+#undef r8_tx_band
+static unsigned handed;
+int r8_tx_band_c(r8_tx *tx, const r8_fb *band)
+{
+    handed++;
+    return ref_band(tx, band);
+}
+/* 1: the port's kernel sends a band raw when its RLE does not pay (the
+ * Z80's); 0: it hands such a band on */
+#ifdef __SDCC
+#define TXBAND_RAW 1
+#else
+#define TXBAND_RAW 0
+#endif
+#else
+#define ref_band r8_tx_band
 #endif
 
 void setUp(void) {}
@@ -35,6 +56,10 @@ static r8_u8 str_a[STR], str_b[STR];
 static unsigned len_a, len_b;
 static r8_u8 dpkt[R8_DEC_PKT_BYTES(FBB)], dfb[FBB];
 static r8_dec dec;
+#ifdef R8_ASM_TXBAND
+static r8_u8 rle_buf[MAXW];
+static unsigned raw_taken; /* bands the kernel took and sent raw */
+#endif
 
 static void cap_a(void *ctx, const r8_u8 *p, unsigned n)
 {
@@ -60,11 +85,22 @@ static void cap_b(void *ctx, const r8_u8 *p, unsigned n)
 /* n bytes of kind k: 0 zeros, 1 zeros and runs, 2 runs and literals,
  * 3 literals without a run of 3 (no zeros: the COBS chain breaks at 254
  * bytes), 4 a few non-zero bytes in zeros, 5 literals then a run (no
- * zeros: compresses a little, the chain may break) */
+ * zeros: compresses a little, the chain may break), 6 literals with
+ * zeros, 0..4 of them leading, no run of 3 after them (RLE pays for 4
+ * leading zeros only: the raw path's zeros) */
 static void fill(r8_u8 *p, unsigned n, unsigned k)
 {
     unsigned i = 0, j, len;
     r8_u8 v;
+    if (k == 6) {
+        len = rnd8() % 5u;
+        j = rnd8() % 4u;
+        fill(p, n, 3);
+        for (i = 0; i < n; i++)
+            if (i < len || i % 4u == j)
+                p[i] = 0;
+        return;
+    }
     if (k == 5) {
         len = 3u + rnd8() % 20u;
         fill(p, n, 3);
@@ -105,6 +141,9 @@ static void run(unsigned cfgno)
     r8_tx ta, tb;
     r8_fb fb;
     unsigned f, i, idx, n, k, good = 0, order[3], nb;
+#ifdef R8_ASM_TXBAND
+    unsigned h0, raw, must;
+#endif
     int ra, rb, d;
     c.format = R8_FMT_PAGE1;
     c.width = widths[cfgno % (sizeof widths / sizeof widths[0])];
@@ -127,7 +166,7 @@ static void run(unsigned cfgno)
             if (i == nb - 1u && c.height % 8)
                 n = (unsigned)c.width; /* the partial band: one page */
             if (f == 0 || (rnd8() & 1u))
-                fill(frame + i * ta.band_bytes, n, rnd8() % 6u);
+                fill(frame + i * ta.band_bytes, n, rnd8() % 7u);
         }
         for (i = 0; i < nb; i++)
             order[i] = i;
@@ -147,8 +186,26 @@ static void run(unsigned cfgno)
             r8_fb_set_band(&fb, (r8_s16)(idx * 8u));
             for (k = 0; k < ta.band_bytes; k++)
                 band_buf[k] = frame[idx * ta.band_bytes + k];
+#ifdef R8_ASM_TXBAND
+            /* the kernel takes every band that comes in order, whole,
+             * codec RLE, in a packet (n + 6 + 2 bytes) under 250 bytes
+             * (unless, !TXBAND_RAW, its RLE does not pay): it hands on
+             * only bands out of order, a partial last one, codec raw,
+             * longer ones (and bands out of a frame, below) */
+            n = ta.band_bytes;
+            raw = r8_rle_encode(band_buf, n, rle_buf, n - 1u, &k) != R8_OK;
+            must = (r8_s16)(idx * 8u) == ta.next_y && !(idx == nb - 1u && c.height % 8) &&
+                   c.codec == R8_CODEC_RLE && n + 8u < 250u && (TXBAND_RAW || !raw);
+            h0 = handed;
+#endif
             ra = r8_tx_band(&ta, &fb);
-            rb = r8_tx_band_c(&tb, &fb);
+            rb = ref_band(&tb, &fb);
+#ifdef R8_ASM_TXBAND
+            if (must) {
+                TEST_ASSERT_EQUAL_UINT(h0, handed);
+                raw_taken += raw;
+            }
+#endif
             TEST_ASSERT_EQUAL_INT(rb, ra);
             TEST_ASSERT_EQUAL_INT(R8_OK, ra);
             same_state(&ta, &tb);
@@ -157,7 +214,13 @@ static void run(unsigned cfgno)
         /* a band the kernel refuses: not in a frame after the end */
         TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_frame_end(&ta));
         TEST_ASSERT_EQUAL_INT(R8_OK, r8_tx_frame_end(&tb));
+#ifdef R8_ASM_TXBAND
+        h0 = handed;
+#endif
         TEST_ASSERT_EQUAL_INT(R8_E_ARG, r8_tx_band(&ta, &fb));
+#ifdef R8_ASM_TXBAND
+        TEST_ASSERT_EQUAL_UINT(h0 + 1u, handed);
+#endif
         TEST_ASSERT_TRUE(len_a <= STR);
         TEST_ASSERT_EQUAL_UINT(len_b, len_a);
         TEST_ASSERT_EQUAL_MEMORY(str_b, str_a, len_a);
@@ -181,6 +244,10 @@ static void test_txband(void)
     unsigned i;
     for (i = 0; i < 14; i++)
         run(i);
+#ifdef R8_ASM_TXBAND
+    if (TXBAND_RAW) /* the kernel sent some raw (22 with this seed) */
+        TEST_ASSERT_TRUE(raw_taken >= 10u);
+#endif
 }
 
 #ifdef R8_ASM_TXBAND
