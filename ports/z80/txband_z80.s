@@ -104,6 +104,8 @@ left:   .ds     1               ; band bytes not encoded yet
 full:   .ds     1               ; a literal count that means "no room"
 cnt:    .ds     1               ; the token's bytes
 st:     .ds     10              ; the r8_tx_st of the packet
+hcrc:   .ds     2               ; the CRC after the RLE header (raw: Pb, g)
+hcode:  .ds     2               ; the chain after the header's links
 xtkey:  .ds     2               ; the xn xt is built for (0: none; xn != 0)
 xt:     .ds     512             ; xt[i] = i * xn mod P, i = 0..255 (low, high)
 
@@ -177,6 +179,15 @@ _r8_tx_band:
         sbc     hl, de
         jp      m, slow
 
+        ld      e, TX_XN (ix)   ; xt for this xn (fcrcmul)
+        ld      d, TX_XN+1 (ix)
+        ld      hl, (xtkey)
+        or      a, a
+        sbc     hl, de
+        call    nz, xtbuild
+        ld      hl, #0
+        ld      (st+S_F1), hl   ; f1 = f2 = 0
+        ld      (st+S_G), hl    ; g = 0 (a band of zeros: fcrcmul takes it)
         ld      l, TX_NEXTIDX (ix) ; fpp = tx->fp + 4 idx
         ld      h, TX_NEXTIDX+1 (ix)
         add     hl, hl
@@ -213,11 +224,51 @@ _r8_tx_band:
 encode: ld      l, TX_PKT (ix)  ; s.pkt = s.code = pkt
         ld      h, TX_PKT+1 (ix)
         ld      (st+S_PKT), hl
-        ld      a, #1           ; R8_CODEC_RLE
-        call    hdr
-        ld      hl, #0
-        ld      (st+S_F1), hl   ; f1 = f2 = 0
-        ld      (st+S_G), hl
+        inc     hl              ; header b = pkt + 1: BAND, frame, y0, RLE
+        ld      (hl), #2        ; R8_PKT_BAND
+        inc     hl
+        ld      a, TX_FRAME+1 (ix)
+        ld      (hl), a
+        inc     hl
+        ld      a, TX_FRAME (ix)
+        ld      (hl), a
+        inc     hl
+        ld      de, (y0)
+        ld      (hl), d
+        inc     hl
+        ld      (hl), e
+        inc     hl
+        ld      (hl), #1        ; R8_CODEC_RLE
+        inc     hl
+        ld      (op), hl        ; o = b + 6
+        ld      c, TX_HCRC (ix) ; s.crc = crc(hcrc, b[3..5])
+        ld      b, TX_HCRC+1 (ix)
+        ld      h, #>r8z_crctab
+        ld      a, d
+        CRCSTEP
+        ld      a, e
+        CRCSTEP
+        ld      a, #1
+        CRCSTEP
+        ld      (st+S_CRC), bc
+        ld      (hcrc), bc      ; (for the raw path)
+        ld      hl, (st+S_PKT)  ; the header's zeros (b[1..4]) linked
+        ld      d, h
+        ld      e, l            ; DE = code
+        inc     hl
+        ld      b, #4
+1$:     inc     hl
+        ld      a, (hl)
+        or      a, a
+        jr      nz, 2$
+        ld      a, l            ; *code = q - code (at most 5)
+        sub     a, e
+        ld      (de), a
+        ld      d, h
+        ld      e, l
+2$:     djnz    1$
+        ld      (st+S_CODE), de
+        ld      (hcode), de     ; (for the raw path)
         ld      hl, (bp)
         ld      (pp), hl
         ld      a, (nn)
@@ -362,20 +413,37 @@ next:   ld      hl, #cnt
 ;; ---- RLE does not pay: the band raw (tx_band's from == b, tx_send's
 ;; all = 1), when the packet (n + 6 + 2 bytes) is under 250 bytes, so no
 ;; 0x00 is more than 254 bytes after the code before it and the chain
-;; cannot break (the C does a longer one).  What the RLE wrote is undone
-;; by writing it all again: the header (codec raw), its CRC and links;
-;; then one loop copies the band, CRCs it, sums it and links its zeros.
-;; The band's CRC from 0 (its leading zeros leave it 0, as the C's from
-;; src + z) comes from the packet CRC: g = Pa ^ Pb x^(8n) (Pb, Pa: before
-;; and after the payload).                          ~125 T a byte
+;; cannot break (the C does a longer one).  The header stays, its links
+;; too (hcode: the chain after them), b[5] = R8_CODEC_RAW is linked, and
+;; its CRC is the RLE header's with the codec byte 1 -> 0: ^ T[1] =
+;; 0x1021 (the table step is linear).  Then one loop copies the band,
+;; CRCs it, sums it and links its zeros.  The band's CRC from 0 (its
+;; leading zeros leave it 0, as the C's from src + z) comes from the
+;; packet CRC: g = Pb x^(8n) ^ Pa (Pb, Pa: before and after the band),
+;; fcrcmul's, with IX at hcrc - TX_FCRC.              ~125 T a byte
 raw:    ld      a, (nn)
         cp      a, #250-6-2
         jp      nc, slow
-        xor     a, a            ; R8_CODEC_RAW
-        call    hdr             ; -> HL = b + 6, BC = Pb
-        ex      de, hl          ; main: HL = band, DE = o, B = the count
-        ld      hl, (bp)
+        ld      hl, (hcode)
+        ld      (st+S_CODE), hl
+        ld      de, (st+S_PKT)
+        ld      hl, #6
+        add     hl, de
+        ex      de, hl          ; DE = b + 5
+        xor     a, a
+        ld      (de), a         ; R8_CODEC_RAW
+        call    rawz
+        inc     de              ; main: DE = o, HL = band, B = the count
+        ld      hl, (hcrc)      ; Pb
+        ld      a, h
+        xor     a, #0x10
+        ld      b, a
+        ld      a, l
+        xor     a, #0x21
+        ld      c, a
+        ld      (hcrc), bc
         push    bc
+        ld      hl, (bp)
         exx                     ; alternate: B:C = crc, E = f1, D = f2,
         pop     bc              ; H = the table's page
         ld      de, #0
@@ -402,18 +470,15 @@ raw:    ld      a, (nn)
         ld      (op), de
         exx
         ld      (st+S_F1), de
-        push    bc              ; Pa
-        exx
-        ld      de, (st+S_CRC)  ; Pb x^(8n)
-        call    xnmul
-        pop     bc
         ld      (st+S_CRC), bc
-        ld      a, e            ; g
-        xor     a, c
-        ld      (st+S_G), a
-        ld      a, d
-        xor     a, b
-        ld      (st+S_G+1), a
+        ld      (st+S_G), bc    ; Pa
+        exx
+        push    ix
+        ld      ix, #hcrc-TX_FCRC
+        call    fcrcmul         ; hcrc = Pb x^(8n) ^ Pa
+        pop     ix
+        ld      hl, (hcrc)
+        ld      (st+S_G), hl
 
 ;; ---- the payload is in: o = end - 2; the CRC, links, the last code
 sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
@@ -477,14 +542,6 @@ sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
         push    bc
         call    fcrcmul         ; fcrc = fcrc x^(8n) ^ g
         pop     bc
-        ld      hl, #st+S_G
-        ld      a, TX_FCRC (ix)
-        xor     a, (hl)
-        ld      TX_FCRC (ix), a
-        inc     hl
-        ld      a, TX_FCRC+1 (ix)
-        xor     a, (hl)
-        ld      TX_FCRC+1 (ix), a
         ld      a, c            ; changed, or a full frame?
         or      a, TX_FULL (ix)
         jr      z, done
@@ -533,61 +590,6 @@ slow:   push    ix              ; the C version does it all: tx HL, band DE
 calliy: jp      (iy)
 
 ;; ---- helpers
-;; the header at b = pkt + 1: BAND, frame, y0, codec A; s.crc = crc(hcrc,
-;; b[3..5]) (BC too); its zeros (b[1..5]) linked from s.code = pkt (no
-;; code is more than 5 bytes back).  -> HL = o = b + 6
-hdr:    ld      hl, (st+S_PKT)
-        push    hl
-        inc     hl
-        ld      (hl), #2        ; R8_PKT_BAND
-        inc     hl
-        ld      c, TX_FRAME+1 (ix)
-        ld      (hl), c
-        inc     hl
-        ld      c, TX_FRAME (ix)
-        ld      (hl), c
-        inc     hl
-        ld      de, (y0)
-        ld      (hl), d
-        inc     hl
-        ld      (hl), e
-        inc     hl
-        ld      (hl), a
-        inc     hl
-        ld      (op), hl
-        ld      c, TX_HCRC (ix)
-        ld      b, TX_HCRC+1 (ix)
-        ld      h, #>r8z_crctab
-        push    af
-        ld      a, d
-        CRCSTEP
-        ld      a, e
-        CRCSTEP
-        pop     af
-        CRCSTEP
-        ld      (st+S_CRC), bc
-        pop     hl              ; DE = code = pkt
-        ld      d, h
-        ld      e, l
-        inc     hl
-        ld      a, #5
-1$:     inc     hl
-        ex      af, af'
-        ld      a, (hl)
-        or      a, a
-        jr      nz, 2$
-        ld      a, l            ; *code = q - code
-        sub     a, e
-        ld      (de), a
-        ld      d, h
-        ld      e, l
-2$:     ex      af, af'
-        dec     a
-        jr      nz, 1$
-        ld      (st+S_CODE), de
-        inc     hl
-        ret
-
 ;; the raw loop's 0x00 at DE: *code = DE - code, code = DE (< 250 bytes
 ;; on: no test); A = 0 again
 rawz:   push    hl
@@ -678,30 +680,13 @@ commit: ld      hl, (y0)
         ld      TX_RAW+3 (ix), a
         ret
 
-;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn), by xnmul
+;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn) ^ s.g, by the table xt of
+;; the multiples of xn (built for tx->xn on the way in: at a stream's
+;; first band, ~14 k T): with fcrc = fh x^8 + fl, fcrc xn = (fh xn) x^8
+;; + fl xn, and the x^8 is the CRC table's zero-byte step.  ~230 T
+;; against ~850 for r8_crc16_mul (8 bands a frame: ~5 k T).
 fcrcmul:
-        ld      e, TX_FCRC (ix)
-        ld      d, TX_FCRC+1 (ix)
-        call    xnmul
-        ld      TX_FCRC (ix), e
-        ld      TX_FCRC+1 (ix), d
-        ret
-
-;; DE = r8_crc16_mul(DE, tx->xn), by the table xt of the multiples of xn
-;; (built when xn is not the one it holds: once for a stream, ~14 k T):
-;; with a = ah x^8 + al, a xn = (ah xn) x^8 + al xn, and the x^8 is the
-;; CRC table's zero-byte step.  ~190 T against ~850 for r8_crc16_mul (8
-;; bands a frame: ~5 k T).
-xnmul:  push    de
-        ld      e, TX_XN (ix)
-        ld      d, TX_XN+1 (ix)
-        ld      hl, (xtkey)
-        or      a, a
-        sbc     hl, de
-        call    nz, xtbuild
-        pop     hl
-        ld      a, l            ; al
-        ld      l, h            ; xt[ah]
+        ld      l, TX_FCRC+1 (ix) ; xt[fh]
         ld      h, #0
         add     hl, hl
         ld      de, #xt
@@ -711,23 +696,29 @@ xnmul:  push    de
         ld      b, (hl)
         ld      h, #>r8z_crctab ; * x^8: (C ^ Th[B]) : Tl[B]
         ld      l, b
-        ld      b, a            ; (al)
         ld      a, (hl)
         xor     a, c
+        ld      b, a
         inc     h
         ld      c, (hl)
-        ld      l, b            ; ^ xt[al]
+        ld      hl, (st+S_G)    ; ^ g
+        ld      a, l
+        xor     a, c
+        ld      c, a
+        ld      a, h
+        xor     a, b
         ld      b, a
+        ld      l, TX_FCRC (ix) ; ^ xt[fl]
         ld      h, #0
         add     hl, hl
         add     hl, de
         ld      a, (hl)
         xor     a, c
-        ld      e, a
+        ld      TX_FCRC (ix), a
         inc     hl
         ld      a, (hl)
         xor     a, b
-        ld      d, a
+        ld      TX_FCRC+1 (ix), a
         ret
 
 ;; xt[i] = i * xn mod P for xn = DE: xt[0] = 0, xt[1] = xn, then
