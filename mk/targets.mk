@@ -301,8 +301,10 @@ XSIZES_z80     := $(XB)/z80/sizes.txt
 # which AVR kernels the library links (FW_PROJ16: src/proj.c)
 FWK_avr328     = $(AVR_KDEFS)
 FWK_avr1284    = $(AVR_KDEFS)
-# (the Z80's: whether project_z80.s hands r8_project_recip its rare points)
-FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT)
+# (the Z80's: whether project_z80.s hands r8_project_recip its rare points;
+# R8_TXBAND_ALL: txband_z80.s takes every band of the stream, raw too, so
+# src/wire.c leaves its C band path out)
+FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) $(if $(filter txband,$(Z80_KERN)),-DR8_TXBAND_ALL)
 # (the 6502's: txband_6502.s takes every band of the fixed stream, raw
 # too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL; and its
 # r8_tx_pkt sends FRAME_START / FRAME_END, so tx_send goes too:

@@ -9,17 +9,24 @@
 ;;   in a frame, the band the encoder expects next (y0 = next_y), a whole
 ;;   band (height - y0 >= band), the frame's width and format, codec RLE,
 ;;   8 <= band bytes <= 255; and the RLE payload smaller than the band,
-;;   with the COBS chain never broken (no block of 254 non-zero bytes).
+;;   with the COBS chain never broken (no block of 254 non-zero bytes),
+;;   or else (RLE does not pay) a packet of under 250 bytes, sent raw.
 ;;
 ;; Nothing of tx changes before that is known (only the packet scratch
 ;; is written), so the C version then does the whole band itself.  What
 ;; is left is what src/wire.c's r8_tx_band, tx_band, tx_rle and tx_send
-;; (all = 0) do on that path: the header, the RLE tokens (r8_tx_run and
-;; r8_tx_lit of wire_z80.s: packet CRC, the band's CRC from 0, Fletcher
-;; sums, COBS links), the fingerprint, the frame CRC, the skip of an
-;; unchanged band in a delta frame, and one put of the framed packet.
-;; tests/c/test_txband.c compares the two on random frames in ucsim, and
-;; the r8_tx / r8_fb offsets below with the C compiler's (r8_txband_offs).
+;; do on that path: the header, the RLE tokens (r8_tx_run and r8_tx_lit
+;; of wire_z80.s: packet CRC, the band's CRC from 0, Fletcher sums, COBS
+;; links) or the raw bytes (tx_send's all = 1), the fingerprint, the
+;; frame CRC, the skip of an unchanged band in a delta frame, and one put
+;; of the framed packet.  So every band of the demo firmware's stream
+;; (128 x 8 bands, 137-byte packets) that comes in order is taken here:
+;; it builds src/wire.c with R8_TXBAND_ALL (FWK_z80, mk/targets.mk),
+;; which leaves out the C band path (tx_band, tx_rle) and links a relay
+;; r8_tx_band_c for a band out of order.
+;; tests/c/test_txband.c compares the two on random frames in ucsim (and
+;; counts the bands handed on), and the r8_tx / r8_fb offsets below with
+;; the C compiler's (r8_txband_offs).
 ;;
 ;; sdcc's __sdcccall(1): tx in HL, band in DE, the int result in DE; IX
 ;; (the caller's frame pointer) is kept: here it holds tx.  The callees
@@ -97,6 +104,8 @@ left:   .ds     1               ; band bytes not encoded yet
 full:   .ds     1               ; a literal count that means "no room"
 cnt:    .ds     1               ; the token's bytes
 st:     .ds     10              ; the r8_tx_st of the packet
+hcrc:   .ds     2               ; the CRC after the RLE header (raw: Pb, g)
+hcode:  .ds     2               ; the chain after the header's links
 xtkey:  .ds     2               ; the xn xt is built for (0: none; xn != 0)
 xt:     .ds     512             ; xt[i] = i * xn mod P, i = 0..255 (low, high)
 
@@ -170,6 +179,15 @@ _r8_tx_band:
         sbc     hl, de
         jp      m, slow
 
+        ld      e, TX_XN (ix)   ; xt for this xn (fcrcmul)
+        ld      d, TX_XN+1 (ix)
+        ld      hl, (xtkey)
+        or      a, a
+        sbc     hl, de
+        call    nz, xtbuild
+        ld      hl, #0
+        ld      (st+S_F1), hl   ; f1 = f2 = 0
+        ld      (st+S_G), hl    ; g = 0 (a band of zeros: fcrcmul takes it)
         ld      l, TX_NEXTIDX (ix) ; fpp = tx->fp + 4 idx
         ld      h, TX_NEXTIDX+1 (ix)
         add     hl, hl
@@ -233,6 +251,7 @@ encode: ld      l, TX_PKT (ix)  ; s.pkt = s.code = pkt
         ld      a, #1
         CRCSTEP
         ld      (st+S_CRC), bc
+        ld      (hcrc), bc      ; (for the raw path)
         ld      hl, (st+S_PKT)  ; the header's zeros (b[1..4]) linked
         ld      d, h
         ld      e, l            ; DE = code
@@ -249,9 +268,7 @@ encode: ld      l, TX_PKT (ix)  ; s.pkt = s.code = pkt
         ld      e, l
 2$:     djnz    1$
         ld      (st+S_CODE), de
-        ld      hl, #0
-        ld      (st+S_F1), hl   ; f1 = f2 = 0
-        ld      (st+S_G), hl
+        ld      (hcode), de     ; (for the raw path)
         ld      hl, (bp)
         ld      (pp), hl
         ld      a, (nn)
@@ -269,7 +286,7 @@ zl:     ld      a, (zz)
 1$:     ld      (cnt), a
         ld      a, (room)
         sub     a, #2
-        jp      c, slow
+        jp      c, raw          ; no room: RLE does not pay
         ld      (room), a
         ld      hl, (op)        ; [c, 0]
         ld      a, (cnt)
@@ -316,7 +333,7 @@ tokens: ld      a, (left)
         jr      nz, lit
         ld      a, (room)       ; a run
         sub     a, #2
-        jp      c, slow
+        jp      c, raw
         ld      (room), a
         ld      a, (cnt)
         push    af
@@ -355,7 +372,7 @@ lit:    ld      a, (left)       ; B = k: where a run of 3 may start
         jr      z, 2$
         jr      nc, 3$
 2$:     cp      a, #2
-        jp      c, slow
+        jp      c, raw
         dec     a
         ld      c, a
         ld      (full), a
@@ -374,7 +391,7 @@ lit:    ld      a, (left)       ; B = k: where a run of 3 may start
         jp      nz, slow        ; the chain broke: the C does it
         ld      hl, #full
         cp      a, (hl)
-        jp      z, slow         ; no room
+        jp      z, raw          ; no room
         ld      (cnt), a
         ld      c, a
         ld      a, (room)       ; room -= c + 1
@@ -392,6 +409,76 @@ next:   ld      hl, #cnt
         ld      (left), a
         call    advp
         jp      tokens
+
+;; ---- RLE does not pay: the band raw (tx_band's from == b, tx_send's
+;; all = 1), when the packet (n + 6 + 2 bytes) is under 250 bytes, so no
+;; 0x00 is more than 254 bytes after the code before it and the chain
+;; cannot break (the C does a longer one).  The header stays, its links
+;; too (hcode: the chain after them), b[5] = R8_CODEC_RAW is linked, and
+;; its CRC is the RLE header's with the codec byte 1 -> 0: ^ T[1] =
+;; 0x1021 (the table step is linear).  Then one loop copies the band,
+;; CRCs it, sums it and links its zeros.  The band's CRC from 0 (its
+;; leading zeros leave it 0, as the C's from src + z) comes from the
+;; packet CRC: g = Pb x^(8n) ^ Pa (Pb, Pa: before and after the band),
+;; fcrcmul's, with IX at hcrc - TX_FCRC.              ~125 T a byte
+raw:    ld      a, (nn)
+        cp      a, #250-6-2
+        jp      nc, slow
+        ld      hl, (hcode)
+        ld      (st+S_CODE), hl
+        ld      de, (st+S_PKT)
+        ld      hl, #6
+        add     hl, de
+        ex      de, hl          ; DE = b + 5
+        xor     a, a
+        ld      (de), a         ; R8_CODEC_RAW
+        call    rawz
+        inc     de              ; main: DE = o, HL = band, B = the count
+        ld      hl, (hcrc)      ; Pb
+        ld      a, h
+        xor     a, #0x10
+        ld      b, a
+        ld      a, l
+        xor     a, #0x21
+        ld      c, a
+        ld      (hcrc), bc
+        push    bc
+        ld      hl, (bp)
+        exx                     ; alternate: B:C = crc, E = f1, D = f2,
+        pop     bc              ; H = the table's page
+        ld      de, #0
+        ld      h, #>r8z_crctab
+        exx
+        ld      a, (nn)
+        ld      b, a
+1$:     ld      a, (hl)
+        ld      (de), a
+        or      a, a
+        call    z, rawz
+        inc     hl
+        inc     de
+        exx
+        ld      l, a
+        add     a, e            ; f1 += v, f2 += f1
+        ld      e, a
+        add     a, d
+        ld      d, a
+        ld      a, l
+        CRCSTEP
+        exx
+        djnz    1$
+        ld      (op), de
+        exx
+        ld      (st+S_F1), de
+        ld      (st+S_CRC), bc
+        ld      (st+S_G), bc    ; Pa
+        exx
+        push    ix
+        ld      ix, #hcrc-TX_FCRC
+        call    fcrcmul         ; hcrc = Pb x^(8n) ^ Pa
+        pop     ix
+        ld      hl, (hcrc)
+        ld      (st+S_G), hl
 
 ;; ---- the payload is in: o = end - 2; the CRC, links, the last code
 sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
@@ -455,14 +542,6 @@ sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
         push    bc
         call    fcrcmul         ; fcrc = fcrc x^(8n) ^ g
         pop     bc
-        ld      hl, #st+S_G
-        ld      a, TX_FCRC (ix)
-        xor     a, (hl)
-        ld      TX_FCRC (ix), a
-        inc     hl
-        ld      a, TX_FCRC+1 (ix)
-        xor     a, (hl)
-        ld      TX_FCRC+1 (ix), a
         ld      a, c            ; changed, or a full frame?
         or      a, TX_FULL (ix)
         jr      z, done
@@ -511,6 +590,18 @@ slow:   push    ix              ; the C version does it all: tx HL, band DE
 calliy: jp      (iy)
 
 ;; ---- helpers
+;; the raw loop's 0x00 at DE: *code = DE - code, code = DE (< 250 bytes
+;; on: no test); A = 0 again
+rawz:   push    hl
+        ld      hl, (st+S_CODE)
+        ld      a, e
+        sub     a, l
+        ld      (hl), a
+        ld      (st+S_CODE), de
+        pop     hl
+        xor     a, a
+        ret
+
 ;; link the 0x00 at o + A into s's chain: carry set (and nothing done)
 ;; when it is more than 254 bytes after the last code
 linko:  ld      hl, (op)
@@ -589,18 +680,12 @@ commit: ld      hl, (y0)
         ld      TX_RAW+3 (ix), a
         ret
 
-;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn), by the table xt of the
-;; multiples of xn (built when xn is not the one it holds: once for a
-;; stream, ~14 k T): with fcrc = fh x^8 + fl, fcrc xn = (fh xn) x^8 + fl
-;; xn, and the x^8 is the CRC table's zero-byte step.  ~190 T against
-;; ~850 for r8_crc16_mul (8 bands a frame: ~5 k T).
+;; tx->fcrc = r8_crc16_mul(tx->fcrc, tx->xn) ^ s.g, by the table xt of
+;; the multiples of xn (built for tx->xn on the way in: at a stream's
+;; first band, ~14 k T): with fcrc = fh x^8 + fl, fcrc xn = (fh xn) x^8
+;; + fl xn, and the x^8 is the CRC table's zero-byte step.  ~230 T
+;; against ~850 for r8_crc16_mul (8 bands a frame: ~5 k T).
 fcrcmul:
-        ld      e, TX_XN (ix)
-        ld      d, TX_XN+1 (ix)
-        ld      hl, (xtkey)
-        or      a, a
-        sbc     hl, de
-        call    nz, xtbuild
         ld      l, TX_FCRC+1 (ix) ; xt[fh]
         ld      h, #0
         add     hl, hl
@@ -616,6 +701,13 @@ fcrcmul:
         ld      b, a
         inc     h
         ld      c, (hl)
+        ld      hl, (st+S_G)    ; ^ g
+        ld      a, l
+        xor     a, c
+        ld      c, a
+        ld      a, h
+        xor     a, b
+        ld      b, a
         ld      l, TX_FCRC (ix) ; ^ xt[fl]
         ld      h, #0
         add     hl, hl

@@ -15,14 +15,17 @@
 #endif
 #define txb_ref r8_tx_band_c
 
-#if defined(R8_ASM_TXBAND) && defined(__CC65__)
-/* 6502: the bands the kernel hands to the C version, counted.  This
+#if defined(R8_ASM_TXBAND) && (defined(__CC65__) || defined(__SDCC))
+/* 6502 and Z80: the bands the kernel hands to the C version, counted.  This
  * unit compiles src/wire.c itself (so the library's wire.o is not
  * linked) with its r8_tx_band named txb_c; the kernel's hand-off
  * r8_tx_band_c counts and calls it, the reference side calls it
  * directly.  The kernel takes every whole band in order of an RLE
  * stream of 8..241 bytes, those RLE does not shrink (raw) too. */
 #define TXB_COUNT
+#ifdef __CC65__
+#define TXB_PKT        /* the port has r8_tx_pkt (R8_ASM_TXPKT) */
+#endif
 #undef txb_ref
 #define txb_ref txb_c
 #define r8_tx_band txb_c
@@ -243,7 +246,7 @@ static void test_txband(void)
     TEST_ASSERT_TRUE(raw_bands >= 30u); /* (39 with this seed) */
 }
 
-#ifdef TXB_COUNT
+#ifdef TXB_PKT
 /* r8_tx_pkt (the firmware's packet send, R8_ASM_TXPKT) against tx_send
  * (tx, s, n, 1): random bodies of 0..246 bytes, zeros at random places
  * (none to all): the same bytes in one put, the same tx->bytes */
@@ -308,7 +311,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_txband);
-#ifdef TXB_COUNT
+#ifdef TXB_PKT
     RUN_TEST(test_pkt);
 #endif
 #ifdef R8_ASM_TXBAND
