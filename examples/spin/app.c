@@ -83,8 +83,10 @@ static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
  * focal_num / 64, a multiple of width / 64 when the width is one of 64
  * (cfg_valid refuses any width but R8_CFG_WIDTH; r8_s16 wraps as
  * r8_demo_setup's cast does). */
+#ifndef __CC65__      /* (cc65 cannot evaluate it; it packs every struct) */
 R8_CASSERT(app_light_after_ambient, offsetof(r8_scene, light) == offsetof(r8_scene, ambient) + 2u &&
            offsetof(r8_demo, light) == offsetof(r8_demo, ambient) + 2u && sizeof(r8_vec3) == 6u);
+#endif
 /* n bytes of R8_FLASH data from s to q */
 static void app_rd(void *q, const void *s, r8_u8 n)
 {
