@@ -15,7 +15,9 @@
  *                 R8_PROJ16 (no 32-bit projection fallback) and
  *                 transform.c with R8_CAM_FIXED (no camera rotation).
  *                 fw_spin_bad() proves both before the first frame
- *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
+ *                 (fw_app.c: APP_E_CFG if not; with the scene's object
+ *                 count fixed, FW_SPIN_SETUP, examples/spin/app.c's
+ *                 app_demo as it sets the run up): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
  *                 On AVR, the 6502 and the Z80 (with cull_z80.s, R8_ASM_CULL) also
