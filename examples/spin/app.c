@@ -229,6 +229,11 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #define APP_BAND_AT ((unsigned)FP_total)
 #define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
 #define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+/* what r8_fb_init checks of the band (PAGE1: APP_FIXED's condition) */
+#if R8_TXCFG_WIDTH <= 0 || R8_TXCFG_HEIGHT <= 0 || R8_TXCFG_BAND <= 0 || \
+    R8_TXCFG_BAND > R8_TXCFG_HEIGHT || (R8_TXCFG_BAND & 7) != 0
+#error "APP_FIXED: a band r8_fb_init would refuse"
+#endif
 /* (app_plan refused a layout past an unsigned; this one is constant:
  * sdcc checks it, cc65 cannot evaluate FP_total in a constant expression) */
 #ifndef __CC65__
@@ -260,12 +265,18 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     e = r8_render_init(&ren, &rc, mem, ws);
     if (e == -2 && sc)
         return APP_E_RAM;
-    /* (the band's bytes: r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1
-     * and a width and rows > 0, which r8_fb_init checks: APP_BAND_BYTES) */
-    if (e || !sc ||
-        r8_fb_init(&band_fb, mem + APP_BAND_AT, R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT,
-                   0, R8_TXCFG_BAND) ||
-        r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
+    if (e || !sc)
+        return APP_E_CFG;
+    /* the band: r8_fb_init's stores, its checks proven above (#error;
+     * r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1 and a width and rows
+     * > 0: APP_BAND_BYTES), without the call (Z80 ~0.2 KB) */
+    band_fb.buf = mem + APP_BAND_AT;
+    band_fb.width = R8_TXCFG_WIDTH;
+    band_fb.height = R8_TXCFG_HEIGHT;
+    band_fb.y0 = 0;
+    band_fb.rows = R8_TXCFG_BAND;
+    band_fb.format = R8_TXCFG_FORMAT;
+    if (r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
         return APP_E_CFG;
     return APP_OK;
 }
@@ -307,7 +318,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
         r8_tx_frame_begin(&tx, no);
 #ifdef APP_FIXED
-        /* (the band as app_start's r8_fb_init made it; no hooks) */
+        /* (the band as app_start made it; no hooks) */
         for (y = 0; y < R8_TXCFG_HEIGHT; y = (r8_s16)(y + R8_TXCFG_BAND)) {
             r8_fb_set_band(&band_fb, y);
             r8_render_band(&ren, &band_fb);
