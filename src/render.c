@@ -244,7 +244,7 @@ static int method_built(r8_u8 m)
  * runs make_plan itself: a constant plan that differed would stop the
  * firmware with APP_E_RAM (identity tests). */
 #if defined(R8_CFG_NVERTS) && defined(R8_FAST_ONLY) && !R8_W_TEXTURE && !defined(R8_PLAN_ONLY) && \
-    (defined(__CC65__) || defined(__SDCC))
+    (defined(__CC65__) || defined(__SDCC) || defined(__AVR__))
 #if R8_CFG_CLIP == 0
 #define R8_FIXED_PLAN 1
 #ifdef __CC65__
@@ -793,6 +793,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
     r8_u8 i;
     r8_u16 vb = 0, fb = 0, k;
+#if defined(R8_FIXED_PLAN) && !defined(R8_FP_TABLES) && defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    (void)k;           /* (AVR: the fixed plan's stores need no loop) */
+#endif
 #ifndef R8_NO_BSP
     if (cfg->method == R8_VIS_BSP)
         return r8_bsp_init(r, cfg, work, work_size);
