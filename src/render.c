@@ -231,9 +231,10 @@ static int method_built(r8_u8 m)
 
 #define ALIGN_TO (sizeof(r8_s32) > sizeof(void *) ? sizeof(r8_s32) : sizeof(void *))
 
-/* R8_FIXED_PLAN: the demo firmware's plan on cc65 and sdcc, which fold a
- * constant expression but not a value that passes through the plan
- * struct.  With the scene's sizes (R8_CFG_NVERTS, _NFACES, _NOBJ) and
+/* R8_FIXED_PLAN: the demo firmware's plan on cc65, sdcc and avr-gcc (cc65
+ * and sdcc fold a constant expression but not a value that passes
+ * through the plan struct; AVR cube flash -0.6 KB with app.c's
+ * APP_FIXED).  With the scene's sizes (R8_CFG_NVERTS, _NFACES, _NOBJ) and
  * the whole configuration fixed, the fused fill alone (cull or painter's,
  * flat or Lambert), no texture and no clipper, every field make_plan
  * computes is a constant: FP_<field> below is make_plan's arithmetic for

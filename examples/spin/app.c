@@ -215,7 +215,7 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #endif
 #endif
 #ifdef APP_FIXED
-/* The demo firmware on cc65 and sdcc (src/render.c R8_FIXED_PLAN, the
+/* The demo firmware on cc65, sdcc and AVR (src/render.c R8_FIXED_PLAN, the
  * stream fixed by R8_TXCFG_*): app_plan's layout with the renderer's
  * work (FP_total, which r8_render_ram returns for the one configuration
  * it takes) and the band (PAGE1) as constants, so app_plan is not
