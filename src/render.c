@@ -1424,6 +1424,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
 #endif
     sc = st->scene;
+#ifdef R8_FIXED_PLAN
+    (void)k;      /* (the fixed plan, no pool and no painter's: no loop on k) */
+#endif
 #if R8_W_PAINTER
     painter = R8_PAINTER(st->method);
 #endif
