@@ -15,7 +15,9 @@
  *                 R8_PROJ16 (no 32-bit projection fallback) and
  *                 transform.c with R8_CAM_FIXED (no camera rotation).
  *                 fw_spin_bad() proves both before the first frame
- *                 (fw_app.c: APP_E_CFG if not): the camera is not turned,
+ *                 (fw_app.c: APP_E_CFG if not; with the scene's object
+ *                 count fixed, FW_SPIN_SETUP, examples/spin/app.c's
+ *                 app_demo as it sets the run up): the camera is not turned,
  *                 and every camera-space x, y lies within 16 (|d| +
  *                 radius) + 4 of the origin, d = object - camera.
  *                 On AVR, the 6502 and the Z80 (with cull_z80.s, R8_ASM_CULL) also
@@ -88,7 +90,13 @@ int r8_project_recip(const r8_proj *p, const r8_vec3l *v, r8_u16 m, r8_s8 e,
 /* 1 unless the demo scene's camera is not turned and no vertex can
  * reach a camera-space x or y beyond 16 bits: per object |dx| + |dy| +
  * |dz| + radius (world units) against 2040 (16 x 2040 + rounding <
- * 32767).  (r8_demo_pose turns only the objects: these stay.) */
+ * 32767).  (r8_demo_pose turns only the objects: these stay.)
+ * FW_SPIN_SETUP: the demo firmware of a mesh scene (its object count
+ * fixed, fw_app.c R8_CFG_NOBJ) proves the same in app.c's app_demo,
+ * which sets the camera up at the origin itself: no fw_spin_bad. */
+#if defined(FW_RENDER) && defined(R8_CFG_NOBJ)
+#define FW_SPIN_SETUP 1
+#else
 static int fw_spin_bad(const app_cfg *c)
 {
     r8_demo_run *run = app_demo(c);
@@ -128,6 +136,7 @@ static int fw_spin_bad(const app_cfg *c)
     }
     return 0;
 }
+#endif
 #endif
 #ifdef FW_RENDER
 /* The renderer compiled into the firmware with its switches (fwdefs.sh:

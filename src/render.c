@@ -231,9 +231,10 @@ static int method_built(r8_u8 m)
 
 #define ALIGN_TO (sizeof(r8_s32) > sizeof(void *) ? sizeof(r8_s32) : sizeof(void *))
 
-/* R8_FIXED_PLAN: the demo firmware's plan on cc65 and sdcc, which fold a
- * constant expression but not a value that passes through the plan
- * struct.  With the scene's sizes (R8_CFG_NVERTS, _NFACES, _NOBJ) and
+/* R8_FIXED_PLAN: the demo firmware's plan on cc65, sdcc and avr-gcc (cc65
+ * and sdcc fold a constant expression but not a value that passes
+ * through the plan struct; AVR cube flash -0.6 KB with app.c's
+ * APP_FIXED).  With the scene's sizes (R8_CFG_NVERTS, _NFACES, _NOBJ) and
  * the whole configuration fixed, the fused fill alone (cull or painter's,
  * flat or Lambert), no texture and no clipper, every field make_plan
  * computes is a constant: FP_<field> below is make_plan's arithmetic for
@@ -244,7 +245,7 @@ static int method_built(r8_u8 m)
  * runs make_plan itself: a constant plan that differed would stop the
  * firmware with APP_E_RAM (identity tests). */
 #if defined(R8_CFG_NVERTS) && defined(R8_FAST_ONLY) && !R8_W_TEXTURE && !defined(R8_PLAN_ONLY) && \
-    (defined(__CC65__) || defined(__SDCC))
+    (defined(__CC65__) || defined(__SDCC) || defined(__AVR__))
 #if R8_CFG_CLIP == 0
 #define R8_FIXED_PLAN 1
 #ifdef __CC65__
@@ -793,6 +794,9 @@ int r8_render_init(r8_render *r, const r8_render_cfg *cfg, r8_u8 *work,
 #endif
     r8_u8 i;
     r8_u16 vb = 0, fb = 0, k;
+#if defined(R8_FIXED_PLAN) && !defined(R8_FP_TABLES) && defined(R8_CFG_BAND) && R8_CFG_BAND == 8
+    (void)k;           /* (AVR: the fixed plan's stores need no loop) */
+#endif
 #ifndef R8_NO_BSP
     if (cfg->method == R8_VIS_BSP)
         return r8_bsp_init(r, cfg, work, work_size);
@@ -1420,6 +1424,9 @@ void r8_render_frame(r8_render *r, const r8_camera *cam)
     if (r->cfg.method == R8_VIS_PORTAL) { r8_portal_frame(r, cam); return; }
 #endif
     sc = st->scene;
+#ifdef R8_FIXED_PLAN
+    (void)k;      /* (the fixed plan, no pool and no painter's: no loop on k) */
+#endif
 #if R8_W_PAINTER
     painter = R8_PAINTER(st->method);
 #endif

@@ -97,9 +97,7 @@ static const r8_u8 delim = 0;
  * the firmware. */
 #define TX_ASM_ALL 0
 #if defined(R8_TXBAND_ALL) && defined(R8_ASM_TXBAND) && defined(R8_TXCFG_FORMAT)
-/* (the divisor never 0: cc65 evaluates this #if in the skipped group
- * too, with the undefined macros as 0) */
-#if !TX_SHORT || R8_TXCFG_CODEC != R8_CODEC_RLE || R8_TXCFG_HEIGHT % (R8_TXCFG_BAND + !R8_TXCFG_BAND) != 0 || \
+#if !TX_SHORT || R8_TXCFG_CODEC != R8_CODEC_RLE || TX_PARTIAL || \
     (R8_TXCFG_BAND + 7) / 8 * R8_TXCFG_WIDTH < 8
 #error "R8_TXBAND_ALL: the port's r8_tx_band takes RLE streams of whole bands of 8..249 bytes only"
 #endif

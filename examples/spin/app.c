@@ -15,6 +15,8 @@
  * camera instead.) */
 #include "app.h"
 #include "plat.h"
+#include <stddef.h>
+#include <string.h>
 
 static r8_demo_run run;
 #ifndef R8_PLAN_ONLY
@@ -69,6 +71,86 @@ static void tx_cfg_from(const app_cfg *cfg, r8_tx_cfg *t)
 #endif
 }
 
+#ifdef FW_SPIN_SETUP
+/* A mesh scene's demo firmware (ports/fw_trim.c: FW_SPIN, the scene's
+ * object count fixed, R8_CFG_NOBJ): r8_demo_setup for that case alone,
+ * with fw_spin_bad's proof in the same walk (Z80 ~1 KB less than the
+ * two).  The camera stays at the origin, not turned (the run is cleared:
+ * no grid, no world); each object's |x| + |y| + |z| + radius is at most
+ * 2040 (R8_CULL16: |x| + |y| + |z| <= 1000, radius <= 1023), or 0
+ * (APP_E_CFG), so the depth range's sums fit 16 bits: the same near and
+ * far planes as r8_demo_setup's 32-bit ones.  The focal length: width *
+ * focal_num / 64, a multiple of width / 64 when the width is one of 64
+ * (cfg_valid refuses any width but R8_CFG_WIDTH; r8_s16 wraps as
+ * r8_demo_setup's cast does). */
+#ifndef __CC65__      /* (cc65 cannot evaluate it; it packs every struct) */
+R8_CASSERT(app_light_after_ambient, offsetof(r8_scene, light) == offsetof(r8_scene, ambient) + 2u &&
+           offsetof(r8_demo, light) == offsetof(r8_demo, ambient) + 2u && sizeof(r8_vec3) == 6u);
+#endif
+/* n bytes of R8_FLASH data from s to q */
+static void app_rd(void *q, const void *s, r8_u8 n)
+{
+    r8_u8 *d = (r8_u8 *)q;
+    const r8_u8 *f = (const r8_u8 *)s;
+    for (; n; n--)
+        *d++ = R8_RDU8(f++);
+}
+r8_demo_run *app_demo(const app_cfg *cfg)
+{
+    const r8_demo *d = cfg->demo ? cfg->demo : r8_demo_get(cfg->scene);
+    const r8_demo_obj *o;
+    r8_object *ob = run.obj;
+    r8_s16 zn = 0x7FFF, zf = 1, z, r, *p;
+    r8_u16 b;
+    r8_u8 i, k;
+    if (!d || R8_RDU8(&d->nobjects) != R8_CFG_NOBJ)
+        return 0;
+    memset(&run, 0, sizeof run);
+    run.demo = d;
+    o = (const r8_demo_obj *)R8_RDPTR(&d->objects);
+    for (i = 0; i < R8_CFG_NOBJ; i++, o++, ob++) {
+        p = &ob->pose.x;
+        app_rd(&ob->mesh, &o->mesh, (r8_u8)sizeof ob->mesh);
+        app_rd(p, &o->x, 6);                 /* x, y, z */
+        ob->pose.colour = 16;                /* (r8_pose_identity's) */
+        r = ob->mesh->radius;
+        b = 0;
+        for (k = 0; k < 3; k++) {
+            z = p[k];
+            if (z < -2040 || z > 2040)
+                return 0;
+            b = (r8_u16)(b + (r8_u16)(z < 0 ? -z : z));
+        }
+#ifdef R8_CULL16
+        if (b > 1000u || r < 0 || r > 1023)
+#else
+        if (r < 0 || r > 2040 || b + (r8_u16)r > 2040u)
+#endif
+            return 0;
+        if (z - r < zn)                      /* (z: the object's z) */
+            zn = (r8_s16)(z - r);
+        if (z + r > zf)
+            zf = (r8_s16)(z + r);
+    }
+    run.scene.objects = run.obj;
+    run.scene.nobjects = R8_CFG_NOBJ;
+    app_rd(&run.scene.ambient, &d->ambient, 8);   /* ambient, light */
+#if R8_CFG_WIDTH % 64 == 0
+    run.cam.focal = (r8_s16)((r8_u16)R8_RDS16(&d->focal_num) * (R8_CFG_WIDTH / 64u));
+#else
+    run.cam.focal = (r8_s16)(r8_mul16(R8_CFG_WIDTH, R8_RDS16(&d->focal_num)) >> 6);
+#endif
+    z = R8_RDS16(&d->znear);
+    if (zn < z)
+        zn = z;
+    if (zf <= zn)
+        zf = (r8_s16)((r8_u16)zn + 1u);
+    run.cam.znear = zn;
+    run.cam.zfar = zf;
+    r8_demo_pose(&run, 0);
+    return &run;
+}
+#else
 r8_demo_run *app_demo(const app_cfg *cfg)
 {
     if (r8_demo_setup(&run, cfg->demo ? cfg->demo : r8_demo_get(cfg->scene),
@@ -80,6 +162,7 @@ r8_demo_run *app_demo(const app_cfg *cfg)
 #endif
     return &run;
 }
+#endif
 
 int app_plan(const app_cfg *cfg, app_layout *lay)
 {
@@ -132,7 +215,7 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #endif
 #endif
 #ifdef APP_FIXED
-/* The demo firmware on cc65 and sdcc (src/render.c R8_FIXED_PLAN, the
+/* The demo firmware on cc65, sdcc and AVR (src/render.c R8_FIXED_PLAN, the
  * stream fixed by R8_TXCFG_*): app_plan's layout with the renderer's
  * work (FP_total, which r8_render_ram returns for the one configuration
  * it takes) and the band (PAGE1) as constants, so app_plan is not
@@ -146,6 +229,11 @@ static void put(void *ctx, const r8_u8 *p, unsigned n)
 #define APP_BAND_AT ((unsigned)FP_total)
 #define APP_BAND_BYTES ((unsigned)R8_FB_PAGE1_BYTES(R8_TXCFG_WIDTH, R8_TXCFG_BAND))
 #define APP_SCRATCH_AT (APP_BAND_AT + APP_BAND_BYTES)
+/* what r8_fb_init checks of the band (PAGE1: APP_FIXED's condition) */
+#if R8_TXCFG_WIDTH <= 0 || R8_TXCFG_HEIGHT <= 0 || R8_TXCFG_BAND <= 0 || \
+    R8_TXCFG_BAND > R8_TXCFG_HEIGHT || (R8_TXCFG_BAND & 7) != 0
+#error "APP_FIXED: a band r8_fb_init would refuse"
+#endif
 /* (app_plan refused a layout past an unsigned; this one is constant:
  * sdcc checks it, cc65 cannot evaluate FP_total in a constant expression) */
 #ifndef __CC65__
@@ -177,12 +265,18 @@ int app_start(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
     e = r8_render_init(&ren, &rc, mem, ws);
     if (e == -2 && sc)
         return APP_E_RAM;
-    /* (the band's bytes: r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1
-     * and a width and rows > 0, which r8_fb_init checks: APP_BAND_BYTES) */
-    if (e || !sc ||
-        r8_fb_init(&band_fb, mem + APP_BAND_AT, R8_TXCFG_FORMAT, R8_TXCFG_WIDTH, R8_TXCFG_HEIGHT,
-                   0, R8_TXCFG_BAND) ||
-        r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
+    if (e || !sc)
+        return APP_E_CFG;
+    /* the band: r8_fb_init's stores, its checks proven above (#error;
+     * r8_fb_bytes gives R8_FB_PAGE1_BYTES for PAGE1 and a width and rows
+     * > 0: APP_BAND_BYTES), without the call (Z80 ~0.2 KB) */
+    band_fb.buf = mem + APP_BAND_AT;
+    band_fb.width = R8_TXCFG_WIDTH;
+    band_fb.height = R8_TXCFG_HEIGHT;
+    band_fb.y0 = 0;
+    band_fb.rows = R8_TXCFG_BAND;
+    band_fb.format = R8_TXCFG_FORMAT;
+    if (r8_tx_init(&tx, &app_tx, mem + APP_SCRATCH_AT, sc, put, 0))
         return APP_E_CFG;
     return APP_OK;
 }
@@ -224,7 +318,7 @@ int app_run(const app_cfg *cfg, r8_u8 *mem, unsigned mem_size)
         r8_render_frame(&ren, &run.cam);   /* transform, cull, sort: once a frame */
         r8_tx_frame_begin(&tx, no);
 #ifdef APP_FIXED
-        /* (the band as app_start's r8_fb_init made it; no hooks) */
+        /* (the band as app_start made it; no hooks) */
         for (y = 0; y < R8_TXCFG_HEIGHT; y = (r8_s16)(y + R8_TXCFG_BAND)) {
             r8_fb_set_band(&band_fb, y);
             r8_render_band(&ren, &band_fb);

@@ -191,7 +191,7 @@ int main(void)
 #endif
     world_clip(&cfg);
 #endif
-#ifdef FW_SPIN
+#if defined(FW_SPIN) && !defined(FW_SPIN_SETUP)   /* (else app_demo proves it) */
     if (fw_spin_bad(&cfg))
         plat_exit(APP_E_CFG);    /* built for a fixed camera, 16-bit points */
 #endif
