@@ -303,8 +303,9 @@ FWK_avr328     = $(AVR_KDEFS)
 FWK_avr1284    = $(AVR_KDEFS)
 # (the Z80's: whether project_z80.s hands r8_project_recip its rare points;
 # R8_TXBAND_ALL: txband_z80.s takes every band of the stream, raw too, so
-# src/wire.c leaves its C band path out)
-FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) $(if $(filter txband,$(Z80_KERN)),-DR8_TXBAND_ALL)
+# src/wire.c leaves its C band path out; R8_ASM_TXPKT: its r8_tx_pkt
+# sends FRAME_START / FRAME_END, so tx_send goes too)
+FWK_z80        = $(if $(filter project,$(Z80_KERN)),-DR8_ASM_PROJECT) $(if $(filter txband,$(Z80_KERN)),-DR8_TXBAND_ALL -DR8_ASM_TXPKT)
 # (the 6502's: txband_6502.s takes every band of the fixed stream, raw
 # too, so src/wire.c leaves its C band path out: R8_TXBAND_ALL; and its
 # r8_tx_pkt sends FRAME_START / FRAME_END, so tx_send goes too:

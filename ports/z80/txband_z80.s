@@ -24,9 +24,12 @@
 ;; it builds src/wire.c with R8_TXBAND_ALL (FWK_z80, mk/targets.mk),
 ;; which leaves out the C band path (tx_band, tx_rle) and links a relay
 ;; r8_tx_band_c for a band out of order.
+;; r8_tx_pkt (src/r8crc.h) is tx_send's all = 1 path, for such a
+;; firmware built with -DR8_ASM_TXPKT too: FRAME_START and FRAME_END.
 ;; tests/c/test_txband.c compares the two on random frames in ucsim (and
-;; counts the bands handed on), and the r8_tx / r8_fb offsets below with
-;; the C compiler's (r8_txband_offs).
+;; counts the bands handed on), r8_tx_pkt with tx_send on random bodies,
+;; and the r8_tx / r8_fb offsets below with the C compiler's
+;; (r8_txband_offs).
 ;;
 ;; sdcc's __sdcccall(1): tx in HL, band in DE, the int result in DE; IX
 ;; (the caller's frame pointer) is kept: here it holds tx.  The callees
@@ -34,6 +37,7 @@
         .module txband_z80
 
         .globl  _r8_tx_band
+        .globl  _r8_tx_pkt
         .globl  _r8_txband_offs
         .globl  _r8_tx_band_c
         .globl  _r8_tx_zeros
@@ -545,7 +549,13 @@ sent:   ld      hl, (op)        ; o[0], o[1] = the packet CRC
         ld      a, c            ; changed, or a full frame?
         or      a, TX_FULL (ix)
         jr      z, done
-send:   ld      hl, (op)        ; the packet: end + 1 - pkt bytes
+send:   ld      l, TX_SENT (ix) ; tx->sent++ (before the put, which
+        ld      h, TX_SENT+1 (ix) ; does not read it: the put below is
+        inc     hl              ; r8_tx_pkt's too)
+        ld      TX_SENT (ix), l
+        ld      TX_SENT+1 (ix), h
+;; put(ctx, pkt, end + 1 - pkt), tx->bytes += that; pop IX, return 0
+pput:   ld      hl, (op)        ; the packet: end + 1 - pkt bytes
         inc     hl
         ld      de, (st+S_PKT)
         or      a, a
@@ -572,11 +582,6 @@ send:   ld      hl, (op)        ; the packet: end + 1 - pkt bytes
         ld      a, TX_BYTES+3 (ix)
         adc     a, #0
         ld      TX_BYTES+3 (ix), a
-        ld      l, TX_SENT (ix) ; tx->sent++
-        ld      h, TX_SENT+1 (ix)
-        inc     hl
-        ld      TX_SENT (ix), l
-        ld      TX_SENT+1 (ix), h
 done:   pop     ix
         ld      de, #0          ; R8_OK
         ret
@@ -588,6 +593,57 @@ slow:   push    ix              ; the C version does it all: tx HL, band DE
         jp      _r8_tx_band_c
 
 calliy: jp      (iy)
+
+;; void r8_tx_pkt(r8_tx *tx, unsigned n) (src/r8crc.h; src/wire.c
+;; R8_ASM_TXPKT): tx in HL, n in E (n + 4 < 255).  tx_send's all = 1
+;; path, left with FRAME_START and FRAME_END (two a frame: small, not
+;; fast): the body pkt[1 .. n] gets its CRC-16 from R8_CRC16_INIT, high
+;; byte first, and the delimiter after it; every 0x00 of pkt[1 .. n + 3]
+;; is linked by rawz (no block can be over 254 bytes), the delimiter's
+;; the last code; one put of n + 4 bytes (pput), counted in tx->bytes.
+_r8_tx_pkt:
+        push    ix
+        push    hl
+        pop     ix              ; IX = tx (pput's)
+        ld      a, e
+        ld      (nn), a
+        ld      l, TX_PKT (ix)
+        ld      h, TX_PKT+1 (ix)
+        ld      (st+S_PKT), hl
+        ld      (st+S_CODE), hl ; pkt[0]: the first code
+        ex      de, hl          ; DE = pkt
+        push    de
+        ld      bc, #0xFFFF     ; R8_CRC16_INIT
+        ld      h, #>r8z_crctab
+        or      a, a
+        jr      z, 2$
+1$:     push    af              ; (A: the bytes left)
+        inc     de
+        ld      a, (de)
+        CRCSTEP
+        pop     af
+        dec     a
+        jr      nz, 1$
+2$:     inc     de              ; pkt[n + 1], pkt[n + 2] = the CRC,
+        ld      a, b            ; pkt[n + 3] = 0
+        ld      (de), a
+        inc     de
+        ld      a, c
+        ld      (de), a
+        inc     de
+        xor     a, a
+        ld      (de), a
+        ld      (op), de        ; end = pkt + n + 3
+        pop     de              ; link the 0x00 of pkt[1 .. n + 3]
+        ld      a, (nn)
+        add     a, #3
+        ld      b, a
+3$:     inc     de
+        ld      a, (de)
+        or      a, a
+        call    z, rawz
+        djnz    3$
+        jp      pput
 
 ;; ---- helpers
 ;; the raw loop's 0x00 at DE: *code = DE - code, code = DE (< 250 bytes

@@ -23,9 +23,7 @@
  * directly.  The kernel takes every whole band in order of an RLE
  * stream of 8..241 bytes, those RLE does not shrink (raw) too. */
 #define TXB_COUNT
-#ifdef __CC65__
 #define TXB_PKT        /* the port has r8_tx_pkt (R8_ASM_TXPKT) */
-#endif
 #undef txb_ref
 #define txb_ref txb_c
 #define r8_tx_band txb_c
